@@ -1,0 +1,65 @@
+#include "cli/check_command.h"
+
+#include <iomanip>
+#include <iostream>
+
+#include "cli/cli_support.h"
+#include "io/diagram_json.h"
+#include "io/sites_io.h"
+#include "voronoi/check/check.h"
+
+namespace covmap::cli {
+
+void setup_check(CLI::App& app, CheckCommandOptions& options) {
+  CLI::App* cmd = app.add_subcommand(
+      "check", "Verify an arc graph (ours or another tool's) against the MWVD of its sites");
+  cmd->add_option("diagram", options.diagram_path, "a covmap.arcgraph/1 file")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--sites", options.sites_path,
+                  "check against these sites instead of the diagram's own (JSON or CSV)")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--probes", options.probes, "boundary probes for the coverage test")
+      ->capture_default_str();
+  cmd->add_option("--samples", options.samples, "sample points per arc")->capture_default_str();
+  cmd->add_option("--tolerance", options.tolerance,
+                  "relative tolerance (times the diagonal of the sites' bounding box)")
+      ->capture_default_str();
+  cmd->add_option("--seed", options.seed, "probe seed")->capture_default_str();
+  cmd->add_option("--show", options.show, "violations to list")->capture_default_str();
+  cmd->callback([&options]() { std::exit(run_check(options)); });
+}
+
+int run_check(const CheckCommandOptions& options) {
+  return guarded([&]() {
+    voronoi::Diagram diagram = io::read_diagram_json(options.diagram_path);
+    if (!options.sites_path.empty()) {
+      io::SiteTable table = io::read_sites(options.sites_path);
+      if (table.sites.size() != diagram.sites.size() && !diagram.sites.empty())
+        throw std::invalid_argument(options.sites_path + ": " + std::to_string(table.sites.size()) +
+                                    " sites, but the diagram has " +
+                                    std::to_string(diagram.sites.size()));
+      diagram.sites = std::move(table.sites);
+    }
+    voronoi::CheckOptions check;
+    check.boundary_probes = options.probes;
+    check.samples_per_arc = options.samples;
+    check.relative_tolerance = options.tolerance;
+    check.seed = options.seed;
+    check.max_reported = std::max(options.show, 1);
+    std::string why;
+    if (!check.is_valid(&why)) throw std::invalid_argument(why);
+    const voronoi::CheckReport report = voronoi::check_diagram(diagram, check);
+    std::cout << options.diagram_path << ": " << report.brief() << "\n";
+    int listed = 0;
+    std::cout << std::setprecision(17);
+    for (const auto& v : report.violations) {
+      if (listed++ >= options.show) break;
+      std::cout << "  " << voronoi::to_string(v.kind) << " at (" << v.x << ", " << v.y
+                << "): " << v.message << "\n";
+    }
+    return report.ok() ? kOk : kViolations;
+  });
+}
+
+}  // namespace covmap::cli

@@ -1,0 +1,16 @@
+// covmap: reconstruct and verify sensor coverage maps. This file only wires the subcommands.
+#include <CLI/CLI.hpp>
+
+#include "cli/check_command.h"
+#include "cli/diagram_command.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"covmap: multiplicatively weighted Voronoi diagrams of sensor coverage maps"};
+  app.require_subcommand(1);
+  covmap::cli::DiagramOptions diagram;
+  covmap::cli::CheckCommandOptions check;
+  covmap::cli::setup_diagram(app, diagram);
+  covmap::cli::setup_check(app, check);
+  CLI11_PARSE(app, argc, argv);
+  return 0;
+}

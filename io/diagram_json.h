@@ -1,0 +1,44 @@
+// covmap::io arc graphs: a voronoi::Diagram as covmap.arcgraph/1 JSON, both directions.
+//
+// Layout (docs/FORMATS.md is the reference):
+//   {"format":"covmap.arcgraph/1",
+//    "sites":[{"id":"a","x":0,"y":0,"weight":1}, ...],
+//    "nodes":[{"x":..,"y":..}, ...],
+//    "arcs":[{"from":i|null,"to":j|null,
+//             "circle":{"cx":..,"cy":..,"r":..,"ccw":true} | "line":{"x":..,"y":..,"dx":..,"dy":..},
+//             "sites":[left|null, right|null], "frame":true (only on frame arcs)}, ...],
+//    "faces":[{"site":i,"bounded":b,"orphan":b,"boundaries":[[[arc,forward], ...], ...]}, ...],
+//    "clip":[[x,y], ...]}
+// null stands for voronoi::kNone. Orientation conventions are those of voronoi/diagram.h.
+//
+// Writing: every double is written in the shortest form that reads back to the same bits, so
+// write -> read reproduces the Diagram exactly. A non-finite number cannot be written (JSON has
+// none) and makes write_diagram_json throw std::invalid_argument naming the JSON path.
+//
+// Reading: "faces" and "clip" are optional (graphs from other tools often have neither); unknown
+// members are ignored. The reader checks what a consumer would otherwise crash on or misread, and
+// throws InputError with the JSON path ("arcs[12].to: node index 99 out of range (41 nodes)"):
+//   the format tag; sites as in read_sites (ids unique, positions distinct, weights > 0);
+//   finite numbers; circle radius > 0; line direction non-zero; every index in range;
+//   circle arcs have both ends or neither; bisector arcs name two different sites; frame arcs name
+//   exactly one; boundary cycles are non-empty; a clip polygon is simple and counter-clockwise.
+// It does not check geometry (nodes on their arcs, cycles closing up): that is covmap_check's job.
+#pragma once
+
+#include <filesystem>
+#include <iosfwd>
+#include <string>
+#include <string_view>
+
+#include "voronoi/diagram.h"
+
+namespace covmap::io {
+
+void write_diagram_json(const voronoi::Diagram& diagram, std::ostream& out);
+
+voronoi::Diagram read_diagram_json(const std::filesystem::path& path);
+
+// Parses text already in memory; `file` is only used in error messages.
+voronoi::Diagram parse_diagram_json(std::string_view text, const std::string& file);
+
+}  // namespace covmap::io

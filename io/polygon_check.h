@@ -1,0 +1,31 @@
+// Validity of a clip polygon: simple, non-degenerate, and its orientation.
+//
+// Decisions here are exact: orientation() uses a floating-point filter and falls back to exact
+// expansion arithmetic when the filter cannot decide, so "do these edges touch?" never depends on a
+// tolerance. (Exactness assumes no overflow or underflow in products of coordinates, i.e. values
+// well within 1e-150 .. 1e150 in magnitude, which any real map coordinate is.)
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+
+#include "voronoi/diagram.h"
+
+namespace covmap::io {
+
+// Sign of the turn a -> b -> c: +1 counter-clockwise (left), -1 clockwise (right), 0 collinear.
+int orientation(voronoi::Point a, voronoi::Point b, voronoi::Point c);
+
+// Why `ring` (vertices in order, the closing edge implied, no repeated closing vertex) is not a
+// usable clip polygon, or nullopt if it is one. Checked: at least 3 vertices, finite coordinates,
+// no two consecutive vertices equal, not all collinear (non-zero area), and no two edges meeting
+// other than consecutive edges at their shared vertex (this includes touching and overlapping).
+// Cost O(n^2) in the number of vertices.
+std::optional<std::string> polygon_defect(std::span<const voronoi::Point> ring);
+
+// +1 if the ring runs counter-clockwise, -1 if clockwise. Precondition: polygon_defect(ring) is
+// nullopt.
+int ring_orientation(std::span<const voronoi::Point> ring);
+
+}  // namespace covmap::io

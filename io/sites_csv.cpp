@@ -1,0 +1,182 @@
+// The CSV syntax for site lists: a header line naming the columns, then one site per line.
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <charconv>
+#include <optional>
+
+#include "io/site_parsers.h"
+#include "io/site_validation.h"
+#include "io/text_util.h"
+
+namespace covmap::io::detail {
+namespace {
+
+constexpr std::array<std::string_view, 4> kColumns = {"id", "x", "y", "weight"};
+
+struct Fields {
+  std::vector<std::string> values;
+  std::string error;  // non-empty if the line could not be split
+};
+
+// Splits one line at commas. Fields are trimmed; a field may be double-quoted so it can hold commas
+// or surrounding spaces, with "" standing for one quote inside the quotes.
+Fields split_fields(std::string_view line) {
+  Fields out;
+  std::size_t i = 0;
+  while (true) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    std::string field;
+    if (i < line.size() && line[i] == '"') {
+      ++i;
+      bool closed = false;
+      while (i < line.size()) {
+        if (line[i] == '"') {
+          if (i + 1 < line.size() && line[i + 1] == '"') {
+            field += '"';
+            i += 2;
+            continue;
+          }
+          ++i;
+          closed = true;
+          break;
+        }
+        field += line[i++];
+      }
+      if (!closed) {
+        out.error = "unterminated quoted field";
+        return out;
+      }
+      while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+      if (i < line.size() && line[i] != ',') {
+        out.error = "unexpected text after a quoted field";
+        return out;
+      }
+    } else {
+      const std::size_t end = std::min(line.find(',', i), line.size());
+      field = std::string(trim(line.substr(i, end - i)));
+      i = end;
+    }
+    out.values.push_back(std::move(field));
+    if (i >= line.size()) return out;
+    ++i;  // the comma
+  }
+}
+
+std::string lower(std::string_view text) {
+  std::string out(text);
+  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return out;
+}
+
+// A number field; nullopt plus a message when it is not a number. Non-finite spellings ("inf",
+// "nan") parse, so the value checks can say "must be finite" instead of "not a number".
+std::optional<double> parse_number(std::string_view field, std::string_view name, std::string& error) {
+  if (field.empty()) {
+    error = std::string(name) + " is empty";
+    return std::nullopt;
+  }
+  std::string_view digits = field;
+  if (digits.front() == '+') digits.remove_prefix(1);  // from_chars rejects '+', people write it
+  double value = 0.0;
+  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+  if (ec == std::errc::result_out_of_range) {
+    error = std::string(name) + " is out of the range of a double (got '" + std::string(field) + "')";
+    return std::nullopt;
+  }
+  if (ec != std::errc() || end != digits.data() + digits.size()) {
+    error = std::string(name) + " is not a number (got '" + std::string(field) + "')";
+    return std::nullopt;
+  }
+  return value;
+}
+
+// Ids end up in JSON and SVG, which need UTF-8; catching bad bytes here names the line.
+bool valid_utf8(const std::string& text) {
+  try {
+    (void)Json(text).dump();
+    return true;
+  } catch (const Json::type_error&) {
+    return false;
+  }
+}
+
+}  // namespace
+
+SiteTable parse_sites_csv(std::string_view text, const std::string& file) {
+  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // UTF-8 byte order mark
+
+  std::optional<std::array<std::size_t, 4>> column;  // index of id, x, y, weight; set by the header
+  std::vector<SiteDraft> drafts;
+  int line_number = 0;
+  std::size_t pos = 0;
+  while (pos < text.size()) {
+    const std::size_t end = std::min(text.find('\n', pos), text.size());
+    const std::string_view line = trim(text.substr(pos, end - pos));
+    pos = end + 1;
+    ++line_number;
+    if (line.empty() || line.front() == '#') continue;
+
+    Fields fields = split_fields(line);
+    if (!column) {
+      if (!fields.error.empty()) throw InputError(file, line_number, "header", fields.error);
+      std::array<std::size_t, 4> found{};
+      for (std::size_t c = 0; c < kColumns.size(); ++c) {
+        std::size_t count = 0;
+        for (std::size_t f = 0; f < fields.values.size(); ++f) {
+          if (lower(fields.values[f]) == kColumns[c]) {
+            found[c] = f;
+            ++count;
+          }
+        }
+        if (count != 1) {
+          throw InputError(file, line_number, "header",
+                           std::string(count == 0 ? "missing" : "repeated") + " column '" + std::string(kColumns[c]) +
+                               "' (the header must name id, x, y and weight once each, in any order)");
+        }
+      }
+      column = found;
+      continue;
+    }
+
+    SiteDraft draft;
+    draft.line = line_number;
+    draft.origin = "line " + std::to_string(line_number);
+    if (!fields.error.empty()) {
+      draft.problems.push_back(fields.error);
+      drafts.push_back(std::move(draft));
+      continue;
+    }
+    const auto field = [&](std::size_t c) -> const std::string* {
+      const std::size_t f = (*column)[c];
+      return f < fields.values.size() ? &fields.values[f] : nullptr;
+    };
+    if (const auto* id = field(0); id && !id->empty()) draft.site.id = *id;
+    std::array<double*, 4> targets = {nullptr, &draft.site.x, &draft.site.y, &draft.site.weight};
+    for (std::size_t c = 0; c < kColumns.size(); ++c) {
+      const std::string* value = field(c);
+      if (!value) {
+        draft.problems.push_back("missing " + std::string(kColumns[c]) + " (the row has " +
+                                 std::to_string(fields.values.size()) + " fields)");
+        continue;
+      }
+      if (c == 0) {
+        if (value->empty()) draft.problems.push_back("id is empty");
+        else if (!valid_utf8(*value)) draft.problems.push_back("id is not valid UTF-8");
+        continue;
+      }
+      std::string error;
+      if (const auto number = parse_number(*value, kColumns[c], error)) {
+        *targets[c] = *number;
+      } else {
+        draft.problems.push_back(error);
+      }
+    }
+    if (draft.usable()) check_site_values(draft);
+    drafts.push_back(std::move(draft));
+  }
+  if (!column) throw InputError(file, 0, "", "no header line (expected a line like: id,x,y,weight)");
+  return finish_sites(std::move(drafts), file);
+}
+
+}  // namespace covmap::io::detail

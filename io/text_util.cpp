@@ -1,0 +1,68 @@
+#include "io/text_util.h"
+
+#include <array>
+#include <cerrno>
+#include <charconv>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+
+#include "io/input_error.h"
+
+namespace covmap::io::detail {
+
+std::string format_number(double value) {
+  // std::to_chars without a precision gives the shortest round-trip representation.
+  std::array<char, 32> buffer{};
+  const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+  return std::string(buffer.data(), result.ptr);
+}
+
+std::string quote_id(std::string_view id) {
+  std::string out = "'";
+  for (const char c : id) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte < 0x20 || byte == 0x7f) {
+      static constexpr char kHex[] = "0123456789abcdef";
+      out += "\\x";
+      out += kHex[byte >> 4];
+      out += kHex[byte & 0xf];
+    } else {
+      out += c;
+    }
+  }
+  return out + "'";
+}
+
+std::string read_text_file(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    throw InputError(path.string(), 0, "", "cannot read file: it is a directory");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    throw InputError(path.string(), 0, "", std::string("cannot open file: ") + std::strerror(errno));
+  }
+  std::ostringstream content;
+  content << in.rdbuf();
+  if (in.bad()) throw InputError(path.string(), 0, "", "error while reading file");
+  return std::move(content).str();
+}
+
+int line_of_offset(std::string_view text, std::size_t offset) {
+  if (offset > text.size()) offset = text.size();
+  int line = 1;
+  for (std::size_t i = 0; i < offset; ++i) line += text[i] == '\n' ? 1 : 0;
+  return line;
+}
+
+std::string_view trim(std::string_view text) {
+  constexpr std::string_view kSpace = " \t\r\n\v\f";
+  const auto first = text.find_first_not_of(kSpace);
+  if (first == std::string_view::npos) return {};
+  const auto last = text.find_last_not_of(kSpace);
+  return text.substr(first, last - first + 1);
+}
+
+}  // namespace covmap::io::detail

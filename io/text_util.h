@@ -1,0 +1,26 @@
+// Small text helpers shared by the covmap::io readers and writers (internal to io/).
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace covmap::io::detail {
+
+// Shortest text that reads back as the same double ("0.1", "-1", "1e+300", "nan", "inf").
+std::string format_number(double value);
+
+// A site id for messages: 'b'. Control characters are shown as \xNN so a message stays one line.
+std::string quote_id(std::string_view id);
+
+// The whole file as bytes. Throws InputError naming the file if it cannot be opened or read.
+std::string read_text_file(const std::filesystem::path& path);
+
+// 1-based line number of a byte offset in text (offsets past the end count as the last line).
+int line_of_offset(std::string_view text, std::size_t offset);
+
+// text without surrounding spaces, tabs and carriage returns.
+std::string_view trim(std::string_view text);
+
+}  // namespace covmap::io::detail

@@ -1,0 +1,217 @@
+#include "io/diagram_json.h"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cfloat>
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "io_test_util.h"
+
+namespace covmap::io {
+namespace {
+
+using testing::input_error_from;
+using voronoi::kNone;
+
+// Bit-level equality, so 0.0 vs -0.0 or a last-digit change counts as different.
+bool same(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
+
+void expect_identical(const voronoi::Diagram& a, const voronoi::Diagram& b) {
+  ASSERT_EQ(a.sites.size(), b.sites.size());
+  for (std::size_t i = 0; i < a.sites.size(); ++i) {
+    EXPECT_EQ(a.sites[i].id, b.sites[i].id);
+    EXPECT_TRUE(same(a.sites[i].x, b.sites[i].x) && same(a.sites[i].y, b.sites[i].y) &&
+                same(a.sites[i].weight, b.sites[i].weight)) << "site " << i;
+  }
+  ASSERT_EQ(a.nodes.size(), b.nodes.size());
+  for (std::size_t i = 0; i < a.nodes.size(); ++i) {
+    EXPECT_TRUE(same(a.nodes[i].x, b.nodes[i].x) && same(a.nodes[i].y, b.nodes[i].y)) << "node " << i;
+  }
+  ASSERT_EQ(a.arcs.size(), b.arcs.size());
+  for (std::size_t i = 0; i < a.arcs.size(); ++i) {
+    const auto &x = a.arcs[i], &y = b.arcs[i];
+    EXPECT_EQ(x.from, y.from) << "arc " << i;
+    EXPECT_EQ(x.to, y.to) << "arc " << i;
+    EXPECT_EQ(x.ccw, y.ccw) << "arc " << i;
+    EXPECT_EQ(x.left_site, y.left_site) << "arc " << i;
+    EXPECT_EQ(x.right_site, y.right_site) << "arc " << i;
+    EXPECT_EQ(x.frame, y.frame) << "arc " << i;
+    ASSERT_EQ(x.curve.index(), y.curve.index()) << "arc " << i;
+    if (const auto* c = std::get_if<voronoi::Circle>(&x.curve)) {
+      const auto& d = std::get<voronoi::Circle>(y.curve);
+      EXPECT_TRUE(same(c->cx, d.cx) && same(c->cy, d.cy) && same(c->r, d.r)) << "arc " << i;
+    } else {
+      const auto &l = std::get<voronoi::Line>(x.curve), &m = std::get<voronoi::Line>(y.curve);
+      EXPECT_TRUE(same(l.x, m.x) && same(l.y, m.y) && same(l.dx, m.dx) && same(l.dy, m.dy)) << "arc " << i;
+    }
+  }
+  ASSERT_EQ(a.faces.size(), b.faces.size());
+  for (std::size_t i = 0; i < a.faces.size(); ++i) {
+    const auto &f = a.faces[i], &g = b.faces[i];
+    EXPECT_EQ(f.site, g.site);
+    EXPECT_EQ(f.bounded, g.bounded);
+    EXPECT_EQ(f.orphan, g.orphan);
+    ASSERT_EQ(f.boundaries.size(), g.boundaries.size()) << "face " << i;
+    for (std::size_t c = 0; c < f.boundaries.size(); ++c) {
+      ASSERT_EQ(f.boundaries[c].size(), g.boundaries[c].size());
+      for (std::size_t k = 0; k < f.boundaries[c].size(); ++k) {
+        EXPECT_EQ(f.boundaries[c][k].arc, g.boundaries[c][k].arc);
+        EXPECT_EQ(f.boundaries[c][k].forward, g.boundaries[c][k].forward);
+      }
+    }
+  }
+  ASSERT_EQ(a.clip.size(), b.clip.size());
+  for (std::size_t i = 0; i < a.clip.size(); ++i) EXPECT_TRUE(same(a.clip[i].x, b.clip[i].x) && same(a.clip[i].y, b.clip[i].y));
+}
+
+// Not a real Voronoi diagram (the reader checks structure, not geometry), but it has every feature
+// the format can express, and doubles chosen to break a careless printer.
+voronoi::Diagram sample() {
+  voronoi::Diagram d;
+  d.sites = {{"a", 0.1, -0.0, 1.0 / 3.0}, {"b", 5e-324, 1e300, 2.0}, {"c & <d>", -7.25, std::nextafter(1.0, 2.0), DBL_MAX}};
+  d.nodes = {{1.0 / 3.0, 2.0 / 3.0}, {-1e-300, 123456789.123456789}, {0.30000000000000004, 0.0}};
+  d.arcs = {
+      {kNone, kNone, voronoi::Circle{-1, 0, 2}, true, 0, 1, false},                   // full circle
+      {0, 1, voronoi::Circle{0.1, 0.2, std::sqrt(2.0)}, false, 1, 2, false},         // clockwise arc
+      {kNone, kNone, voronoi::Line{1, 0, 0, 1}, true, 0, 2, false},                  // whole line
+      {2, kNone, voronoi::Line{0.1, 0.7, -std::sqrt(0.5), std::sqrt(0.5)}, true, 2, 1, false},  // ray
+      {kNone, 0, voronoi::Line{3, 3, 1, 0}, true, 1, 0, false},                      // ray from infinity
+      {1, 2, voronoi::Line{0, 0, 1, 1}, true, 2, kNone, true},                       // frame
+  };
+  d.faces = {{0, true, false, {{{0, true}}}},
+             {1, false, false, {{{0, false}}, {{3, false}, {4, true}}}},
+             {2, true, true, {{{1, true}, {5, false}, {3, true}}}}};
+  d.clip = {{-10, -10}, {10, -10}, {10, 10}, {-10, 0.1}};
+  return d;
+}
+
+std::string to_json(const voronoi::Diagram& d) {
+  std::ostringstream out;
+  write_diagram_json(d, out);
+  return out.str();
+}
+
+TEST(DiagramJson, RoundTripIsIdenticalDownToTheBits) {
+  const auto d = sample();
+  const std::string text = to_json(d);
+  expect_identical(d, parse_diagram_json(text, "g.json"));
+  EXPECT_EQ(to_json(parse_diagram_json(text, "g.json")), text);  // and writing is deterministic
+}
+
+TEST(DiagramJson, WritesNullsFrameFlagAndShortestDoubles) {
+  const auto j = nlohmann::json::parse(to_json(sample()));
+  EXPECT_EQ(j["format"], "covmap.arcgraph/1");
+  EXPECT_TRUE(j["arcs"][0]["from"].is_null());
+  EXPECT_TRUE(j["arcs"][0]["to"].is_null());
+  EXPECT_EQ(j["arcs"][0]["circle"]["ccw"], true);
+  EXPECT_EQ(j["arcs"][1]["circle"]["ccw"], false);
+  EXPECT_TRUE(j["arcs"][2].contains("line"));
+  EXPECT_FALSE(j["arcs"][0].contains("frame"));
+  EXPECT_EQ(j["arcs"][5]["frame"], true);
+  EXPECT_TRUE(j["arcs"][5]["sites"][1].is_null());
+  EXPECT_EQ(j["faces"][1]["boundaries"][1][0], nlohmann::json::array({3, false}));
+  // The shortest representation, not 17 digits.
+  EXPECT_NE(to_json(sample()).find("\"x\":0.1,"), std::string::npos);
+}
+
+TEST(DiagramJson, FacesAndClipAreOptional) {
+  auto j = nlohmann::json::parse(to_json(sample()));
+  j.erase("faces");
+  j.erase("clip");
+  const auto d = parse_diagram_json(j.dump(), "other-tool.json");
+  EXPECT_TRUE(d.faces.empty());
+  EXPECT_TRUE(d.clip.empty());
+  EXPECT_EQ(d.arcs.size(), 6u);
+}
+
+TEST(DiagramJson, UnknownMembersAreIgnored) {
+  auto j = nlohmann::json::parse(to_json(sample()));
+  j["generator"] = "elsewhere";
+  j["arcs"][0]["colour"] = "red";
+  EXPECT_NO_THROW(parse_diagram_json(j.dump(), "g.json"));
+}
+
+// Applies `edit` to the JSON of sample() and returns the reader's complaint.
+InputError error_after(const std::function<void(nlohmann::json&)>& edit) {
+  auto j = nlohmann::json::parse(to_json(sample()));
+  edit(j);
+  return input_error_from([&] { parse_diagram_json(j.dump(), "g.json"); });
+}
+
+TEST(DiagramJson, IndexOutOfRangeNamesThePath) {
+  EXPECT_STREQ(error_after([](auto& j) { j["arcs"][1]["to"] = 99; }).what(),
+               "g.json: arcs[1].to: node index 99 out of range (3 nodes)");
+  EXPECT_STREQ(error_after([](auto& j) { j["arcs"][1]["from"] = -1; }).what(),
+               "g.json: arcs[1].from: node index -1 out of range (3 nodes)");
+  EXPECT_STREQ(error_after([](auto& j) { j["arcs"][2]["sites"][0] = 3; }).what(),
+               "g.json: arcs[2].sites[0]: site index 3 out of range (3 sites)");
+  EXPECT_STREQ(error_after([](auto& j) { j["faces"][2]["boundaries"][0][1][0] = 6; }).what(),
+               "g.json: faces[2].boundaries[0][1][0]: arc index 6 out of range (6 arcs)");
+  EXPECT_STREQ(error_after([](auto& j) { j["faces"][0]["site"] = nullptr; }).what(),
+               "g.json: faces[0].site: must be a site index (got null)");
+  EXPECT_STREQ(error_after([](auto& j) { j["arcs"][1]["to"] = 1.0; }).what(),
+               "g.json: arcs[1].to: must be a node index (got number 1.0)");
+}
+
+TEST(DiagramJson, StructuralErrors) {
+  const auto message = [](const std::function<void(nlohmann::json&)>& edit) { return std::string(error_after(edit).what()); };
+  EXPECT_EQ(message([](auto& j) { j["format"] = "covmap.sites/1"; }),
+            "g.json: format: expected \"covmap.arcgraph/1\" (got string \"covmap.sites/1\")");
+  EXPECT_EQ(message([](auto& j) { j.erase("nodes"); }), "g.json: nodes: missing");
+  EXPECT_EQ(message([](auto& j) { j["arcs"][0]["line"] = {{"x", 0}, {"y", 0}, {"dx", 1}, {"dy", 0}}; }),
+            "g.json: arcs[0]: has both \"circle\" and \"line\"; an arc lies on exactly one curve");
+  EXPECT_EQ(message([](auto& j) { j["arcs"][0].erase("circle"); }), "g.json: arcs[0]: needs a \"circle\" or a \"line\"");
+  EXPECT_EQ(message([](auto& j) { j["arcs"][1]["circle"]["r"] = -2; }), "g.json: arcs[1].circle.r: radius must be positive (got -2)");
+  EXPECT_EQ(message([](auto& j) { j["arcs"][1]["circle"].erase("ccw"); }), "g.json: arcs[1].circle.ccw: missing");
+  EXPECT_EQ(message([](auto& j) { j["arcs"][2]["line"]["dx"] = 0; j["arcs"][2]["line"]["dy"] = 0; }),
+            "g.json: arcs[2].line: direction (dx, dy) must not be zero");
+  EXPECT_EQ(message([](auto& j) { j["nodes"][2]["y"] = "0"; }), "g.json: nodes[2].y: must be a number (got string \"0\")");
+  EXPECT_EQ(message([](auto& j) { j["nodes"][2]["y"] = 1e308 * 10; }), "g.json: nodes[2].y: must be a number (got null)");
+  EXPECT_NE(message([](auto& j) { j["arcs"][1]["to"] = nullptr; }).find("arcs[1]: a circle arc has both ends or neither"),
+            std::string::npos);
+  EXPECT_NE(message([](auto& j) { j["arcs"][2]["sites"][1] = nullptr; }).find("arcs[2].sites: a bisector arc separates two"),
+            std::string::npos);
+  EXPECT_NE(message([](auto& j) { j["arcs"][5].erase("frame"); }).find("arcs[5].sites"), std::string::npos);
+  EXPECT_NE(message([](auto& j) { j["arcs"][5]["sites"] = {2, 1}; }).find("a frame arc names the site inside"), std::string::npos);
+  EXPECT_EQ(message([](auto& j) { j["faces"][0]["boundaries"][0] = nlohmann::json::array(); }),
+            "g.json: faces[0].boundaries[0]: a boundary cycle must not be empty");
+  EXPECT_EQ(message([](auto& j) { j["clip"] = {{0, 0}, {0, 1}, {1, 1}, {1, 0}}; }), "g.json: clip: must be counter-clockwise");
+  EXPECT_NE(message([](auto& j) { j["clip"] = {{0, 0}, {1, 1}, {1, 0}, {0, 1}}; }).find("not simple"), std::string::npos);
+  EXPECT_EQ(message([](auto& j) { j["sites"][1]["weight"] = 0; }), "g.json: sites[1] (site 'b'): weight must be positive (got 0)");
+}
+
+TEST(DiagramJson, OverflowingLiteralIsRejected) {
+  auto text = to_json(sample());
+  const auto at = text.find("\"r\":2.0");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, 7, "\"r\":-1e999");
+  const auto e = input_error_from([&] { parse_diagram_json(text, "g.json"); });
+  // Line 1 format, 2 "sites":[, 3-5 sites, 6 ], 7 "nodes":[, 8-10 nodes, 11 ], 12 "arcs":[, 13 arc 0.
+  EXPECT_EQ(e.line(), 13);
+  EXPECT_EQ(e.message(), "invalid JSON: number overflow parsing '-1e999'");
+}
+
+TEST(DiagramJson, WritingNonFiniteThrows) {
+  auto d = sample();
+  d.nodes[1].y = NAN;
+  std::ostringstream out;
+  try {
+    write_diagram_json(d, out);
+    FAIL() << "expected std::invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("nodes[1].y"), std::string::npos);
+  }
+}
+
+TEST(DiagramJson, ReadsFromFile) {
+  testing::TempDir dir;
+  const auto d = sample();
+  expect_identical(d, read_diagram_json(dir.write("g.json", to_json(d))));
+  EXPECT_NE(input_error_from([&] { read_diagram_json(dir / "missing.json"); }).message().find("cannot open"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace covmap::io

@@ -1,0 +1,121 @@
+// The engine against the independent checker (voronoi/check), on random instances of every input
+// family. The checker shares no code with the engine: it tests the MWVD definition directly.
+#include <gtest/gtest.h>
+
+#include "site_families.h"
+#include "voronoi/check/check.h"
+#include "voronoi/engine.h"
+
+namespace covmap::voronoi {
+namespace {
+
+using testing::Family;
+
+struct Case {
+  Family family;
+  int n;
+  int seeds;
+};
+
+class EngineChecked : public ::testing::TestWithParam<Case> {};
+
+TEST_P(EngineChecked, CheckerFindsNoViolation) {
+  const Case c = GetParam();
+  CheckOptions options;
+  options.boundary_probes = 600;
+  options.samples_per_arc = 8;
+  for (int seed = 1; seed <= c.seeds; ++seed) {
+    const auto sites = testing::make_sites(c.family, c.n, seed);
+    const Diagram d = build_diagram(sites);
+    const CheckReport report = check_diagram(d, options);
+    ASSERT_TRUE(report.ok()) << testing::family_name(c.family) << " n=" << sites.size()
+                             << " seed=" << seed << ": " << report.brief();
+    if (sites.size() >= 3 && c.family != Family::Collinear) {
+      EXPECT_FALSE(d.arcs.empty());
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Families, EngineChecked,
+    ::testing::Values(Case{Family::UniformWeights, 3, 60}, Case{Family::UniformWeights, 12, 150},
+                      Case{Family::UniformWeights, 150, 40}, Case{Family::EqualWeights, 3, 40},
+                      Case{Family::EqualWeights, 60, 40}, Case{Family::WeightClasses, 40, 60},
+                      Case{Family::SharedMaximum, 40, 60}, Case{Family::Grid, 30, 60},
+                      Case{Family::Collinear, 12, 40}, Case{Family::LargeCoordinates, 60, 40}),
+    [](const auto& info) {
+      return std::string(testing::family_name(info.param.family)) + "_n" +
+             std::to_string(info.param.n);
+    });
+
+TEST(EngineSpecialCases, OneSiteHasNoArcs) {
+  const std::vector<Site> one = {{"a", 1, 2, 3}};
+  const Diagram d = build_diagram(one);
+  EXPECT_TRUE(d.arcs.empty());
+  EXPECT_TRUE(d.nodes.empty());
+}
+
+TEST(EngineSpecialCases, TwoSitesGiveTheApolloniusCircle) {
+  // Closed form: sites (0,0) w=1 and (3,0) w=2: |p|/1 = |p-(3,0)|/2 → centre (-1,0), radius 2.
+  const std::vector<Site> two = {{"a", 0, 0, 1}, {"b", 3, 0, 2}};
+  const Diagram d = build_diagram(two);
+  ASSERT_EQ(d.arcs.size(), 1u);
+  const Arc& arc = d.arcs[0];
+  ASSERT_TRUE(std::holds_alternative<Circle>(arc.curve));
+  const Circle c = std::get<Circle>(arc.curve);
+  EXPECT_NEAR(c.cx, -1.0, 1e-12);
+  EXPECT_NEAR(c.cy, 0.0, 1e-12);
+  EXPECT_NEAR(c.r, 2.0, 1e-12);
+  EXPECT_EQ(arc.from, kNone);
+  EXPECT_EQ(arc.to, kNone);
+}
+
+TEST(EngineSpecialCases, SquareGivesOneNodeOfDegreeFour) {
+  // Four equal weights on a square with weight 3 (lifted coordinates not representable in double):
+  // exactly one node, at the centre, with four rays.
+  const std::vector<Site> square = {
+      {"a", 0, 0, 3}, {"b", 1, 0, 3}, {"c", 1, 1, 3}, {"d", 0, 1, 3}};
+  const Diagram d = build_diagram(square);
+  ASSERT_EQ(d.nodes.size(), 1u);
+  EXPECT_NEAR(d.nodes[0].x, 0.5, 1e-15);
+  EXPECT_NEAR(d.nodes[0].y, 0.5, 1e-15);
+  EXPECT_EQ(d.arcs.size(), 4u);
+  for (const Arc& a : d.arcs) EXPECT_TRUE(a.from == 0 || a.to == 0);
+}
+
+TEST(EngineSpecialCases, CocircularWeightedSitesMeetInOneNode) {
+  // Sites at distance w from the origin are all weighted-equidistant (1) from it: a node of degree
+  // five. Coordinates are exact (Pythagorean), so the degeneracy is exact too.
+  const std::vector<Site> sites = {{"a", 1, 0, 1}, {"b", 0, 2, 2},  {"c", -3, 0, 3},
+                                   {"d", 0, -4, 4}, {"e", 3, 4, 5}};
+  const Diagram d = build_diagram(sites);
+  int at_origin = 0;
+  for (const Node& n : d.nodes)
+    if (std::hypot(n.x, n.y) < 1e-9) ++at_origin;
+  EXPECT_EQ(at_origin, 1) << "the five-fold point must be one node, not several close ones";
+  int arcs_at_origin = 0;
+  for (const Arc& a : d.arcs)
+    for (int end : {a.from, a.to})
+      if (end != kNone && std::hypot(d.nodes[end].x, d.nodes[end].y) < 1e-9) ++arcs_at_origin;
+  EXPECT_GE(arcs_at_origin, 3);
+  const CheckReport report = check_diagram(d);
+  EXPECT_TRUE(report.ok()) << report.brief();
+}
+
+TEST(EngineInput, InvalidSitesAreAllNamed) {
+  const double nan = std::nan("");
+  const std::vector<Site> bad = {{"ok", 0, 0, 1},   {"neg", 1, 0, -2}, {"nan", nan, 0, 1},
+                                 {"dup", 0, 0, 2},  {"zero", 3, 3, 0}, {"inf", 4, 4, INFINITY}};
+  try {
+    build_diagram(bad);
+    FAIL() << "expected InvalidSites";
+  } catch (const InvalidSites& e) {
+    std::vector<int> indices;
+    for (const auto& p : e.problems()) indices.push_back(p.index);
+    EXPECT_EQ(indices, (std::vector<int>{1, 2, 3, 4, 5}));
+    EXPECT_NE(std::string(e.what()).find("'dup'"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace covmap::voronoi

@@ -1,0 +1,55 @@
+// covmap::voronoi::build_diagram — the multiplicatively weighted Voronoi diagram of weighted sites.
+//
+// Contract
+//  - Input: sites with finite coordinates, finite positive weights and pairwise distinct
+//    positions. Anything else throws InvalidSites naming every offending site (index and id);
+//    nothing is built.
+//  - Output: a Diagram whose nodes are the points weighted-equidistant from ≥3 sites with no
+//    site closer, and whose arcs are the maximal pieces of bisectors (Apollonius circles; lines for
+//    equal weights) between consecutive nodes, unbounded ends marked kNone. All combinatorial
+//    decisions (which sites meet, in which order, whether a node has degree > 3) are exact for the
+//    given doubles: the engine triangulates the exactly lifted sites with filtered exact predicates
+//    (engine/lifted_traits.h) and decides every paraboloid crossing by exact signs
+//    (engine/edge_pattern.h). Only node coordinates and curve parameters are rounded.
+//  - Degenerate input is welcome: equal weights, several maximal weights (unbounded arcs),
+//    collinear or cocircular sites, nodes of any degree.
+#pragma once
+
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "voronoi/diagram.h"
+
+namespace covmap::voronoi {
+
+struct InvalidSite {
+  int index = kNone;
+  std::string id;
+  std::string problem;
+};
+
+class InvalidSites : public std::runtime_error {
+ public:
+  explicit InvalidSites(std::vector<InvalidSite> problems);
+  const std::vector<InvalidSite>& problems() const { return problems_; }
+
+ private:
+  std::vector<InvalidSite> problems_;
+};
+
+// Every problem of the input, empty when it is valid.
+std::vector<InvalidSite> find_invalid_sites(std::span<const Site> sites);
+
+struct BuildStats {
+  int triangulation_dimension = 0;
+  std::size_t exact_fallbacks = 0;  // decisions the interval filter could not take
+  double triangulation_seconds = 0.0;
+  double extraction_seconds = 0.0;
+};
+
+// Throws InvalidSites. `stats` (optional) receives counters for benchmarks and reports.
+Diagram build_diagram(std::span<const Site> sites, BuildStats* stats = nullptr);
+
+}  // namespace covmap::voronoi

@@ -1,0 +1,54 @@
+#include <chrono>
+
+#include "voronoi/engine.h"
+#include "voronoi/engine/extractors.h"
+#include "voronoi/engine/facet_walk.h"
+
+namespace covmap::voronoi {
+
+namespace engine {
+
+// Collinear lifted sites: every power facet is a whole plane, so each triangulation edge carries
+// its full bisector and there are no nodes.
+void extract_linear(const std::vector<Site>& sites, RegularTriangulation& rt, Diagram& out) {
+  for (auto e = rt.finite_edges_begin(); e != rt.finite_edges_end(); ++e) {
+    const int si = site_of(e->first->vertex(e->second));
+    const int sj = site_of(e->first->vertex(e->third));
+    out.arcs.push_back(make_arc(si, sj, kNone, kNone, sites));
+  }
+}
+
+}  // namespace engine
+
+Diagram build_diagram(std::span<const Site> input, BuildStats* stats_out) {
+  using namespace engine;
+  if (auto problems = find_invalid_sites(input); !problems.empty())
+    throw InvalidSites(std::move(problems));
+  BuildStats stats;
+  Diagram out;
+  out.sites.assign(input.begin(), input.end());
+  using Clock = std::chrono::steady_clock;
+  auto seconds_since = [](Clock::time_point t) {
+    return std::chrono::duration<double>(Clock::now() - t).count();
+  };
+  auto start = Clock::now();
+  std::vector<RawWeightedPoint> points;
+  points.reserve(input.size());
+  for (std::size_t i = 0; i < input.size(); ++i)
+    points.emplace_back(RawPoint(input[i].x, input[i].y, input[i].weight), static_cast<double>(i));
+  RegularTriangulation rt(points.begin(), points.end());
+  stats.triangulation_seconds = seconds_since(start);
+  stats.triangulation_dimension = rt.dimension();
+  start = Clock::now();
+  if (rt.dimension() == 3)
+    extract_spatial(out.sites, rt, out, stats);
+  else if (rt.dimension() == 2)
+    extract_planar(out.sites, rt, out, stats);
+  else
+    extract_linear(out.sites, rt, out);
+  stats.extraction_seconds = seconds_since(start);
+  if (stats_out) *stats_out = stats;
+  return out;
+}
+
+}  // namespace covmap::voronoi

@@ -1,0 +1,262 @@
+// Dimension 3. For two sites i, j adjacent in the regular triangulation, their power facet Q is a
+// convex polygon (possibly unbounded) in the plane of equal power; the paraboloid cuts that plane
+// in a conic ∂D projecting onto the bisector of i and j (D = {g > 0}). The MWVD arcs of (i, j) are
+// exactly ∂D ∩ Q. D and Q are convex, so one walk around ∂Q lists the crossing points in the same
+// cyclic order as ∂D does, and the piece of ∂D between two consecutive crossings lies inside Q
+// exactly when the stretch of ∂Q between them lies outside D. Arcs come from the walk alone: no
+// angular sorting of algebraic points and no tolerance. The walk is projective: rays end at
+// points at infinity, and for equal weights (vertical facets) the conic touches the line at
+// infinity at the vertical direction U, where unbounded arcs end.
+#include <numeric>
+
+#include "voronoi/engine/edge_pattern.h"
+#include "voronoi/engine/extractors.h"
+#include "voronoi/engine/facet_walk.h"
+
+namespace covmap::voronoi::engine {
+namespace {
+
+using RT = RegularTriangulation;
+using Cell = RT::Cell_handle;
+using Vertex = RT::Vertex_handle;
+
+// Per cell: its power vertex (finite cells) or outward ray direction (infinite cells).
+struct CellData {
+  Homog<Approx> v{};
+  bool valid = false;    // v usable (else recompute with intervals or exactly when needed)
+  bool zero = false;     // the vertex is a zero point: on the paraboloid, or the direction U
+  bool infinite = false;
+};
+
+class SpatialExtractor {
+ public:
+  SpatialExtractor(const std::vector<Site>& sites, RT& rt, Diagram& out, BuildStats& stats)
+      : sites_(sites), rt_(rt), out_(out), stats_(stats) {}
+
+  void run() {
+    compute_cells();
+    compute_facets();
+    for (auto e = rt_.finite_edges_begin(); e != rt_.finite_edges_end(); ++e)
+      walk_edge(e->first, e->second, e->third);
+  }
+
+ private:
+  const std::vector<Site>& sites_;
+  RT& rt_;
+  Diagram& out_;
+  BuildStats& stats_;
+
+  std::vector<Cell> cells_;
+  std::vector<CellData> data_;
+  std::vector<EdgePattern> facet_;  // 4 per cell, oriented from the cell towards its neighbour
+  std::vector<int> facet_node_;     // 2 per facet entry: node ids of its interior zero points
+  std::vector<int> uf_;             // union-find: cells sharing one power vertex on the paraboloid
+  std::vector<int> vertex_node_;    // node id of a zero vertex, by union-find root
+  // Scratch buffers reused by every walk (the walks dominate allocation otherwise).
+  std::vector<Cell> ring_;
+  std::vector<Token> tokens_;
+  WalkScratch scratch_;
+
+  int find(int c) {
+    while (uf_[c] != c) c = uf_[c] = uf_[uf_[c]];
+    return c;
+  }
+
+  // The finite facet of an infinite cell, and the far vertex of the finite cell behind it.
+  void ray_sites(Cell c, std::array<RawPoint, 3>& tri, RawPoint& away) const {
+    const int inf = c->index(rt_.infinite_vertex());
+    for (int k = 0, m = 0; k < 4; ++k)
+      if (k != inf) tri[m++] = c->vertex(k)->point().point();
+    Cell n = c->neighbor(inf);
+    away = n->vertex(n->index(c))->point().point();
+  }
+
+  template <class NT>
+  std::optional<Homog<NT>> cell_point(Cell c) const {
+    if (rt_.is_infinite(c)) {
+      std::array<RawPoint, 3> tri;
+      RawPoint away;
+      ray_sites(c, tri, away);
+      return power_ray_direction<NT>(tri, away);
+    }
+    std::array<RawPoint, 4> s;
+    for (int k = 0; k < 4; ++k) s[k] = c->vertex(k)->point().point();
+    return power_vertex<NT>(s);
+  }
+
+  void compute_cells() {
+    int id = 0;
+    for (auto c = rt_.all_cells_begin(); c != rt_.all_cells_end(); ++c) {
+      c->info() = id++;
+      cells_.push_back(c);
+    }
+    data_.resize(cells_.size());
+    uf_.resize(cells_.size());
+    std::iota(uf_.begin(), uf_.end(), 0);
+    vertex_node_.assign(cells_.size(), kNone);
+    for (std::size_t k = 0; k < cells_.size(); ++k) {
+      CellData& d = data_[k];
+      d.infinite = rt_.is_infinite(cells_[k]);
+      std::optional<bool> zero;
+      if (auto p = cell_point<Approx>(cells_[k])) {
+        d.v = *p;
+        d.valid = true;
+        zero = is_zero_point(*p, d.infinite);
+      }
+      if (!zero) {
+        CGAL::Protect_FPU_rounding<true> guard;
+        if (auto p = cell_point<Interval>(cells_[k])) zero = is_zero_point(*p, d.infinite);
+      }
+      if (!zero) {
+        ++stats_.exact_fallbacks;
+        zero = is_zero_point(*cell_point<Exact>(cells_[k]), d.infinite);
+      }
+      d.zero = *zero;
+    }
+  }
+
+  template <class NT>
+  std::optional<EdgePattern> facet_pattern(Cell a, Cell b) const {
+    std::optional<Homog<NT>> pa, pb;
+    if constexpr (std::is_same_v<NT, Approx>) {
+      if (!data_[a->info()].valid || !data_[b->info()].valid) return std::nullopt;
+      pa = data_[a->info()].v;
+      pb = data_[b->info()].v;
+    } else {
+      pa = cell_point<NT>(a);
+      pb = cell_point<NT>(b);
+      if (!pa || !pb) return std::nullopt;
+    }
+    return edge_pattern_projective(*pa, *pb, data_[a->info()].infinite, data_[b->info()].infinite);
+  }
+
+  void compute_facets() {
+    facet_.assign(4 * cells_.size(), EdgePattern{});
+    facet_node_.assign(8 * cells_.size(), kNone);
+    for (std::size_t k = 0; k < cells_.size(); ++k) {
+      Cell c = cells_[k];
+      for (int f = 0; f < 4; ++f) {
+        Cell n = c->neighbor(f);
+        const int nk = n->info();
+        if (nk < static_cast<int>(k)) continue;  // each facet once, from its lower-id cell
+        std::optional<EdgePattern> p = facet_pattern<Approx>(c, n);
+        if (!p) {
+          CGAL::Protect_FPU_rounding<true> guard;
+          p = facet_pattern<Interval>(c, n);
+        }
+        if (!p) {
+          ++stats_.exact_fallbacks;
+          p = facet_pattern<Exact>(c, n);
+        }
+        const int mirror = n->index(c);
+        EdgePattern& fwd = facet_[4 * k + f];
+        EdgePattern& bwd = facet_[4 * nk + mirror];
+        fwd = *p;
+        bwd = *p;
+        std::reverse(bwd.sign, bwd.sign + p->roots + 1);
+        if (p->empty) {
+          if (data_[k].zero && data_[nk].zero) uf_[find(static_cast<int>(k))] = find(nk);
+          continue;
+        }
+        for (int r = 0; r < p->roots; ++r) {
+          const int node = add_root_node(c, f, r, *p);
+          facet_node_[2 * (4 * k + f) + r] = node;
+          facet_node_[2 * (4 * nk + mirror) + (p->roots - 1 - r)] = node;
+        }
+      }
+    }
+  }
+
+  std::array<long double, 4> approx(Cell c) const {
+    if (data_[c->info()].valid) {
+      const Homog<Approx>& v = data_[c->info()].v;
+      return {v.X.v, v.Y.v, v.Z.v, v.W.v};
+    }
+    auto v = cell_point<Exact>(c);
+    return {CGAL::to_double(v->X), CGAL::to_double(v->Y), CGAL::to_double(v->Z),
+            CGAL::to_double(v->W)};
+  }
+
+  int add_root_node(Cell c, int f, int r, const EdgePattern& p) {
+    std::array<int, 3> tri;
+    for (int k = 0, m = 0; k < 4; ++k)
+      if (k != f) tri[m++] = site_of(c->vertex(k));
+    const bool double_root = p.roots == 1 && p.sign[0] == p.sign[1];
+    out_.nodes.push_back(
+        root_node(approx(c), approx(c->neighbor(f)), r, p.roots, double_root, tri, sites_));
+    return static_cast<int>(out_.nodes.size()) - 1;
+  }
+
+  int vertex_zero_node(int cell) {
+    if (data_[cell].infinite) return kInfinityNode;
+    const int root = find(cell);
+    if (vertex_node_[root] != kNone) return vertex_node_[root];
+    auto v = cell_point<Exact>(cells_[root]);
+    const double w = CGAL::to_double(v->W);
+    out_.nodes.push_back(Node{CGAL::to_double(v->X) / w, CGAL::to_double(v->Y) / w});
+    return vertex_node_[root] = static_cast<int>(out_.nodes.size()) - 1;
+  }
+
+  // True when the circulator turns counter-clockwise around c_j - c_i. Cells are positively
+  // oriented, so orientation(c_i, c_j, c_prev, c_next) is the parity of that vertex permutation.
+  static bool circulates_ccw(Cell c, int ii, int ij, Cell next) {
+    const int prev_third = c->index(next);  // the vertex off the facet shared with `next`
+    const int next_third = 6 - ii - ij - prev_third;
+    const int perm[4] = {ii, ij, prev_third, next_third};
+    int inversions = 0;
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b) inversions += perm[a] > perm[b];
+    return inversions % 2 == 0;
+  }
+
+  void walk_edge(Cell c0, int i0, int j0) {
+    Vertex vi = c0->vertex(i0), vj = c0->vertex(j0);
+    std::vector<Cell>& ring = ring_;
+    ring.clear();
+    auto circ = rt_.incident_cells(c0, i0, j0), done = circ;
+    do {
+      ring.push_back(circ);
+    } while (++circ != done);
+    const std::size_t m = ring.size();
+    bool ccw = true;
+    for (std::size_t p = 0; p < m; ++p) {
+      if (rt_.is_infinite(ring[p])) continue;
+      ccw = circulates_ccw(ring[p], ring[p]->index(vi), ring[p]->index(vj), ring[(p + 1) % m]);
+      break;
+    }
+    std::vector<Token>& tokens = tokens_;
+    tokens.clear();
+    for (std::size_t p = 0; p < m; ++p) {
+      Cell c = ring[p];
+      const int f = c->index(ring[(p + 1) % m]);
+      if (data_[c->info()].zero) tokens.push_back({vertex_zero_node(c->info()), 0});
+      const EdgePattern& pat = facet_[4 * c->info() + f];
+      if (pat.empty) continue;
+      tokens.push_back({kNone, pat.sign[0]});
+      for (int r = 0; r < pat.roots; ++r) {
+        tokens.push_back({facet_node_[2 * (4 * c->info() + f) + r], 0});
+        tokens.push_back({kNone, pat.sign[r + 1]});
+      }
+    }
+    if (!ccw) std::reverse(tokens.begin(), tokens.end());
+    emit_arcs(tokens, scratch_, site_of(vi), site_of(vj), sites_, out_.arcs, [&] {
+      if (vi->point().point().z() == vj->point().point().z()) return false;  // U would show
+      std::vector<RawPoint> link;
+      for (Cell c : ring)
+        for (int k = 0; k < 4; ++k) {
+          Vertex v = c->vertex(k);
+          if (v != vi && v != vj && !rt_.is_infinite(v)) link.push_back(v->point().point());
+        }
+      return circle_centre_in_facet(vi->point().point(), vj->point().point(), link);
+    });
+  }
+};
+
+}  // namespace
+
+void extract_spatial(const std::vector<Site>& sites, RegularTriangulation& rt, Diagram& out,
+                     BuildStats& stats) {
+  SpatialExtractor(sites, rt, out, stats).run();
+}
+
+}  // namespace covmap::voronoi::engine

@@ -1,0 +1,106 @@
+// Pieces shared by the 3D and planar extractors: turning the walk around one power facet into
+// arcs, and placing nodes.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "voronoi/diagram.h"
+#include "voronoi/engine/power_geometry.h"
+
+namespace covmap::voronoi::engine {
+
+inline constexpr int kInfinityNode = -2;  // the zero point U at infinity (an unbounded arc end)
+
+// The boundary of a power facet as a cyclic token list: a zero point (node id, kInfinityNode for
+// U) or the sign of g on a stretch (node == kNone).
+struct Token {
+  int node = kNone;
+  int sign = 0;
+};
+
+struct WalkScratch {
+  std::vector<int> zeros;
+  std::vector<int> after;
+};
+
+// Appends the arcs of the site pair (si, sj) given the facet boundary walked counter-clockwise
+// around c_j - c_i. `full_inside` is consulted only when the walk has no zero point and lies
+// outside D: it must say whether the whole bisector lies inside the facet.
+template <class FullInside>
+void emit_arcs(const std::vector<Token>& tokens, WalkScratch& scratch, int si, int sj,
+               const std::vector<Site>& sites, std::vector<Arc>& arcs, FullInside&& full_inside);
+
+// The arc of (si, sj) from node `from` to node `to` (kNone / kInfinityNode at infinity).
+Arc make_arc(int si, int sj, int from, int to, const std::vector<Site>& sites);
+
+// A node between homogeneous points a and b (approximate, as long doubles): interior root r of
+// `roots` (ordered from a to b) of g along the segment — a double root if `double_root` — polished
+// by Newton's method on the weighted distances to the three sites `tri` it is equidistant from.
+Node root_node(std::array<long double, 4> a, std::array<long double, 4> b, int r, int roots,
+               bool double_root, const std::array<int, 3>& tri, const std::vector<Site>& sites);
+
+// The lift of the Apollonius circle's centre of (pi, pj) is inside D; is it in the facet, i.e. is
+// the power to pi no larger than to any site of `link`? Exact.
+bool circle_centre_in_facet(const RawPoint& pi, const RawPoint& pj,
+                            const std::vector<RawPoint>& link);
+
+template <class FullInside>
+void emit_arcs(const std::vector<Token>& tokens, WalkScratch& scratch, int si, int sj,
+               const std::vector<Site>& sites, std::vector<Arc>& arcs, FullInside&& full_inside) {
+  std::vector<int>& zeros = scratch.zeros;
+  std::vector<int>& after = scratch.after;
+  zeros.clear();
+  after.clear();
+  int any_sign = 0;
+  const std::size_t t = tokens.size();
+  for (std::size_t k = 0; k < t; ++k) {
+    if (tokens[k].node == kNone) {
+      if (tokens[k].sign != 0) any_sign = tokens[k].sign;
+      continue;
+    }
+    // The sign of the stretch that follows; a zero repeated with no stretch between (cells
+    // sharing one power vertex) is one point.
+    int s = 0;
+    bool duplicate = false;
+    for (std::size_t q = 1; q < t; ++q) {
+      const Token& nx = tokens[(k + q) % t];
+      if (nx.node == kNone) {
+        if (nx.sign != 0) {
+          s = nx.sign;
+          break;
+        }
+        continue;
+      }
+      duplicate = nx.node == tokens[k].node;
+      break;
+    }
+    if (duplicate) continue;
+    zeros.push_back(tokens[k].node);
+    after.push_back(s);
+  }
+  if (zeros.empty()) {
+    if (any_sign < 0 && full_inside()) arcs.push_back(make_arc(si, sj, kNone, kNone, sites));
+    return;
+  }
+  if (zeros.size() == 1) {
+    // One touching point. The stretch-rule needs D ∩ Q to have an interior, which fails exactly
+    // here: ∂Q may touch ∂D from outside (D ∩ Q is that point: no arc) or from inside (the whole
+    // conic is in Q: a loop through the point). U is always touched from inside (Q contains the
+    // far-up part of D). For a finite point the circle's centre decides; a line's D is unbounded,
+    // so it cannot lie in Q without reaching U.
+    if (after[0] >= 0) return;
+    if (zeros[0] == kInfinityNode)
+      arcs.push_back(make_arc(si, sj, kInfinityNode, kInfinityNode, sites));
+    else if (sites[si].weight != sites[sj].weight && full_inside())
+      arcs.push_back(make_arc(si, sj, zeros[0], zeros[0], sites));
+    return;
+  }
+  for (std::size_t k = 0; k < zeros.size(); ++k) {
+    // A stretch of ∂Q inside D (sign > 0) means the matching piece of ∂D is outside Q.
+    if (after[k] >= 0) continue;
+    arcs.push_back(make_arc(si, sj, zeros[k], zeros[(k + 1) % zeros.size()], sites));
+  }
+}
+
+}  // namespace covmap::voronoi::engine
