@@ -47,6 +47,7 @@ struct BuildStats {
   std::size_t exact_fallbacks = 0;  // decisions the interval filter could not take
   double triangulation_seconds = 0.0;
   double extraction_seconds = 0.0;
+  double faces_seconds = 0.0;
 };
 
 // Throws InvalidSites. `stats` (optional) receives counters for benchmarks and reports.

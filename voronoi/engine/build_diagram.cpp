@@ -1,6 +1,7 @@
 #include <chrono>
 
 #include "voronoi/engine.h"
+#include "voronoi/faces.h"
 #include "voronoi/engine/extractors.h"
 #include "voronoi/engine/facet_walk.h"
 
@@ -15,6 +16,25 @@ void extract_linear(const std::vector<Site>& sites, RegularTriangulation& rt, Di
     const int si = site_of(e->first->vertex(e->second));
     const int sj = site_of(e->first->vertex(e->third));
     out.arcs.push_back(make_arc(si, sj, kNone, kNone, sites));
+  }
+}
+
+// Nodes found twice (on a power line shared by two facets) leave unreferenced copies behind.
+void drop_unused_nodes(Diagram& d) {
+  std::vector<int> remap(d.nodes.size(), kNone);
+  for (const Arc& a : d.arcs)
+    for (int n : {a.from, a.to})
+      if (n != kNone) remap[n] = 0;
+  int next = 0;
+  for (std::size_t k = 0; k < d.nodes.size(); ++k)
+    if (remap[k] != kNone) {
+      remap[k] = next;
+      d.nodes[next++] = d.nodes[k];
+    }
+  d.nodes.resize(next);
+  for (Arc& a : d.arcs) {
+    if (a.from != kNone) a.from = remap[a.from];
+    if (a.to != kNone) a.to = remap[a.to];
   }
 }
 
@@ -46,7 +66,11 @@ Diagram build_diagram(std::span<const Site> input, BuildStats* stats_out) {
     extract_planar(out.sites, rt, out, stats);
   else
     extract_linear(out.sites, rt, out);
+  drop_unused_nodes(out);
   stats.extraction_seconds = seconds_since(start);
+  start = Clock::now();
+  trace_faces(out);
+  stats.faces_seconds = seconds_since(start);
   if (stats_out) *stats_out = stats;
   return out;
 }

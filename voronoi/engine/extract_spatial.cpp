@@ -7,11 +7,15 @@
 // angular sorting of algebraic points and no tolerance. The walk is projective: rays end at
 // points at infinity, and for equal weights (vertical facets) the conic touches the line at
 // infinity at the vertical direction U, where unbounded arcs end.
+#include <algorithm>
+#include <cmath>
 #include <numeric>
+#include <unordered_map>
 
 #include "voronoi/engine/edge_pattern.h"
 #include "voronoi/engine/extractors.h"
 #include "voronoi/engine/facet_walk.h"
+#include "voronoi/tolerances.h"
 
 namespace covmap::voronoi::engine {
 namespace {
@@ -36,6 +40,7 @@ class SpatialExtractor {
   void run() {
     compute_cells();
     compute_facets();
+    merge_shared_line_nodes();
     for (auto e = rt_.finite_edges_begin(); e != rt_.finite_edges_end(); ++e)
       walk_edge(e->first, e->second, e->third);
   }
@@ -52,6 +57,7 @@ class SpatialExtractor {
   std::vector<int> facet_node_;     // 2 per facet entry: node ids of its interior zero points
   std::vector<int> uf_;             // union-find: cells sharing one power vertex on the paraboloid
   std::vector<int> vertex_node_;    // node id of a zero vertex, by union-find root
+  std::vector<std::array<int, 3>> node_facet_;  // per root node: the sites of its facet
   // Scratch buffers reused by every walk (the walks dominate allocation otherwise).
   std::vector<Cell> ring_;
   std::vector<Token> tokens_;
@@ -158,13 +164,70 @@ class SpatialExtractor {
           if (data_[k].zero && data_[nk].zero) uf_[find(static_cast<int>(k))] = find(nk);
           continue;
         }
+        // On an edge at infinity (between two directions) the only possible zero is U.
+        const bool at_infinity = data_[k].infinite && data_[nk].infinite;
         for (int r = 0; r < p->roots; ++r) {
-          const int node = add_root_node(c, f, r, *p);
+          const int node = at_infinity ? kInfinityNode : add_root_node(c, f, r, *p);
           facet_node_[2 * (4 * k + f) + r] = node;
           facet_node_[2 * (4 * nk + mirror) + (p->roots - 1 - r)] = node;
         }
       }
     }
+  }
+
+  // Facets whose lifted sites are coplanar and co-circular share one power line, so each of its
+  // crossings with the paraboloid is found once per facet. Candidates are nearby root nodes; they
+  // are merged only when exact predicates confirm the shared line.
+  bool same_power_line(const std::array<int, 3>& a, const std::array<int, 3>& b) const {
+    auto raw = [&](int s) {
+      return RawPoint(sites_[s].x, sites_[s].y, sites_[s].weight);
+    };
+    for (int t : b) {
+      if (t == a[0] || t == a[1] || t == a[2]) continue;
+      if (lifted::orientation(raw(a[0]), raw(a[1]), raw(a[2]), raw(t)) != CGAL::ZERO) return false;
+      if (lifted::power_side(raw(a[0]), raw(a[1]), raw(a[2]), raw(t)) != CGAL::ZERO) return false;
+    }
+    return true;
+  }
+
+  void merge_shared_line_nodes() {
+    const std::size_t n = node_facet_.size();
+    if (n < 2) return;
+    double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
+    for (const Site& s : sites_) {
+      xmin = std::min(xmin, s.x), xmax = std::max(xmax, s.x);
+      ymin = std::min(ymin, s.y), ymax = std::max(ymax, s.y);
+    }
+    const double cell = tolerance::kNodeMergeCandidate * std::max(std::hypot(xmax - xmin, ymax - ymin), 1e-300);
+    auto key = [&](double v) { return static_cast<long long>(std::floor(v / cell)); };
+    std::unordered_map<long long, std::vector<int>> grid;
+    auto hash = [](long long a, long long b) { return a * 1000003LL ^ b; };
+    std::vector<int> parent(n);
+    std::iota(parent.begin(), parent.end(), 0);
+    auto find = [&](int x) {
+      while (parent[x] != x) x = parent[x] = parent[parent[x]];
+      return x;
+    };
+    bool merged = false;
+    for (std::size_t i = 0; i < n; ++i) {
+      const Node& p = out_.nodes[i];
+      if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
+      const long long kx = key(p.x), ky = key(p.y);
+      for (long long dx = -1; dx <= 1; ++dx)
+        for (long long dy = -1; dy <= 1; ++dy) {
+          auto it = grid.find(hash(kx + dx, ky + dy));
+          if (it == grid.end()) continue;
+          for (int j : it->second)
+            if (find(j) != find(static_cast<int>(i)) && same_power_line(node_facet_[j], node_facet_[i])) {
+              parent[find(static_cast<int>(i))] = find(j);
+              merged = true;
+            }
+        }
+      grid[hash(kx, ky)].push_back(static_cast<int>(i));
+    }
+    if (!merged) return;
+    for (int& node : facet_node_)
+      if (node >= 0) node = find(node);
   }
 
   std::array<long double, 4> approx(Cell c) const {
@@ -184,6 +247,7 @@ class SpatialExtractor {
     const bool double_root = p.roots == 1 && p.sign[0] == p.sign[1];
     out_.nodes.push_back(
         root_node(approx(c), approx(c->neighbor(f)), r, p.roots, double_root, tri, sites_));
+    node_facet_.push_back(tri);
     return static_cast<int>(out_.nodes.size()) - 1;
   }
 

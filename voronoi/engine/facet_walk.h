@@ -2,6 +2,7 @@
 // arcs, and placing nodes.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -22,6 +23,7 @@ struct Token {
 struct WalkScratch {
   std::vector<int> zeros;
   std::vector<int> after;
+  std::vector<int> sorted;
 };
 
 // Appends the arcs of the site pair (si, sj) given the facet boundary walked counter-clockwise
@@ -82,6 +84,15 @@ void emit_arcs(const std::vector<Token>& tokens, WalkScratch& scratch, int si, i
   if (zeros.empty()) {
     if (any_sign < 0 && full_inside()) arcs.push_back(make_arc(si, sj, kNone, kNone, sites));
     return;
+  }
+  // A flat facet (its lifted sites coplanar and co-circular with a neighbour's) is walked along
+  // both sides of one segment, so its zero points come twice. ∂D meets it in isolated points only:
+  // no arc. (A proper convex facet meets ∂D in distinct points.)
+  if (zeros.size() > 1) {
+    scratch.sorted.assign(zeros.begin(), zeros.end());
+    std::sort(scratch.sorted.begin(), scratch.sorted.end());
+    if (std::adjacent_find(scratch.sorted.begin(), scratch.sorted.end()) != scratch.sorted.end())
+      return;
   }
   if (zeros.size() == 1) {
     // One touching point. The stretch-rule needs D ∩ Q to have an interior, which fails exactly

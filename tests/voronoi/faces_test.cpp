@@ -1,0 +1,177 @@
+// Faces traced from the engine's arcs, against a brute-force oracle: every random point lies in
+// exactly one face, whose site is the point's weighted-nearest site; every site lies in exactly
+// one of its own faces, the non-orphan one. Containment here is the test's own: each boundary cycle
+// is flattened into a polygon (arcs sampled densely, rays cut at a far box), so it shares no code
+// with the ray casting in voronoi/faces.cpp.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "site_families.h"
+#include "voronoi/engine.h"
+
+namespace covmap::voronoi {
+namespace {
+
+using testing::Family;
+
+int brute_owner(const std::vector<Site>& sites, Point p) {
+  int best = 0;
+  double bd = 1e300;
+  for (std::size_t i = 0; i < sites.size(); ++i) {
+    const double v = std::hypot(p.x - sites[i].x, p.y - sites[i].y) / sites[i].weight;
+    if (v < bd) bd = v, best = static_cast<int>(i);
+  }
+  return best;
+}
+
+// The cycle as a polygon. Unbounded pieces are followed out to distance `far` and joined there
+// counter-clockwise (the face is on the left), which is exact enough for points well inside.
+std::vector<Point> flatten(const Diagram& d, const std::vector<HalfArc>& cycle, double far) {
+  std::vector<Point> poly;
+  auto angle_of = [](Point p) { return std::atan2(p.y, p.x); };
+  for (std::size_t k = 0; k < cycle.size(); ++k) {
+    const Arc& a = d.arcs[cycle[k].arc];
+    std::vector<Point> pts;
+    if (const Circle* c = std::get_if<Circle>(&a.curve)) {
+      double a0 = 0, sweep = 2 * M_PI;
+      if (a.from != kNone) {
+        a0 = std::atan2(d.nodes[a.from].y - c->cy, d.nodes[a.from].x - c->cx);
+        if (a.to != a.from) {
+          const double a1 = std::atan2(d.nodes[a.to].y - c->cy, d.nodes[a.to].x - c->cx);
+          sweep = std::fmod((a.ccw ? 1 : -1) * (a1 - a0) + 4 * M_PI, 2 * M_PI);
+          if (sweep == 0) sweep = 2 * M_PI;
+        }
+      }
+      const int steps = 256;
+      for (int s = 0; s <= steps; ++s) {
+        const double t = a0 + (a.ccw ? 1 : -1) * sweep * s / steps;
+        pts.push_back({c->cx + c->r * std::cos(t), c->cy + c->r * std::sin(t)});
+      }
+    } else {
+      const Line& l = std::get<Line>(a.curve);
+      const double len = std::hypot(l.dx, l.dy);
+      const Point u{l.dx / len, l.dy / len};
+      auto param = [&](int n) { return (d.nodes[n].x - l.x) * u.x + (d.nodes[n].y - l.y) * u.y; };
+      const double s0 = a.from == kNone ? -far : param(a.from);
+      const double s1 = a.to == kNone ? far : param(a.to);
+      pts.push_back({l.x + s0 * u.x, l.y + s0 * u.y});
+      pts.push_back({l.x + s1 * u.x, l.y + s1 * u.y});
+    }
+    if (!cycle[k].forward) std::reverse(pts.begin(), pts.end());
+    // Joining at infinity: go counter-clockwise along the far circle to the next piece's start.
+    if (!poly.empty() && (std::hypot(pts.front().x, pts.front().y) > 0.5 * far) &&
+        std::hypot(poly.back().x, poly.back().y) > 0.5 * far) {
+      double from = angle_of(poly.back()), to = angle_of(pts.front());
+      double span = std::fmod(to - from + 4 * M_PI, 2 * M_PI);
+      for (int s = 1; s < 64; ++s) {
+        const double t = from + span * s / 64;
+        poly.push_back({far * std::cos(t), far * std::sin(t)});
+      }
+    }
+    poly.insert(poly.end(), pts.begin(), pts.end());
+  }
+  if (poly.size() > 2 && std::hypot(poly.back().x, poly.back().y) > 0.5 * far &&
+      std::hypot(poly.front().x, poly.front().y) > 0.5 * far) {
+    double from = angle_of(poly.back()), to = angle_of(poly.front());
+    double span = std::fmod(to - from + 4 * M_PI, 2 * M_PI);
+    for (int s = 1; s < 64; ++s) {
+      const double t = from + span * s / 64;
+      poly.push_back({far * std::cos(t), far * std::sin(t)});
+    }
+  }
+  return poly;
+}
+
+bool in_polygon(const std::vector<Point>& poly, Point p) {
+  bool inside = false;
+  for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
+    if ((poly[i].y > p.y) != (poly[j].y > p.y) &&
+        p.x < (poly[j].x - poly[i].x) * (p.y - poly[i].y) / (poly[j].y - poly[i].y) + poly[i].x)
+      inside = !inside;
+  }
+  return inside;
+}
+
+// Face membership: inside the outer boundary (if any) and outside every hole. An unbounded face's
+// first boundary is outer when it runs through infinity; if its first cycle is closed and
+// clockwise it is a hole. The polygon's orientation tells them apart.
+bool in_face(const Diagram& d, const Face& f, Point p, double far) {
+  bool inside = true;
+  for (std::size_t b = 0; b < f.boundaries.size(); ++b) {
+    const auto poly = flatten(d, f.boundaries[b], far);
+    double area = 0;
+    for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++)
+      area += (poly[j].x * poly[i].y - poly[i].x * poly[j].y);
+    const bool outer = area > 0;
+    const bool in = in_polygon(poly, p);
+    if (outer && !in) inside = false;
+    if (!outer && in) inside = false;
+  }
+  return inside;
+}
+
+class FacesOracle : public ::testing::TestWithParam<Family> {};
+
+TEST_P(FacesOracle, EveryPointInExactlyOneFaceOfItsOwner) {
+  for (int seed = 1; seed <= 8; ++seed) {
+    const auto sites = testing::make_sites(GetParam(), 25, seed);
+    const Diagram d = build_diagram(sites);
+    double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
+    for (const Site& s : sites) {
+      xmin = std::min(xmin, s.x), xmax = std::max(xmax, s.x);
+      ymin = std::min(ymin, s.y), ymax = std::max(ymax, s.y);
+    }
+    const double scale = std::max(xmax - xmin, ymax - ymin);
+    const double far = 1e3 * (scale + std::hypot(xmax, ymax) + std::hypot(xmin, ymin));
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> ux(xmin - 0.2 * scale, xmax + 0.2 * scale),
+        uy(ymin - 0.2 * scale, ymax + 0.2 * scale);
+    for (int q = 0; q < 150; ++q) {
+      const Point p{ux(rng), uy(rng)};
+      const int owner = brute_owner(sites, p);
+      int containing = 0, containing_site = -1;
+      for (const Face& f : d.faces)
+        if (in_face(d, f, p, far)) ++containing, containing_site = f.site;
+      ASSERT_EQ(containing, 1) << "seed " << seed << " point (" << p.x << ", " << p.y << ")";
+      EXPECT_EQ(containing_site, owner) << "seed " << seed;
+    }
+    // Each site: exactly one non-orphan face, and the site lies in it.
+    std::vector<int> own(sites.size(), 0);
+    for (const Face& f : d.faces) {
+      if (f.orphan) continue;
+      ++own[f.site];
+      EXPECT_TRUE(in_face(d, f, {sites[f.site].x, sites[f.site].y}, far)) << "seed " << seed;
+    }
+    for (std::size_t s = 0; s < sites.size(); ++s) EXPECT_EQ(own[s], 1) << "site " << s;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Families, FacesOracle,
+                         ::testing::Values(Family::UniformWeights, Family::EqualWeights,
+                                           Family::WeightClasses, Family::SharedMaximum,
+                                           Family::Grid),
+                         [](const auto& info) { return testing::family_name(info.param); });
+
+TEST(Faces, NestedRegionsGiveHolesAndOrphans) {
+  // A light site inside a heavy one's region: a full-circle hole; two heavy equal sites and a light
+  // one between them far away give an orphan-free but holed diagram.
+  const std::vector<Site> sites = {{"big", 0, 0, 10}, {"small", 5, 0, 1}};
+  const Diagram d = build_diagram(sites);
+  ASSERT_EQ(d.faces.size(), 2u);
+  int holes = 0;
+  for (const Face& f : d.faces) {
+    EXPECT_FALSE(f.orphan);
+    if (f.site == 0) {
+      EXPECT_FALSE(f.bounded);
+      holes += static_cast<int>(f.boundaries.size());
+    } else {
+      EXPECT_TRUE(f.bounded);
+    }
+  }
+  EXPECT_EQ(holes, 1);
+}
+
+}  // namespace
+}  // namespace covmap::voronoi

@@ -1,0 +1,302 @@
+#include "voronoi/faces.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "voronoi/arc_path.h"
+#include "voronoi/tolerances.h"
+
+namespace covmap::voronoi {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kTwoPi = 2 * kPi;
+// Direction of the containment test ray: any angle works; an irrational-looking one avoids rays
+// along the axes, where hand-made and grid inputs put their nodes.
+constexpr double kRayAngle = 0.7391;
+
+struct HalfInfo {
+  int site = kNone;
+  int start = kNone;  // node, kNone at infinity
+  int end = kNone;
+};
+
+int half_id(int arc, bool forward) { return 2 * arc + (forward ? 0 : 1); }
+HalfArc half_of(int id) { return {id / 2, id % 2 == 0}; }
+
+HalfInfo info(const Diagram& d, int id) {
+  const Arc& a = d.arcs[id / 2];
+  const bool fwd = id % 2 == 0;
+  return {fwd ? a.left_site : a.right_site, fwd ? a.from : a.to, fwd ? a.to : a.from};
+}
+
+// Direction of travel of a half-arc at its start (at = 0) or end (at = 1).
+Point travel_direction(const Diagram& d, int id, int at) {
+  const ArcPathView p = arc_path(d.arcs[id / 2], d.nodes);
+  const bool fwd = id % 2 == 0;
+  const bool at_path_start = (at == 0) == fwd;
+  Point t = p.tangent(at_path_start ? p.s0 : p.s1);
+  if (!p.circle && !std::isfinite(at_path_start ? p.s0 : p.s1)) t = p.tangent(0);
+  if (!fwd) t = {-t.x, -t.y};
+  return t;
+}
+
+// Turning of the path along a half-arc (signed, radians).
+double arc_turning(const Diagram& d, int id) {
+  const ArcPathView p = arc_path(d.arcs[id / 2], d.nodes);
+  if (!p.circle) return 0.0;
+  const double t = p.sense * (p.s1 - p.s0);
+  return id % 2 == 0 ? t : -t;
+}
+
+double angle_between(Point a, Point b) {  // signed angle from a to b in (-π, π]
+  return std::atan2(a.x * b.y - a.y * b.x, a.x * b.x + a.y * b.y);
+}
+
+// A point at infinity: the direction angle, and the offset that orders parallel arcs.
+struct AtInfinity {
+  double angle = 0.0;
+  double offset = 0.0;
+};
+
+AtInfinity infinity_key(const Diagram& d, int id, bool leaving) {
+  const Arc& a = d.arcs[id / 2];
+  const Line& l = std::get<Line>(a.curve);
+  const double len = std::hypot(l.dx, l.dy);
+  Point u{l.dx / len, l.dy / len};
+  const bool fwd = id % 2 == 0;
+  // Leaving forward goes to +u; arriving forward comes from -u; backward the opposite.
+  if (leaving != fwd) u = {-u.x, -u.y};
+  double angle = std::atan2(u.y, u.x);
+  if (angle < 0) angle += kTwoPi;
+  // Counter-clockwise at infinity = along rot90(u).
+  return {angle, -l.x * u.y + l.y * u.x};
+}
+
+bool key_less(const AtInfinity& a, const AtInfinity& b) {
+  if (std::fabs(a.angle - b.angle) > tolerance::kParallelAngle) return a.angle < b.angle;
+  return a.offset < b.offset;
+}
+
+// Counter-clockwise angular distance from a to b in [0, 2π).
+double ccw_distance(double a, double b) {
+  double x = b - a;
+  while (x < 0) x += kTwoPi;
+  while (x >= kTwoPi) x -= kTwoPi;
+  return x;
+}
+
+}  // namespace
+
+bool cycle_contains(const Diagram& d, const std::vector<HalfArc>& cycle, Point p) {
+  const Point dir{std::cos(kRayAngle), std::sin(kRayAngle)};
+  int crossings = 0;
+  for (std::size_t k = 0; k < cycle.size(); ++k) {
+    const HalfArc h = cycle[k];
+    const ArcPathView path = arc_path(d.arcs[h.arc], d.nodes);
+    if (path.circle) {
+      // p + t dir on the circle, t > 0, at a parameter inside the arc.
+      const double fx = p.x - path.cx, fy = p.y - path.cy;
+      const double b = fx * dir.x + fy * dir.y, c = fx * fx + fy * fy - path.r * path.r;
+      const double disc = b * b - c;
+      if (disc > 0) {
+        const double sq = std::sqrt(disc);
+        for (double t : {-b - sq, -b + sq}) {
+          if (t <= 0) continue;
+          const double x = fx + t * dir.x, y = fy + t * dir.y;
+          double s = path.sense * (std::atan2(y, x) - path.start_angle);
+          s = std::fmod(s, kTwoPi);
+          if (s < 0) s += kTwoPi;
+          if (s > path.s0 && s < path.s1) ++crossings;
+        }
+      }
+    } else {
+      const double den = dir.x * path.uy - dir.y * path.ux;
+      if (den != 0) {
+        const double wx = path.ox - p.x, wy = path.oy - p.y;
+        const double t = (wx * path.uy - wy * path.ux) / den;
+        const double s = (wx * dir.y - wy * dir.x) / den;
+        if (t > 0 && s > path.s0 && s < path.s1) ++crossings;
+      }
+    }
+    // A passage through infinity to the next half-arc: counter-clockwise from where this one
+    // leaves to where the next arrives; the ray meets it if its direction lies in between.
+    const int id = half_id(h.arc, h.forward);
+    const HalfArc nx = cycle[(k + 1) % cycle.size()];
+    if (info(d, id).end == kNone && !path.circle) {
+      const double out = infinity_key(d, id, true).angle;
+      const double in = infinity_key(d, half_id(nx.arc, nx.forward), false).angle;
+      const double span = ccw_distance(out, in);
+      const double ray = ccw_distance(out, kRayAngle);
+      if (span > tolerance::kParallelAngle && ray < span) ++crossings;
+    }
+  }
+  return crossings % 2 == 1;
+}
+
+void trace_faces(Diagram& d) {
+  d.faces.clear();
+  const int halves = 2 * static_cast<int>(d.arcs.size());
+  // Outgoing half-arcs per node, and half-arcs arriving from infinity per site.
+  std::vector<std::vector<int>> out(d.nodes.size());
+  std::map<int, std::vector<int>> from_infinity;
+  for (int h = 0; h < halves; ++h) {
+    const HalfInfo hi = info(d, h);
+    if (hi.site == kNone) continue;
+    if (hi.start == kNone) {
+      if (hi.end != kNone || std::holds_alternative<Line>(d.arcs[h / 2].curve))
+        from_infinity[hi.site].push_back(h);
+    } else {
+      out[hi.start].push_back(h);
+    }
+  }
+  for (auto& [site, list] : from_infinity)
+    std::sort(list.begin(), list.end(), [&](int a, int b) {
+      return key_less(infinity_key(d, a, false), infinity_key(d, b, false));
+    });
+
+  auto next_of = [&](int h) -> int {
+    const HalfInfo hi = info(d, h);
+    const Arc& arc = d.arcs[h / 2];
+    if (hi.end == kNone) {
+      if (hi.start == kNone && std::holds_alternative<Circle>(arc.curve)) return h;  // full circle
+      // Around infinity, counter-clockwise, to the next arc of this site coming back.
+      const auto& list = from_infinity[hi.site];
+      if (list.empty()) return -1;
+      const AtInfinity leave = infinity_key(d, h, true);
+      for (int c : list)
+        if (key_less(leave, infinity_key(d, c, false))) return c;
+      return list.front();
+    }
+    int best = -1;
+    int count = 0;
+    for (int c : out[hi.end])
+      if (info(d, c).site == hi.site) {
+        ++count;
+        best = c;
+      }
+    if (count <= 1) return best;
+    // The site's region touches this node more than once: take the first outgoing arc clockwise
+    // from the reversed incoming direction (the face is on the left).
+    const Point in = travel_direction(d, h, 1);
+    const Point back{-in.x, -in.y};
+    double best_angle = 1e9;
+    for (int c : out[hi.end]) {
+      if (info(d, c).site != hi.site) continue;
+      const Point t = travel_direction(d, c, 0);
+      double cw = -angle_between(back, t);
+      if (cw <= 0) cw += kTwoPi;
+      if (cw < best_angle) best_angle = cw, best = c;
+    }
+    return best;
+  };
+
+  std::vector<char> seen(halves, 0);
+  struct Cycle {
+    int site;
+    std::vector<HalfArc> arcs;
+    bool through_infinity = false;
+    double turning = 0.0;
+  };
+  std::vector<Cycle> cycles;
+  for (int h0 = 0; h0 < halves; ++h0) {
+    if (seen[h0] || info(d, h0).site == kNone) continue;
+    Cycle cyc{info(d, h0).site, {}, false, 0.0};
+    int h = h0;
+    bool closed = false;
+    for (int guard = 0; guard <= halves; ++guard) {
+      seen[h] = 1;
+      cyc.arcs.push_back(half_of(h));
+      cyc.turning += arc_turning(d, h);
+      const int nx = next_of(h);
+      if (nx < 0) break;
+      if (info(d, h).end == kNone && std::holds_alternative<Line>(d.arcs[h / 2].curve)) {
+        cyc.through_infinity = true;
+      } else {
+        cyc.turning += angle_between(travel_direction(d, h, 1), travel_direction(d, nx, 0));
+      }
+      if (nx == h0) {
+        closed = true;
+        break;
+      }
+      if (seen[nx]) break;
+      h = nx;
+    }
+    if (closed) cycles.push_back(std::move(cyc));
+  }
+
+  // Outer cycles make faces; clockwise cycles are holes of the face of their site containing them.
+  std::map<int, std::vector<int>> faces_of_site;
+  std::vector<const Cycle*> holes;
+  for (const Cycle& c : cycles) {
+    if (c.through_infinity || c.turning > 0) {
+      Face f;
+      f.site = c.site;
+      f.bounded = !c.through_infinity;
+      f.boundaries.push_back(c.arcs);
+      faces_of_site[c.site].push_back(static_cast<int>(d.faces.size()));
+      d.faces.push_back(std::move(f));
+    } else {
+      holes.push_back(&c);
+    }
+  }
+  const std::vector<char> has_outer(d.faces.size(), 1);
+  std::map<int, int> implicit_face;  // site -> its unbounded face without outer cycle
+  for (const Cycle* hole : holes) {
+    const HalfArc first = hole->arcs.front();
+    const ArcPathView path = arc_path(d.arcs[first.arc], d.nodes);
+    const double mid = std::isfinite(path.s0) && std::isfinite(path.s1) ? 0.5 * (path.s0 + path.s1)
+                       : std::isfinite(path.s0)                          ? path.s0 + 1.0
+                       : std::isfinite(path.s1)                          ? path.s1 - 1.0
+                                                                         : 0.0;
+    const Point p = path.at(mid);
+    int target = -1;
+    for (int f : faces_of_site[hole->site]) {
+      if (cycle_contains(d, d.faces[f].boundaries.front(), p)) {
+        // Innermost: a bounded face inside another of the same site wins.
+        if (target < 0 || d.faces[f].bounded) target = f;
+      }
+    }
+    if (target < 0) {
+      // The unbounded component of a site without lines: it has no outer cycle, only holes.
+      auto it = implicit_face.find(hole->site);
+      if (it == implicit_face.end()) {
+        Face f;
+        f.site = hole->site;
+        f.bounded = false;
+        faces_of_site[hole->site].push_back(static_cast<int>(d.faces.size()));
+        d.faces.push_back(std::move(f));
+        it = implicit_face.emplace(hole->site, static_cast<int>(d.faces.size()) - 1).first;
+      }
+      target = it->second;
+    }
+    d.faces[target].boundaries.push_back(hole->arcs);
+  }
+  // A diagram of one site (or none with arcs): the whole plane.
+  for (std::size_t s = 0; s < d.sites.size(); ++s)
+    if (faces_of_site.find(static_cast<int>(s)) == faces_of_site.end() && d.arcs.empty() &&
+        d.clip.empty()) {
+      Face f;
+      f.site = static_cast<int>(s);
+      f.bounded = false;
+      faces_of_site[f.site].push_back(static_cast<int>(d.faces.size()));
+      d.faces.push_back(std::move(f));
+    }
+
+  // Orphans: every face of a site but the one containing the site itself. Faces created for holes
+  // only (the unbounded component of a site without lines) have no outer cycle.
+  for (auto& [site, list] : faces_of_site) {
+    const Point s{d.sites[site].x, d.sites[site].y};
+    for (int f : list) {
+      Face& face = d.faces[f];
+      const bool outer = f < static_cast<int>(has_outer.size()) && has_outer[f];
+      bool inside = !outer || cycle_contains(d, face.boundaries.front(), s);
+      for (std::size_t b = outer ? 1 : 0; inside && b < face.boundaries.size(); ++b)
+        if (cycle_contains(d, face.boundaries[b], s)) inside = false;
+      face.orphan = !inside;
+    }
+  }
+}
+
+}  // namespace covmap::voronoi

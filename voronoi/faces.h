@@ -1,0 +1,22 @@
+// covmap::voronoi::trace_faces — the faces of a diagram whose arcs name their sites.
+//
+// Contract: `d.arcs` must form a planar arc graph in which every arc names the sites on its left
+// and right (kNone outside a frame). trace_faces replaces `d.faces` by the connected components of
+// every site's region: boundary cycles of half-arcs with the face on their left, the outer cycle
+// first (bounded faces; a cycle through infinity for unbounded faces bounded by lines), then holes.
+// Each face is marked orphan unless it contains its own site. Works on the engine's output and on
+// any other site-labelled arc graph. At a node where one site's region touches itself the next
+// half-arc is chosen by angle; elsewhere the labels alone decide.
+#pragma once
+
+#include "voronoi/diagram.h"
+
+namespace covmap::voronoi {
+
+void trace_faces(Diagram& d);
+
+// True when p lies inside the region enclosed by `cycle` (half-arcs with the region on their left;
+// a cycle may pass through infinity). Used for containment of holes and sites.
+bool cycle_contains(const Diagram& d, const std::vector<HalfArc>& cycle, Point p);
+
+}  // namespace covmap::voronoi

@@ -1,0 +1,27 @@
+// Every approximate comparison made outside the exact engine core, in one place.
+//
+// The engine's combinatorics (which sites meet, in which order, where degrees exceed three) are
+// exact and use no tolerance (engine/exact_sign.h documents its filters' error bounds). The
+// algorithms below work on rounded output coordinates and need these:
+#pragma once
+
+namespace covmap::voronoi::tolerance {
+
+// Face tracing: two unbounded arcs whose directions differ by less than this angle (radians) are
+// taken as parallel (same point at infinity) and ordered by their offset. Directions of bisectors
+// of collinear sites are parallel in exact arithmetic but are computed from rounded differences,
+// which perturbs their angle by a few ulps (~1e-16); real distinct directions differ by far more.
+inline constexpr double kParallelAngle = 1e-12;
+
+// Clipping: a crossing of an arc with the clip boundary closer than this fraction of the clip
+// polygon's diameter to a polygon vertex is snapped onto that vertex, so an arc through a corner
+// is not split into a piece of zero length.
+inline constexpr double kClipSnap = 1e-12;
+
+// Engine: root nodes of different triangulation facets closer than this fraction of the sites'
+// extent are *candidates* for being one node (facets whose lifted sites are coplanar and
+// co-circular share one power line, hence its crossings). Whether they are merged is decided by
+// exact predicates, never by this distance; it only needs to exceed the nodes' rounding error.
+inline constexpr double kNodeMergeCandidate = 1e-9;
+
+}  // namespace covmap::voronoi::tolerance
