@@ -7,8 +7,10 @@
 #include "cli/cli_support.h"
 #include "io/atomic_file.h"
 #include "io/diagram_json.h"
+#include "io/polygon_io.h"
 #include "io/sites_io.h"
 #include "io/svg.h"
+#include "voronoi/clip.h"
 #include "voronoi/engine.h"
 
 namespace covmap::cli {
@@ -22,6 +24,9 @@ void setup_diagram(CLI::App& app, DiagramOptions& options) {
   cmd->add_option("-o,--output", options.output_path, "write the diagram (covmap.arcgraph/1)")
       ->required();
   cmd->add_option("--svg", options.svg_path, "also draw the diagram as SVG");
+  cmd->add_option("--clip", options.clip,
+                  "clip to a rectangle 'xmin,ymin,xmax,ymax' or a polygon file (covmap.polygon/1 "
+                  "or GeoJSON Polygon)");
   cmd->add_flag("-q,--quiet", options.quiet, "print nothing on success");
   cmd->callback([&options]() { std::exit(run_diagram(options)); });
 }
@@ -42,6 +47,7 @@ int run_diagram(const DiagramOptions& options) {
         msg << "\n  " << table.origin.at(p.index) << " (site '" << p.id << "'): " << p.problem;
       throw std::invalid_argument(msg.str());
     }
+    if (!options.clip.empty()) diagram = voronoi::clip_diagram(diagram, io::parse_clip(options.clip));
     // Render everything before writing anything, so a failure leaves no partial output.
     std::ostringstream json, svg;
     io::write_diagram_json(diagram, json);

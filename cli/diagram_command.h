@@ -1,4 +1,5 @@
-// covmap diagram SITES -o DIAGRAM.json [--svg DIAGRAM.svg]: the MWVD of a site file.
+// covmap diagram SITES -o DIAGRAM.json [--svg DIAGRAM.svg] [--clip RECT|POLYGON]: the MWVD of a
+// site file, optionally clipped to a rectangle or simple polygon.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -11,6 +12,7 @@ struct DiagramOptions {
   std::string sites_path;
   std::string output_path;
   std::string svg_path;  // empty: no picture
+  std::string clip;      // empty: unclipped; "xmin,ymin,xmax,ymax" or a polygon file
   bool quiet = false;
 };
 

@@ -1,0 +1,184 @@
+#include "voronoi/clip.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "voronoi/arc_path.h"
+#include "voronoi/faces.h"
+#include "voronoi/tolerances.h"
+
+namespace covmap::voronoi {
+namespace {
+
+bool inside_polygon(const std::vector<Point>& poly, Point p) {
+  bool inside = false;
+  for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
+    if ((poly[i].y > p.y) != (poly[j].y > p.y) &&
+        p.x < (poly[j].x - poly[i].x) * (p.y - poly[i].y) / (poly[j].y - poly[i].y) + poly[i].x)
+      inside = !inside;
+  }
+  return inside;
+}
+
+// A point where an arc meets the boundary: its position along the boundary (edge + t), and the
+// sites on either side of the boundary just after it (counter-clockwise).
+struct BoundaryMark {
+  int edge = 0;
+  double t = 0.0;
+  int node = kNone;
+  int owner_after = kNone;
+};
+
+}  // namespace
+
+Diagram clip_diagram(const Diagram& d, const std::vector<Point>& polygon) {
+  if (polygon.size() < 3) throw std::invalid_argument("clip polygon needs at least 3 vertices");
+  Diagram out;
+  out.sites = d.sites;
+  out.clip = polygon;
+  const std::size_t m = polygon.size();
+  double diam = 0;
+  for (const Point& p : polygon)
+    for (const Point& q : polygon) diam = std::max(diam, std::hypot(p.x - q.x, p.y - q.y));
+  const double snap = tolerance::kClipSnap * diam;
+
+  // Nodes inside keep a new index.
+  std::vector<int> node_map(d.nodes.size(), kNone);
+  for (std::size_t k = 0; k < d.nodes.size(); ++k)
+    if (inside_polygon(polygon, {d.nodes[k].x, d.nodes[k].y})) {
+      node_map[k] = static_cast<int>(out.nodes.size());
+      out.nodes.push_back(d.nodes[k]);
+    }
+  std::vector<BoundaryMark> marks;
+  // A boundary point as a node, shared by every arc meeting the boundary there.
+  auto boundary_node = [&](int edge, double t) {
+    const Point a = polygon[edge], b = polygon[(edge + 1) % m];
+    Point p{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
+    const double len = std::hypot(b.x - a.x, b.y - a.y);
+    if (t * len < snap) p = a, t = 0;
+    if ((1 - t) * len < snap) p = b, t = 1;
+    for (const BoundaryMark& mk : marks) {
+      const Node& q = out.nodes[mk.node];
+      if (std::hypot(q.x - p.x, q.y - p.y) <= snap) return mk.node;
+    }
+    out.nodes.push_back({p.x, p.y});
+    return static_cast<int>(out.nodes.size()) - 1;
+  };
+
+  for (const Arc& arc : d.arcs) {
+    if (arc.frame) continue;
+    const ArcPathView path = arc_path(arc, d.nodes);
+    struct Cut {
+      double s;
+      int edge;
+      double t;
+    };
+    std::vector<Cut> cuts;
+    for (std::size_t e = 0; e < m; ++e) {
+      const Point a = polygon[e], b = polygon[(e + 1) % m];
+      for (double s : path_segment_crossings(path, a, b)) {
+        const Point p = path.at(s);
+        const double dx = b.x - a.x, dy = b.y - a.y;
+        const double t = ((p.x - a.x) * dx + (p.y - a.y) * dy) / (dx * dx + dy * dy);
+        cuts.push_back({s, static_cast<int>(e), std::clamp(t, 0.0, 1.0)});
+      }
+    }
+    std::sort(cuts.begin(), cuts.end(), [](const Cut& x, const Cut& y) { return x.s < y.s; });
+    const bool full_circle = path.circle && arc.from == arc.to;
+    if (cuts.empty()) {
+      // Wholly inside or wholly outside.
+      const double mid = std::isfinite(path.s0) && std::isfinite(path.s1) ? 0.5 * (path.s0 + path.s1)
+                         : std::isfinite(path.s0) ? path.s0 + 1 : std::isfinite(path.s1) ? path.s1 - 1 : 0;
+      if (!inside_polygon(polygon, path.at(mid))) continue;
+      Arc a = arc;
+      a.from = arc.from == kNone ? kNone : node_map[arc.from];
+      a.to = arc.to == kNone ? kNone : node_map[arc.to];
+      out.arcs.push_back(a);
+      continue;
+    }
+    // Pieces between consecutive cut parameters (and the arc's ends); a closed circle wraps.
+    std::vector<double> params;
+    std::vector<int> ends;  // node at each param
+    auto cut_node = [&](const Cut& c) {
+      const int node = boundary_node(c.edge, c.t);
+      // Which site is just after this point along the boundary (counter-clockwise)?
+      const Point tangent = path.tangent(c.s);
+      const Point a = polygon[c.edge], b = polygon[(c.edge + 1) % m];
+      const double cross = tangent.x * (b.y - a.y) - tangent.y * (b.x - a.x);
+      marks.push_back({c.edge, c.t, node, cross > 0 ? arc.left_site : arc.right_site});
+      return node;
+    };
+    if (full_circle) {
+      for (const Cut& c : cuts) params.push_back(c.s), ends.push_back(cut_node(c));
+      params.push_back(cuts.front().s + (path.s1 - path.s0));
+      ends.push_back(ends.front());
+    } else {
+      params.push_back(path.s0);
+      ends.push_back(arc.from == kNone ? kNone : node_map[arc.from]);
+      for (const Cut& c : cuts) params.push_back(c.s), ends.push_back(cut_node(c));
+      params.push_back(path.s1);
+      ends.push_back(arc.to == kNone ? kNone : node_map[arc.to]);
+    }
+    for (std::size_t k = 0; k + 1 < params.size(); ++k) {
+      const double s0 = params[k], s1 = params[k + 1];
+      const double mid = std::isfinite(s0) && std::isfinite(s1) ? 0.5 * (s0 + s1)
+                         : std::isfinite(s0)                    ? s0 + 1
+                                                                : s1 - 1;
+      if (s1 - s0 <= 0 || !inside_polygon(polygon, path.at(mid))) continue;
+      if (ends[k] == kNone || ends[k + 1] == kNone) continue;  // cannot happen inside a polygon
+      Arc a = arc;
+      a.from = ends[k];
+      a.to = ends[k + 1];
+      out.arcs.push_back(a);
+    }
+  }
+
+  // Frame arcs: the boundary split at the marks and at its own vertices.
+  std::sort(marks.begin(), marks.end(), [](const BoundaryMark& a, const BoundaryMark& b) {
+    return a.edge != b.edge ? a.edge < b.edge : a.t < b.t;
+  });
+  int owner = kNone;
+  if (!marks.empty()) {
+    owner = marks.back().owner_after;  // the stretch before the first mark continues the last
+  } else {
+    // No arc reaches the boundary: one site owns all of it.
+    double best = 1e300;
+    for (std::size_t s = 0; s < d.sites.size(); ++s) {
+      const double v =
+          std::hypot(polygon[0].x - d.sites[s].x, polygon[0].y - d.sites[s].y) / d.sites[s].weight;
+      if (v < best) best = v, owner = static_cast<int>(s);
+    }
+  }
+  std::vector<int> vertex_node(m, kNone);
+  auto corner = [&](std::size_t v) {
+    if (vertex_node[v] == kNone) vertex_node[v] = boundary_node(static_cast<int>(v), 0.0);
+    return vertex_node[v];
+  };
+  std::size_t mi = 0;
+  int current = corner(0);
+  for (std::size_t e = 0; e < m; ++e) {
+    const Point a = polygon[e], b = polygon[(e + 1) % m];
+    auto emit = [&](int to) {
+      if (to == current) return;
+      Arc f;
+      f.frame = true;
+      f.curve = Line{a.x, a.y, b.x - a.x, b.y - a.y};
+      f.from = current;
+      f.to = to;
+      f.left_site = owner;
+      f.right_site = kNone;
+      out.arcs.push_back(f);
+      current = to;
+    };
+    for (; mi < marks.size() && marks[mi].edge == static_cast<int>(e); ++mi) {
+      emit(marks[mi].node);
+      owner = marks[mi].owner_after;
+    }
+    emit(corner((e + 1) % m));
+  }
+  trace_faces(out);
+  return out;
+}
+
+}  // namespace covmap::voronoi

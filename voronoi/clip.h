@@ -1,0 +1,21 @@
+// covmap::voronoi::clip_diagram — a diagram restricted to a simple polygon (coverage maps cover a
+// bounded area).
+//
+// Contract: `polygon` is simple and counter-clockwise (io::parse_clip guarantees both). Returns the
+// part of `d` inside it: arcs cut where they cross the boundary (new nodes there), the boundary
+// itself as frame arcs (Arc::frame, the inside site on the left, kNone outside), faces re-traced,
+// and Diagram::clip set. Sites are kept (indices stay valid); a site whose region misses the
+// polygon simply has no face. Crossings are computed in floating point: clipping is a
+// construction, not a combinatorial decision of the diagram; crossings within
+// tolerance::kClipSnap of a polygon vertex are snapped onto it.
+#pragma once
+
+#include <vector>
+
+#include "voronoi/diagram.h"
+
+namespace covmap::voronoi {
+
+Diagram clip_diagram(const Diagram& d, const std::vector<Point>& polygon);
+
+}  // namespace covmap::voronoi
