@@ -32,8 +32,7 @@ HalfInfo info(const Diagram& d, int id) {
 }
 
 // Direction of travel of a half-arc at its start (at = 0) or end (at = 1).
-Point travel_direction(const Diagram& d, int id, int at) {
-  const ArcPathView p = arc_path(d.arcs[id / 2], d.nodes);
+Point travel_direction(const ArcPathView& p, int id, int at) {
   const bool fwd = id % 2 == 0;
   const bool at_path_start = (at == 0) == fwd;
   Point t = p.tangent(at_path_start ? p.s0 : p.s1);
@@ -43,8 +42,7 @@ Point travel_direction(const Diagram& d, int id, int at) {
 }
 
 // Turning of the path along a half-arc (signed, radians).
-double arc_turning(const Diagram& d, int id) {
-  const ArcPathView p = arc_path(d.arcs[id / 2], d.nodes);
+double arc_turning(const ArcPathView& p, int id) {
   if (!p.circle) return 0.0;
   const double t = p.sense * (p.s1 - p.s0);
   return id % 2 == 0 ? t : -t;
@@ -138,6 +136,10 @@ bool cycle_contains(const Diagram& d, const std::vector<HalfArc>& cycle, Point p
 void trace_faces(Diagram& d) {
   d.faces.clear();
   const int halves = 2 * static_cast<int>(d.arcs.size());
+  std::vector<ArcPathView> paths;
+  paths.reserve(d.arcs.size());
+  for (const Arc& a : d.arcs) paths.push_back(arc_path(a, d.nodes));
+  auto path_of = [&](int h) -> const ArcPathView& { return paths[h / 2]; };
   // Outgoing half-arcs per node, and half-arcs arriving from infinity per site.
   std::vector<std::vector<int>> out(d.nodes.size());
   std::map<int, std::vector<int>> from_infinity;
@@ -179,12 +181,12 @@ void trace_faces(Diagram& d) {
     if (count <= 1) return best;
     // The site's region touches this node more than once: take the first outgoing arc clockwise
     // from the reversed incoming direction (the face is on the left).
-    const Point in = travel_direction(d, h, 1);
+    const Point in = travel_direction(path_of(h), h, 1);
     const Point back{-in.x, -in.y};
     double best_angle = 1e9;
     for (int c : out[hi.end]) {
       if (info(d, c).site != hi.site) continue;
-      const Point t = travel_direction(d, c, 0);
+      const Point t = travel_direction(path_of(c), c, 0);
       double cw = -angle_between(back, t);
       if (cw <= 0) cw += kTwoPi;
       if (cw < best_angle) best_angle = cw, best = c;
@@ -208,13 +210,14 @@ void trace_faces(Diagram& d) {
     for (int guard = 0; guard <= halves; ++guard) {
       seen[h] = 1;
       cyc.arcs.push_back(half_of(h));
-      cyc.turning += arc_turning(d, h);
+      cyc.turning += arc_turning(path_of(h), h);
       const int nx = next_of(h);
       if (nx < 0) break;
       if (info(d, h).end == kNone && std::holds_alternative<Line>(d.arcs[h / 2].curve)) {
         cyc.through_infinity = true;
       } else {
-        cyc.turning += angle_between(travel_direction(d, h, 1), travel_direction(d, nx, 0));
+        cyc.turning +=
+            angle_between(travel_direction(path_of(h), h, 1), travel_direction(path_of(nx), nx, 0));
       }
       if (nx == h0) {
         closed = true;
@@ -288,6 +291,11 @@ void trace_faces(Diagram& d) {
   // only (the unbounded component of a site without lines) have no outer cycle.
   for (auto& [site, list] : faces_of_site) {
     const Point s{d.sites[site].x, d.sites[site].y};
+    // Unclipped, a site lies in its own region: a single face is its own.
+    if (list.size() == 1 && d.clip.empty()) {
+      d.faces[list.front()].orphan = false;
+      continue;
+    }
     for (int f : list) {
       Face& face = d.faces[f];
       const bool outer = f < static_cast<int>(has_outer.size()) && has_outer[f];

@@ -41,8 +41,17 @@ class SpatialExtractor {
     compute_cells();
     compute_facets();
     merge_shared_line_nodes();
-    for (auto e = rt_.finite_edges_begin(); e != rt_.finite_edges_end(); ++e)
-      walk_edge(e->first, e->second, e->third);
+    // Each triangulation edge once. CGAL's finite_edges iterator finds an edge's canonical cell by
+    // circulating around it; the walk circulates anyway, so it marks the edge in every cell it
+    // passes instead (6 bits per cell).
+    edge_done_.assign(cells_.size(), 0);
+    out_.arcs.reserve(3 * sites_.size());
+    for (Cell c : cells_) {
+      if (rt_.is_infinite(c)) continue;
+      for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j)
+          if (!(edge_done_[c->info()] & (1u << local_edge(i, j)))) walk_edge(c, i, j);
+    }
   }
 
  private:
@@ -60,6 +69,12 @@ class SpatialExtractor {
   std::vector<std::array<int, 3>> node_facet_;  // per root node: the sites of its facet
   // Scratch buffers reused by every walk (the walks dominate allocation otherwise).
   std::vector<Cell> ring_;
+  std::vector<std::uint8_t> edge_done_;  // per cell, bit local_edge(i, j): edge already walked
+
+  static int local_edge(int i, int j) {
+    if (i > j) std::swap(i, j);
+    return i == 0 ? j - 1 : i == 1 ? j + 1 : 5;  // (0,1..3) → 0..2, (1,2..3) → 3..4, (2,3) → 5
+  }
   std::vector<Token> tokens_;
   WalkScratch scratch_;
 
@@ -100,6 +115,7 @@ class SpatialExtractor {
     uf_.resize(cells_.size());
     std::iota(uf_.begin(), uf_.end(), 0);
     vertex_node_.assign(cells_.size(), kNone);
+    out_.nodes.reserve(2 * sites_.size());
     for (std::size_t k = 0; k < cells_.size(); ++k) {
       CellData& d = data_[k];
       d.infinite = rt_.is_infinite(cells_[k]);
@@ -280,6 +296,8 @@ class SpatialExtractor {
     auto circ = rt_.incident_cells(c0, i0, j0), done = circ;
     do {
       ring.push_back(circ);
+      Cell c = circ;
+      edge_done_[c->info()] |= static_cast<std::uint8_t>(1u << local_edge(c->index(vi), c->index(vj)));
     } while (++circ != done);
     const std::size_t m = ring.size();
     bool ccw = true;

@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# End-to-end tests of the covmap program: exit codes, messages naming the offending input, and
+# nothing written on failure. Usage: cli_test.sh path/to/covmap path/to/datasets
+set -u
+covmap="$1"
+data="$2"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+passed=0
+failed=0
+ok() { passed=$((passed + 1)); }
+fail() { failed=$((failed + 1)); echo "FAIL: $*"; }
+
+# 1. The bundled dataset: diagram, then the independent check passes.
+if "$covmap" diagram "$data/swiss_towns.csv" -o "$work/d.json" --svg "$work/d.svg" -q &&
+   "$covmap" check "$work/d.json" >/dev/null; then ok; else fail "diagram + check on swiss_towns"; fi
+grep -q '"format":"covmap.arcgraph/1"' "$work/d.json" && ok || fail "arcgraph format tag"
+grep -q '<svg' "$work/d.svg" && ok || fail "svg written"
+
+# 2. Bad sites: duplicate position and a negative weight, both named with their lines; exit 2;
+#    no output file.
+cat > "$work/bad.csv" <<'CSV'
+id,x,y,weight
+a,0,0,1
+b,1,0,-2
+c,0,0,1
+CSV
+"$covmap" diagram "$work/bad.csv" -o "$work/bad.json" 2>"$work/err.txt"
+code=$?
+[ "$code" -eq 2 ] && ok || fail "bad sites exit code $code"
+grep -q "bad.csv:3" "$work/err.txt" && grep -q "'b'" "$work/err.txt" && ok || fail "negative weight not named: $(cat "$work/err.txt")"
+grep -q "'c'" "$work/err.txt" && ok || fail "duplicate not named: $(cat "$work/err.txt")"
+[ ! -e "$work/bad.json" ] && ok || fail "output written despite error"
+
+# 3. A corrupted diagram: move one node far away; check must fail with exit 1 and name a place.
+python3 - "$work/d.json" "$work/broken.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+d["nodes"][0]["x"] += 1.0
+json.dump(d, open(sys.argv[2], "w"))
+PY
+"$covmap" check "$work/broken.json" >"$work/out.txt"
+code=$?
+[ "$code" -eq 1 ] && ok || fail "corrupted diagram exit code $code"
+grep -q "NodeNotEquidistant\|ArcEndNotOnCurve" "$work/out.txt" && ok || fail "violation not listed"
+
+# 4. Clipping to a rectangle: frame arcs present and the check passes.
+"$covmap" diagram "$data/swiss_towns.csv" -o "$work/c.json" --clip=-50,-40,60,50 -q &&
+  "$covmap" check "$work/c.json" >/dev/null && grep -q '"frame":true' "$work/c.json" && ok ||
+  fail "clipped diagram"
+
+# 5. Unknown file: exit code 2 from the command line parser or reader.
+"$covmap" diagram "$work/missing.csv" -o "$work/m.json" 2>/dev/null
+code=$?
+[ "$code" -ne 0 ] && [ ! -e "$work/m.json" ] && ok || fail "missing input accepted"
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
