@@ -233,11 +233,16 @@ class SpatialExtractor {
         for (long long dy = -1; dy <= 1; ++dy) {
           auto it = grid.find(hash(kx + dx, ky + dy));
           if (it == grid.end()) continue;
-          for (int j : it->second)
+          for (int j : it->second) {
+            // Hash buckets may collide: only true neighbours are candidates.
+            const Node& q = out_.nodes[j];
+            if (std::fabs(q.x - p.x) > 2 * cell || std::fabs(q.y - p.y) > 2 * cell) continue;
+            if (node_facet_[j] == node_facet_[i]) continue;  // two crossings of one line
             if (find(j) != find(static_cast<int>(i)) && same_power_line(node_facet_[j], node_facet_[i])) {
               parent[find(static_cast<int>(i))] = find(j);
               merged = true;
             }
+          }
         }
       grid[hash(kx, ky)].push_back(static_cast<int>(i));
     }
