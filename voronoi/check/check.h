@@ -70,12 +70,11 @@ struct CheckOptions {
   // what careful double-precision constructions reach on realistic data (see
   // /work/shared/NUMERICS.md).
   double relative_tolerance = 1e-7;
-  // Not a choice but a floating-point fact: a point with coordinates of magnitude M is only known
-  // to about M * DBL_EPSILON. Each test at a point p allows eps + rounding_ulps * DBL_EPSILON * M
-  // with M = max(|p.x|, |p.y|). Irrelevant near the sites; it keeps nodes 1e8 scales away (weights
-  // equal to 7 digits) from failing for the rounding of their own coordinates. Deliberately NOT
-  // widened for a curve's own size: a circle whose centre is 1e13 away is only known to ~1e-3 near
-  // the sites, and that is reported (a Line represents such a bisector to within eps).
+  // Not a choice but a floating-point fact: a number of magnitude M is only known to about
+  // M * DBL_EPSILON. Each test at a point p allows eps + rounding_ulps * DBL_EPSILON * M with
+  // M = max(|p.x|, |p.y|) and, for tests against an arc's own curve, the magnitude of the numbers
+  // stating that curve (|centre|, radius): a circle centred 5e9 away (weights equal to 11 digits)
+  // cannot be written more precisely than ~1e-6 in any double-based format.
   double rounding_ulps = 64.0;
   // Probe bisection stops when the bracketing interval is shorter than this times scale. Must be
   // well below relative_tolerance so the located boundary point is exact for the test's purposes.

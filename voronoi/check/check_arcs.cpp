@@ -90,7 +90,7 @@ void check_bisector_arc(CheckContext& c, int a, const ArcPath& path) {
     if (!c.in_clip(p)) continue;
     ++c.report.arc_samples_checked;
     const double off = bisector_offset(p, left, right);
-    const double tol = c.tol(CheckContext::magnitude(p));
+    const double tol = c.tol(std::max(CheckContext::magnitude(p), representation_magnitude(path)));
     if (std::abs(off) > tol) {
       if (!off_reported)
         c.add(ViolationKind::ArcNotOnBisector, p,

@@ -48,6 +48,14 @@ struct CheckContext {
   void add(ViolationKind kind, Point where, std::string message, Violation ids = {});
 };
 
+// The magnitude of the numbers that state an arc's curve: a circle centred 5e9 away is only known
+// to ~1e-6 however it was computed, so points on it are tested with that rounding allowed for
+// (CheckOptions::rounding_ulps), never with a looser relative tolerance.
+inline double representation_magnitude(const ArcPath& path) {
+  if (!path.circle) return std::max(std::abs(path.origin.x), std::abs(path.origin.y));
+  return std::max({std::abs(path.centre.x), std::abs(path.centre.y), path.radius});
+}
+
 // printf-style formatting for messages.
 std::string strf(const char* format, ...) __attribute__((format(printf, 1, 2)));
 

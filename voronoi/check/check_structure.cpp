@@ -112,7 +112,8 @@ void check_arcs_structure(CheckContext& c) {
       const Point p{d.nodes[n].x, d.nodes[n].y};
       const double off = distance_to_curve(path, p);
       path.end_gap = std::max(path.end_gap, off);
-      const double tol = c.tol(CheckContext::magnitude(p));
+      const double tol =
+          c.tol(std::max(CheckContext::magnitude(p), representation_magnitude(path)));
       if (off > tol) {
         ids.node = n;
         c.add(ViolationKind::ArcEndNotOnCurve, p,

@@ -1,4 +1,6 @@
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 
 #include "voronoi/engine.h"
 #include "voronoi/faces.h"
@@ -16,6 +18,24 @@ void extract_linear(const std::vector<Site>& sites, RegularTriangulation& rt, Di
     const int si = site_of(e->first->vertex(e->second));
     const int sj = site_of(e->first->vertex(e->third));
     out.arcs.push_back(make_arc(si, sj, kNone, kNone, sites));
+  }
+}
+
+// Nearly equal weights give Apollonius circles of enormous radius whose centre and radius cannot
+// be written in doubles to better than ~4 ulps of their size, while near its nodes the arc is
+// almost straight. A bounded arc whose sagitta chord²/(8r) is below that representation error is
+// written as the straight Line through its nodes instead: strictly closer to the true bisector.
+void straighten_flat_arcs(Diagram& d) {
+  for (Arc& a : d.arcs) {
+    const Circle* c = std::get_if<Circle>(&a.curve);
+    if (!c || a.from == kNone || a.to == kNone || a.from == a.to) continue;
+    const Node& p = d.nodes[a.from];
+    const Node& q = d.nodes[a.to];
+    const double chord = std::hypot(q.x - p.x, q.y - p.y);
+    const double representation =
+        4 * 0x1p-52 * std::max({std::fabs(c->cx), std::fabs(c->cy), c->r});
+    if (chord > 0 && chord * chord / (8 * c->r) < representation)
+      a.curve = Line{p.x, p.y, q.x - p.x, q.y - p.y};
   }
 }
 
@@ -67,6 +87,7 @@ Diagram build_diagram(std::span<const Site> input, BuildStats* stats_out) {
   else
     extract_linear(out.sites, rt, out);
   drop_unused_nodes(out);
+  straighten_flat_arcs(out);
   stats.extraction_seconds = seconds_since(start);
   start = Clock::now();
   trace_faces(out);

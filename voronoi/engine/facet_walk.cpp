@@ -58,7 +58,7 @@ Node polish(long double px, long double py, const std::array<int, 3>& s,
     }
   };
   long double qx = px - o.x, qy = py - o.y;
-  for (int it = 0; it < 8; ++it) {
+  for (int it = 0; it < 12; ++it) {
     long double f[2], jx[2], jy[2];
     residual(qx, qy, f, jx, jy);
     const long double det = jx[0] * jy[1] - jx[1] * jy[0];
@@ -66,14 +66,22 @@ Node polish(long double px, long double py, const std::array<int, 3>& s,
     const long double sx = (f[0] * jy[1] - f[1] * jy[0]) / det;
     const long double sy = (jx[0] * f[1] - jx[1] * f[0]) / det;
     if (!std::isfinite(static_cast<double>(sx)) || !std::isfinite(static_cast<double>(sy))) break;
-    // Accept a step only if it does not make the residual worse (Newton can jump to the other
-    // intersection point when the circles are nearly tangent).
-    long double f2[2], j2x[2], j2y[2];
-    residual(qx - sx, qy - sy, f2, j2x, j2y);
-    if (std::fabs(f2[0]) + std::fabs(f2[1]) > std::fabs(f[0]) + std::fabs(f[1])) break;
-    qx -= sx;
-    qy -= sy;
-    if (sx == 0 && sy == 0) break;
+    // Backtracking: halve the step until the residual does not grow (a full Newton step can jump
+    // towards the other intersection point when the circles are nearly tangent).
+    const long double before = std::fabs(f[0]) + std::fabs(f[1]);
+    long double scale = 1.0L;
+    bool moved = false;
+    for (int half = 0; half < 30; ++half, scale *= 0.5L) {
+      long double f2[2], j2x[2], j2y[2];
+      residual(qx - scale * sx, qy - scale * sy, f2, j2x, j2y);
+      if (std::fabs(f2[0]) + std::fabs(f2[1]) <= before) {
+        qx -= scale * sx;
+        qy -= scale * sy;
+        moved = scale * (std::fabs(sx) + std::fabs(sy)) > 0;
+        break;
+      }
+    }
+    if (!moved) break;
   }
   return Node{static_cast<double>(qx + o.x), static_cast<double>(qy + o.y)};
 }
