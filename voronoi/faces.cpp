@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <span>
+#include <unordered_map>
 
 #include "voronoi/arc_path.h"
 #include "voronoi/tolerances.h"
@@ -41,11 +43,13 @@ Point travel_direction(const ArcPathView& p, int id, int at) {
   return t;
 }
 
-// Turning of the path along a half-arc (signed, radians).
-double arc_turning(const ArcPathView& p, int id) {
+// Twice the signed area between a half-arc and its chord (positive when the half-arc bulges to the
+// right of its direction, i.e. when it runs counter-clockwise around its circle).
+double segment_area2(const ArcPathView& p, int id) {
   if (!p.circle) return 0.0;
-  const double t = p.sense * (p.s1 - p.s0);
-  return id % 2 == 0 ? t : -t;
+  const double sweep = p.s1 - p.s0;
+  const double travel_sense = id % 2 == 0 ? p.sense : -p.sense;
+  return travel_sense * p.r * p.r * (sweep - std::sin(sweep));
 }
 
 double angle_between(Point a, Point b) {  // signed angle from a to b in (-π, π]
@@ -141,7 +145,8 @@ void trace_faces(Diagram& d) {
   for (const Arc& a : d.arcs) paths.push_back(arc_path(a, d.nodes));
   auto path_of = [&](int h) -> const ArcPathView& { return paths[h / 2]; };
   // Outgoing half-arcs per node, and half-arcs arriving from infinity per site.
-  std::vector<std::vector<int>> out(d.nodes.size());
+  // Outgoing half-arcs per node in compressed rows (out_begin[v] .. out_begin[v+1]).
+  std::vector<int> out_begin(d.nodes.size() + 1, 0), out_list;
   std::map<int, std::vector<int>> from_infinity;
   for (int h = 0; h < halves; ++h) {
     const HalfInfo hi = info(d, h);
@@ -150,9 +155,21 @@ void trace_faces(Diagram& d) {
       if (hi.end != kNone || std::holds_alternative<Line>(d.arcs[h / 2].curve))
         from_infinity[hi.site].push_back(h);
     } else {
-      out[hi.start].push_back(h);
+      ++out_begin[hi.start + 1];
     }
   }
+  for (std::size_t v = 0; v < d.nodes.size(); ++v) out_begin[v + 1] += out_begin[v];
+  out_list.resize(out_begin.back());
+  {
+    std::vector<int> fill(out_begin.begin(), out_begin.end() - 1);
+    for (int h = 0; h < halves; ++h) {
+      const HalfInfo hi = info(d, h);
+      if (hi.site != kNone && hi.start != kNone) out_list[fill[hi.start]++] = h;
+    }
+  }
+  auto outgoing = [&](int v) {
+    return std::span<const int>(out_list.data() + out_begin[v], out_begin[v + 1] - out_begin[v]);
+  };
   for (auto& [site, list] : from_infinity)
     std::sort(list.begin(), list.end(), [&](int a, int b) {
       return key_less(infinity_key(d, a, false), infinity_key(d, b, false));
@@ -173,7 +190,7 @@ void trace_faces(Diagram& d) {
     }
     int best = -1;
     int count = 0;
-    for (int c : out[hi.end])
+    for (int c : outgoing(hi.end))
       if (info(d, c).site == hi.site) {
         ++count;
         best = c;
@@ -184,7 +201,7 @@ void trace_faces(Diagram& d) {
     const Point in = travel_direction(path_of(h), h, 1);
     const Point back{-in.x, -in.y};
     double best_angle = 1e9;
-    for (int c : out[hi.end]) {
+    for (int c : outgoing(hi.end)) {
       if (info(d, c).site != hi.site) continue;
       const Point t = travel_direction(path_of(c), c, 0);
       double cw = -angle_between(back, t);
@@ -199,7 +216,7 @@ void trace_faces(Diagram& d) {
     int site;
     std::vector<HalfArc> arcs;
     bool through_infinity = false;
-    double turning = 0.0;
+    double area2 = 0.0;  // twice the signed area (closed cycles)
   };
   std::vector<Cycle> cycles;
   for (int h0 = 0; h0 < halves; ++h0) {
@@ -207,18 +224,24 @@ void trace_faces(Diagram& d) {
     Cycle cyc{info(d, h0).site, {}, false, 0.0};
     int h = h0;
     bool closed = false;
+    // Orientation by signed area: chords (shoelace about the first node, against cancellation
+    // far from the origin) plus the circular segments between chords and arcs.
+    const int origin_node = info(d, h0).start;
+    const Point o = origin_node == kNone ? Point{0, 0} : Point{d.nodes[origin_node].x, d.nodes[origin_node].y};
     for (int guard = 0; guard <= halves; ++guard) {
       seen[h] = 1;
       cyc.arcs.push_back(half_of(h));
-      cyc.turning += arc_turning(path_of(h), h);
+      const HalfInfo hi = info(d, h);
+      cyc.area2 += segment_area2(path_of(h), h);
+      if (hi.start != kNone && hi.end != kNone) {
+        const Node& a = d.nodes[hi.start];
+        const Node& b = d.nodes[hi.end];
+        cyc.area2 += (a.x - o.x) * (b.y - o.y) - (b.x - o.x) * (a.y - o.y);
+      }
       const int nx = next_of(h);
       if (nx < 0) break;
-      if (info(d, h).end == kNone && std::holds_alternative<Line>(d.arcs[h / 2].curve)) {
+      if (hi.end == kNone && std::holds_alternative<Line>(d.arcs[h / 2].curve))
         cyc.through_infinity = true;
-      } else {
-        cyc.turning +=
-            angle_between(travel_direction(path_of(h), h, 1), travel_direction(path_of(nx), nx, 0));
-      }
       if (nx == h0) {
         closed = true;
         break;
@@ -230,10 +253,10 @@ void trace_faces(Diagram& d) {
   }
 
   // Outer cycles make faces; clockwise cycles are holes of the face of their site containing them.
-  std::map<int, std::vector<int>> faces_of_site;
+  std::unordered_map<int, std::vector<int>> faces_of_site;
   std::vector<const Cycle*> holes;
   for (const Cycle& c : cycles) {
-    if (c.through_infinity || c.turning > 0) {
+    if (c.through_infinity || c.area2 > 0) {
       Face f;
       f.site = c.site;
       f.bounded = !c.through_infinity;

@@ -2,6 +2,9 @@
 // family. The checker shares no code with the engine: it tests the MWVD definition directly.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <tuple>
+
 #include "site_families.h"
 #include "voronoi/check/check.h"
 #include "voronoi/engine.h"
@@ -115,6 +118,33 @@ TEST(EngineInput, InvalidSitesAreAllNamed) {
     EXPECT_EQ(indices, (std::vector<int>{1, 2, 3, 4, 5}));
     EXPECT_NE(std::string(e.what()).find("'dup'"), std::string::npos);
   }
+}
+
+}  // namespace
+}  // namespace covmap::voronoi
+
+namespace covmap::voronoi {
+namespace {
+
+// Large enough for the engine's parallel extraction (engine/parallel.h): a bug in how workers
+// share the edges would drop or duplicate arcs, breaking the faces and the checker.
+TEST(EngineLarge, ParallelExtractionIsComplete) {
+  const auto sites = testing::make_sites(testing::Family::UniformWeights, 30000, 99);
+  const Diagram d = build_diagram(sites);
+  std::vector<int> own(sites.size(), 0);
+  for (const Face& f : d.faces)
+    if (!f.orphan) ++own[f.site];
+  for (std::size_t s = 0; s < sites.size(); ++s) ASSERT_EQ(own[s], 1) << "site " << s;
+  // No arc twice: each (site pair, end nodes) is unique.
+  std::vector<std::tuple<int, int, int, int>> keys;
+  for (const Arc& a : d.arcs) keys.emplace_back(a.left_site, a.right_site, a.from, a.to);
+  std::sort(keys.begin(), keys.end());
+  EXPECT_EQ(std::adjacent_find(keys.begin(), keys.end()), keys.end());
+  CheckOptions options;
+  options.boundary_probes = 3000;
+  options.samples_per_arc = 3;
+  const CheckReport report = check_diagram(d, options);
+  EXPECT_TRUE(report.ok()) << report.brief();
 }
 
 }  // namespace

@@ -10,11 +10,11 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-#include <unordered_map>
 
 #include "voronoi/engine/edge_pattern.h"
 #include "voronoi/engine/extractors.h"
 #include "voronoi/engine/facet_walk.h"
+#include "voronoi/engine/parallel.h"
 #include "voronoi/tolerances.h"
 
 namespace covmap::voronoi::engine {
@@ -41,17 +41,7 @@ class SpatialExtractor {
     compute_cells();
     compute_facets();
     merge_shared_line_nodes();
-    // Each triangulation edge once. CGAL's finite_edges iterator finds an edge's canonical cell by
-    // circulating around it; the walk circulates anyway, so it marks the edge in every cell it
-    // passes instead (6 bits per cell).
-    edge_done_.assign(cells_.size(), 0);
-    out_.arcs.reserve(3 * sites_.size());
-    for (Cell c : cells_) {
-      if (rt_.is_infinite(c)) continue;
-      for (int i = 0; i < 4; ++i)
-        for (int j = i + 1; j < 4; ++j)
-          if (!(edge_done_[c->info()] & (1u << local_edge(i, j)))) walk_edge(c, i, j);
-    }
+    walk_all_edges();
   }
 
  private:
@@ -67,16 +57,12 @@ class SpatialExtractor {
   std::vector<int> uf_;             // union-find: cells sharing one power vertex on the paraboloid
   std::vector<int> vertex_node_;    // node id of a zero vertex, by union-find root
   std::vector<std::array<int, 3>> node_facet_;  // per root node: the sites of its facet
-  // Scratch buffers reused by every walk (the walks dominate allocation otherwise).
-  std::vector<Cell> ring_;
-  std::vector<std::uint8_t> edge_done_;  // per cell, bit local_edge(i, j): edge already walked
+  int workers_ = 1;
 
   static int local_edge(int i, int j) {
     if (i > j) std::swap(i, j);
     return i == 0 ? j - 1 : i == 1 ? j + 1 : 5;  // (0,1..3) → 0..2, (1,2..3) → 3..4, (2,3) → 5
   }
-  std::vector<Token> tokens_;
-  WalkScratch scratch_;
 
   int find(int c) {
     while (uf_[c] != c) c = uf_[c] = uf_[uf_[c]];
@@ -116,25 +102,30 @@ class SpatialExtractor {
     std::iota(uf_.begin(), uf_.end(), 0);
     vertex_node_.assign(cells_.size(), kNone);
     out_.nodes.reserve(2 * sites_.size());
-    for (std::size_t k = 0; k < cells_.size(); ++k) {
-      CellData& d = data_[k];
-      d.infinite = rt_.is_infinite(cells_[k]);
-      std::optional<bool> zero;
-      if (auto p = cell_point<Approx>(cells_[k])) {
-        d.v = *p;
-        d.valid = true;
-        zero = is_zero_point(*p, d.infinite);
+    workers_ = worker_count(cells_.size());
+    std::vector<std::size_t> fallbacks(workers_, 0);
+    parallel_chunks(cells_.size(), workers_, [&](std::size_t begin, std::size_t end, int w) {
+      for (std::size_t k = begin; k < end; ++k) {
+        CellData& d = data_[k];
+        d.infinite = rt_.is_infinite(cells_[k]);
+        std::optional<bool> zero;
+        if (auto p = cell_point<Approx>(cells_[k])) {
+          d.v = *p;
+          d.valid = true;
+          zero = is_zero_point(*p, d.infinite);
+        }
+        if (!zero) {
+          CGAL::Protect_FPU_rounding<true> guard;
+          if (auto p = cell_point<Interval>(cells_[k])) zero = is_zero_point(*p, d.infinite);
+        }
+        if (!zero) {
+          ++fallbacks[w];
+          zero = is_zero_point(*cell_point<Exact>(cells_[k]), d.infinite);
+        }
+        d.zero = *zero;
       }
-      if (!zero) {
-        CGAL::Protect_FPU_rounding<true> guard;
-        if (auto p = cell_point<Interval>(cells_[k])) zero = is_zero_point(*p, d.infinite);
-      }
-      if (!zero) {
-        ++stats_.exact_fallbacks;
-        zero = is_zero_point(*cell_point<Exact>(cells_[k]), d.infinite);
-      }
-      d.zero = *zero;
-    }
+    });
+    for (std::size_t f : fallbacks) stats_.exact_fallbacks += f;
   }
 
   template <class NT>
@@ -155,40 +146,78 @@ class SpatialExtractor {
   void compute_facets() {
     facet_.assign(4 * cells_.size(), EdgePattern{});
     facet_node_.assign(8 * cells_.size(), kNone);
+    // Pass 1, in parallel: the crossing pattern of every facet, from its lower-id cell (each facet
+    // entry pair is written by exactly one worker). Unions of cells sharing a vertex are rare and
+    // applied afterwards.
+    std::vector<std::vector<std::pair<int, int>>> unions(workers_);
+    std::vector<std::size_t> fallbacks(workers_, 0);
+    parallel_chunks(cells_.size(), workers_, [&](std::size_t begin, std::size_t end, int w) {
+      for (std::size_t k = begin; k < end; ++k) {
+        Cell c = cells_[k];
+        for (int f = 0; f < 4; ++f) {
+          Cell n = c->neighbor(f);
+          const int nk = n->info();
+          if (nk < static_cast<int>(k)) continue;
+          std::optional<EdgePattern> p = facet_pattern<Approx>(c, n);
+          if (!p) {
+            CGAL::Protect_FPU_rounding<true> guard;
+            p = facet_pattern<Interval>(c, n);
+          }
+          if (!p) {
+            ++fallbacks[w];
+            p = facet_pattern<Exact>(c, n);
+          }
+          const int mirror = n->index(c);
+          EdgePattern& fwd = facet_[4 * k + f];
+          EdgePattern& bwd = facet_[4 * nk + mirror];
+          fwd = *p;
+          bwd = *p;
+          std::reverse(bwd.sign, bwd.sign + p->roots + 1);
+          if (p->empty && data_[k].zero && data_[nk].zero)
+            unions[w].emplace_back(static_cast<int>(k), nk);
+        }
+      }
+    });
+    for (std::size_t f : fallbacks) stats_.exact_fallbacks += f;
+    for (const auto& list : unions)
+      for (auto [a, b] : list) uf_[find(a)] = find(b);
+    // Pass 2: number the crossing nodes in a fixed order, then place them in parallel.
+    struct Job {
+      int cell, facet, root, node;
+    };
+    std::vector<Job> jobs;
+    int next = static_cast<int>(out_.nodes.size());
     for (std::size_t k = 0; k < cells_.size(); ++k) {
       Cell c = cells_[k];
       for (int f = 0; f < 4; ++f) {
         Cell n = c->neighbor(f);
         const int nk = n->info();
-        if (nk < static_cast<int>(k)) continue;  // each facet once, from its lower-id cell
-        std::optional<EdgePattern> p = facet_pattern<Approx>(c, n);
-        if (!p) {
-          CGAL::Protect_FPU_rounding<true> guard;
-          p = facet_pattern<Interval>(c, n);
-        }
-        if (!p) {
-          ++stats_.exact_fallbacks;
-          p = facet_pattern<Exact>(c, n);
-        }
-        const int mirror = n->index(c);
-        EdgePattern& fwd = facet_[4 * k + f];
-        EdgePattern& bwd = facet_[4 * nk + mirror];
-        fwd = *p;
-        bwd = *p;
-        std::reverse(bwd.sign, bwd.sign + p->roots + 1);
-        if (p->empty) {
-          if (data_[k].zero && data_[nk].zero) uf_[find(static_cast<int>(k))] = find(nk);
-          continue;
-        }
+        if (nk < static_cast<int>(k)) continue;
+        const EdgePattern& p = facet_[4 * k + f];
+        if (p.empty || p.roots == 0) continue;
         // On an edge at infinity (between two directions) the only possible zero is U.
         const bool at_infinity = data_[k].infinite && data_[nk].infinite;
-        for (int r = 0; r < p->roots; ++r) {
-          const int node = at_infinity ? kInfinityNode : add_root_node(c, f, r, *p);
+        const int mirror = n->index(c);
+        for (int r = 0; r < p.roots; ++r) {
+          int node = kInfinityNode;
+          if (!at_infinity) {
+            node = next++;
+            jobs.push_back({static_cast<int>(k), f, r, node});
+          }
           facet_node_[2 * (4 * k + f) + r] = node;
-          facet_node_[2 * (4 * nk + mirror) + (p->roots - 1 - r)] = node;
+          facet_node_[2 * (4 * nk + mirror) + (p.roots - 1 - r)] = node;
         }
       }
     }
+    out_.nodes.resize(next);
+    node_facet_.resize(next);
+    parallel_chunks(jobs.size(), worker_count(jobs.size()),
+                    [&](std::size_t begin, std::size_t end, int) {
+                      for (std::size_t j = begin; j < end; ++j) place_root_node(jobs[j].cell, jobs[j].facet, jobs[j].root, jobs[j].node);
+                    });
+    // Zero vertices get their nodes now, so the walks only read.
+    for (std::size_t k = 0; k < cells_.size(); ++k)
+      if (data_[k].zero) vertex_zero_node(static_cast<int>(k));
   }
 
   // Facets whose lifted sites are coplanar and co-circular share one power line, so each of its
@@ -214,10 +243,16 @@ class SpatialExtractor {
       xmin = std::min(xmin, s.x), xmax = std::max(xmax, s.x);
       ymin = std::min(ymin, s.y), ymax = std::max(ymax, s.y);
     }
-    const double cell = tolerance::kNodeMergeCandidate * std::max(std::hypot(xmax - xmin, ymax - ymin), 1e-300);
-    auto key = [&](double v) { return static_cast<long long>(std::floor(v / cell)); };
-    std::unordered_map<long long, std::vector<int>> grid;
-    auto hash = [](long long a, long long b) { return a * 1000003LL ^ b; };
+    const double cell =
+        tolerance::kNodeMergeCandidate * std::max(std::hypot(xmax - xmin, ymax - ymin), 1e-300);
+    // Sweep over nodes sorted by x: candidates are within `cell` in both coordinates.
+    std::vector<int> order;
+    order.reserve(n);
+    for (std::size_t i = 0; i < n; ++i)
+      if (std::isfinite(out_.nodes[i].x) && std::isfinite(out_.nodes[i].y))
+        order.push_back(static_cast<int>(i));
+    std::sort(order.begin(), order.end(),
+              [&](int a, int b) { return out_.nodes[a].x < out_.nodes[b].x; });
     std::vector<int> parent(n);
     std::iota(parent.begin(), parent.end(), 0);
     auto find = [&](int x) {
@@ -225,26 +260,20 @@ class SpatialExtractor {
       return x;
     };
     bool merged = false;
-    for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t a = 0; a < order.size(); ++a) {
+      const int i = order[a];
       const Node& p = out_.nodes[i];
-      if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
-      const long long kx = key(p.x), ky = key(p.y);
-      for (long long dx = -1; dx <= 1; ++dx)
-        for (long long dy = -1; dy <= 1; ++dy) {
-          auto it = grid.find(hash(kx + dx, ky + dy));
-          if (it == grid.end()) continue;
-          for (int j : it->second) {
-            // Hash buckets may collide: only true neighbours are candidates.
-            const Node& q = out_.nodes[j];
-            if (std::fabs(q.x - p.x) > 2 * cell || std::fabs(q.y - p.y) > 2 * cell) continue;
-            if (node_facet_[j] == node_facet_[i]) continue;  // two crossings of one line
-            if (find(j) != find(static_cast<int>(i)) && same_power_line(node_facet_[j], node_facet_[i])) {
-              parent[find(static_cast<int>(i))] = find(j);
-              merged = true;
-            }
-          }
+      for (std::size_t b = a + 1; b < order.size(); ++b) {
+        const int j = order[b];
+        const Node& q = out_.nodes[j];
+        if (q.x - p.x > cell) break;
+        if (std::fabs(q.y - p.y) > cell) continue;
+        if (node_facet_[j] == node_facet_[i]) continue;  // two crossings of one line
+        if (find(j) != find(i) && same_power_line(node_facet_[j], node_facet_[i])) {
+          parent[find(i)] = find(j);
+          merged = true;
         }
-      grid[hash(kx, ky)].push_back(static_cast<int>(i));
+      }
     }
     if (!merged) return;
     for (int& node : facet_node_)
@@ -261,15 +290,16 @@ class SpatialExtractor {
             CGAL::to_double(v->W)};
   }
 
-  int add_root_node(Cell c, int f, int r, const EdgePattern& p) {
+  void place_root_node(int cell, int f, int r, int node) {
+    Cell c = cells_[cell];
+    const EdgePattern& p = facet_[4 * cell + f];
     std::array<int, 3> tri;
     for (int k = 0, m = 0; k < 4; ++k)
       if (k != f) tri[m++] = site_of(c->vertex(k));
     const bool double_root = p.roots == 1 && p.sign[0] == p.sign[1];
-    out_.nodes.push_back(
-        root_node(approx(c), approx(c->neighbor(f)), r, p.roots, double_root, tri, sites_));
-    node_facet_.push_back(tri);
-    return static_cast<int>(out_.nodes.size()) - 1;
+    out_.nodes[node] =
+        root_node(approx(c), approx(c->neighbor(f)), r, p.roots, double_root, tri, sites_);
+    node_facet_[node] = tri;
   }
 
   int vertex_zero_node(int cell) {
@@ -294,16 +324,51 @@ class SpatialExtractor {
     return inversions % 2 == 0;
   }
 
-  void walk_edge(Cell c0, int i0, int j0) {
+  // Each triangulation edge is walked once. Workers take contiguous ranges of cells; a worker meeting
+  // an edge not yet marked in its own marks circulates it, marks it in every cell of the ring, and
+  // walks it only if the ring's lowest-id finite cell is in its range — so exactly one worker walks each
+  // edge, without shared state (CGAL's finite_edges iterator would circulate every edge too).
+  struct WalkState {
+    std::vector<std::uint8_t> done;  // per cell, bit local_edge(i, j)
+    std::vector<Cell> ring;
+    std::vector<Token> tokens;
+    WalkScratch scratch;
+    std::vector<Arc> arcs;
+  };
+
+  void walk_all_edges() {
+    std::vector<WalkState> states(workers_);
+    parallel_chunks(cells_.size(), workers_, [&](std::size_t begin, std::size_t end, int w) {
+      WalkState& st = states[w];
+      st.done.assign(cells_.size(), 0);
+      st.arcs.reserve(3 * sites_.size() / workers_ + 16);
+      for (std::size_t k = begin; k < end; ++k) {
+        Cell c = cells_[k];
+        if (data_[k].infinite) continue;
+        for (int i = 0; i < 4; ++i)
+          for (int j = i + 1; j < 4; ++j)
+            if (!(st.done[k] & (1u << local_edge(i, j)))) walk_edge(st, c, i, j, begin, end);
+      }
+    });
+    std::size_t total = out_.arcs.size();
+    for (const WalkState& st : states) total += st.arcs.size();
+    out_.arcs.reserve(total);
+    for (WalkState& st : states) out_.arcs.insert(out_.arcs.end(), st.arcs.begin(), st.arcs.end());
+  }
+
+  void walk_edge(WalkState& st, Cell c0, int i0, int j0, std::size_t begin, std::size_t end) {
     Vertex vi = c0->vertex(i0), vj = c0->vertex(j0);
-    std::vector<Cell>& ring = ring_;
+    std::vector<Cell>& ring = st.ring;
     ring.clear();
     auto circ = rt_.incident_cells(c0, i0, j0), done = circ;
+    int lowest = c0->info();
     do {
       ring.push_back(circ);
       Cell c = circ;
-      edge_done_[c->info()] |= static_cast<std::uint8_t>(1u << local_edge(c->index(vi), c->index(vj)));
+      if (!data_[c->info()].infinite) lowest = std::min(lowest, c->info());  // walks start finite
+      st.done[c->info()] |= static_cast<std::uint8_t>(1u << local_edge(c->index(vi), c->index(vj)));
     } while (++circ != done);
+    if (lowest < static_cast<int>(begin) || lowest >= static_cast<int>(end)) return;
     const std::size_t m = ring.size();
     bool ccw = true;
     for (std::size_t p = 0; p < m; ++p) {
@@ -311,7 +376,7 @@ class SpatialExtractor {
       ccw = circulates_ccw(ring[p], ring[p]->index(vi), ring[p]->index(vj), ring[(p + 1) % m]);
       break;
     }
-    std::vector<Token>& tokens = tokens_;
+    std::vector<Token>& tokens = st.tokens;
     tokens.clear();
     for (std::size_t p = 0; p < m; ++p) {
       Cell c = ring[p];
@@ -326,7 +391,7 @@ class SpatialExtractor {
       }
     }
     if (!ccw) std::reverse(tokens.begin(), tokens.end());
-    emit_arcs(tokens, scratch_, site_of(vi), site_of(vj), sites_, out_.arcs, [&] {
+    emit_arcs(tokens, st.scratch, site_of(vi), site_of(vj), sites_, st.arcs, [&] {
       if (vi->point().point().z() == vj->point().point().z()) return false;  // U would show
       std::vector<RawPoint> link;
       for (Cell c : ring)
