@@ -137,8 +137,12 @@ bool cycle_contains(const Diagram& d, const std::vector<HalfArc>& cycle, Point p
   return crossings % 2 == 1;
 }
 
-void trace_faces(Diagram& d) {
+void trace_faces(Diagram& d, FaceLabels labels) {
   d.faces.clear();
+  const bool by_sites = labels == FaceLabels::kSites;
+  // The region a half-arc bounds: its site, or (by geometry) one common label, so that every
+  // continuation at a node is chosen by angle.
+  auto label = [&](int h) { return by_sites ? info(d, h).site : 0; };
   const int halves = 2 * static_cast<int>(d.arcs.size());
   std::vector<ArcPathView> paths;
   paths.reserve(d.arcs.size());
@@ -150,10 +154,10 @@ void trace_faces(Diagram& d) {
   std::map<int, std::vector<int>> from_infinity;
   for (int h = 0; h < halves; ++h) {
     const HalfInfo hi = info(d, h);
-    if (hi.site == kNone) continue;
+    if (label(h) == kNone) continue;
     if (hi.start == kNone) {
       if (hi.end != kNone || std::holds_alternative<Line>(d.arcs[h / 2].curve))
-        from_infinity[hi.site].push_back(h);
+        from_infinity[label(h)].push_back(h);
     } else {
       ++out_begin[hi.start + 1];
     }
@@ -164,7 +168,7 @@ void trace_faces(Diagram& d) {
     std::vector<int> fill(out_begin.begin(), out_begin.end() - 1);
     for (int h = 0; h < halves; ++h) {
       const HalfInfo hi = info(d, h);
-      if (hi.site != kNone && hi.start != kNone) out_list[fill[hi.start]++] = h;
+      if (label(h) != kNone && hi.start != kNone) out_list[fill[hi.start]++] = h;
     }
   }
   auto outgoing = [&](int v) {
@@ -181,7 +185,7 @@ void trace_faces(Diagram& d) {
     if (hi.end == kNone) {
       if (hi.start == kNone && std::holds_alternative<Circle>(arc.curve)) return h;  // full circle
       // Around infinity, counter-clockwise, to the next arc of this site coming back.
-      const auto& list = from_infinity[hi.site];
+      const auto& list = from_infinity[label(h)];
       if (list.empty()) return -1;
       const AtInfinity leave = infinity_key(d, h, true);
       for (int c : list)
@@ -191,23 +195,37 @@ void trace_faces(Diagram& d) {
     int best = -1;
     int count = 0;
     for (int c : outgoing(hi.end))
-      if (info(d, c).site == hi.site) {
+      if (label(c) == label(h)) {
         ++count;
         best = c;
       }
     if (count <= 1) return best;
-    // The site's region touches this node more than once: take the first outgoing arc clockwise
-    // from the reversed incoming direction (the face is on the left).
+    // The region touches this node more than once (or faces are traced by geometry): take the
+    // first outgoing arc clockwise from the reversed incoming direction (the face is on the left);
+    // of arcs leaving in the same direction, the one bending more to the left lies at larger
+    // angles next to the node, so the clockwise sweep from the back direction meets it first.
     const Point in = travel_direction(path_of(h), h, 1);
     const Point back{-in.x, -in.y};
-    double best_angle = 1e9;
+    auto travel_curvature = [&](int x) {
+      return path_of(x).curvature() * (x % 2 == 0 ? 1.0 : -1.0);
+    };
+    const double back_curvature = travel_curvature(h ^ 1);
+    double best_angle = 1e9, best_curvature = 0.0;
     for (int c : outgoing(hi.end)) {
-      if (info(d, c).site != hi.site) continue;
+      if (label(c) != label(h) || c == (h ^ 1)) continue;
       const Point t = travel_direction(path_of(c), c, 0);
       double cw = -angle_between(back, t);
       if (cw <= 0) cw += kTwoPi;
-      if (cw < best_angle) best_angle = cw, best = c;
+      const double k = travel_curvature(c);
+      // Leaving along the way we came: right of the returning arc (bending less left) comes first
+      // in the sweep, left of it last.
+      if (cw < tolerance::kParallelAngle || cw > kTwoPi - tolerance::kParallelAngle)
+        cw = k < back_curvature ? 0.0 : kTwoPi;
+      if (best < 0 || cw < best_angle - tolerance::kParallelAngle ||
+          (cw <= best_angle + tolerance::kParallelAngle && k > best_curvature))
+        best_angle = cw, best_curvature = k, best = c;
     }
+    if (best < 0) best = h ^ 1;  // a dangling end: come back along the same arc
     return best;
   };
 
@@ -220,8 +238,8 @@ void trace_faces(Diagram& d) {
   };
   std::vector<Cycle> cycles;
   for (int h0 = 0; h0 < halves; ++h0) {
-    if (seen[h0] || info(d, h0).site == kNone) continue;
-    Cycle cyc{info(d, h0).site, {}, false, 0.0};
+    if (seen[h0] || label(h0) == kNone) continue;
+    Cycle cyc{label(h0), {}, false, 0.0};
     int h = h0;
     bool closed = false;
     // Orientation by signed area: chords (shoelace about the first node, against cancellation
@@ -255,10 +273,12 @@ void trace_faces(Diagram& d) {
   // Outer cycles make faces; clockwise cycles are holes of the face of their site containing them.
   std::unordered_map<int, std::vector<int>> faces_of_site;
   std::vector<const Cycle*> holes;
+  std::vector<double> outer_area;  // per face: |area| of its outer cycle (∞ when unbounded)
   for (const Cycle& c : cycles) {
     if (c.through_infinity || c.area2 > 0) {
+      outer_area.push_back(c.through_infinity ? INFINITY : c.area2);
       Face f;
-      f.site = c.site;
+      f.site = by_sites ? c.site : kNone;
       f.bounded = !c.through_infinity;
       f.boundaries.push_back(c.arcs);
       faces_of_site[c.site].push_back(static_cast<int>(d.faces.size()));
@@ -268,6 +288,12 @@ void trace_faces(Diagram& d) {
     }
   }
   const std::vector<char> has_outer(d.faces.size(), 1);
+  // The face whose outer cycle runs along each half-arc: the face across a hole's own arcs is the
+  // one on the hole's other side, never the face containing it (the test point lies on that arc).
+  std::vector<int> outer_face_of_half(halves, -1);
+  for (std::size_t f = 0; f < d.faces.size(); ++f)
+    for (const HalfArc& h : d.faces[f].boundaries.front())
+      outer_face_of_half[half_id(h.arc, h.forward)] = static_cast<int>(f);
   std::map<int, int> implicit_face;  // site -> its unbounded face without outer cycle
   for (const Cycle* hole : holes) {
     const HalfArc first = hole->arcs.front();
@@ -278,18 +304,22 @@ void trace_faces(Diagram& d) {
                                                                          : 0.0;
     const Point p = path.at(mid);
     int target = -1;
+    std::vector<int> across;
+    for (const HalfArc& h : hole->arcs) across.push_back(outer_face_of_half[half_id(h.arc, !h.forward)]);
     for (int f : faces_of_site[hole->site]) {
-      if (cycle_contains(d, d.faces[f].boundaries.front(), p)) {
-        // Innermost: a bounded face inside another of the same site wins.
-        if (target < 0 || d.faces[f].bounded) target = f;
-      }
+      if (f >= static_cast<int>(outer_area.size())) continue;  // hole-only faces have no outer
+      if (std::find(across.begin(), across.end(), f) != across.end()) continue;
+      // Innermost containing outer cycle (smallest area) wins.
+      if (cycle_contains(d, d.faces[f].boundaries.front(), p) &&
+          (target < 0 || outer_area[f] < outer_area[target]))
+        target = f;
     }
     if (target < 0) {
       // The unbounded component of a site without lines: it has no outer cycle, only holes.
       auto it = implicit_face.find(hole->site);
       if (it == implicit_face.end()) {
         Face f;
-        f.site = hole->site;
+        f.site = by_sites ? hole->site : kNone;
         f.bounded = false;
         faces_of_site[hole->site].push_back(static_cast<int>(d.faces.size()));
         d.faces.push_back(std::move(f));
@@ -298,6 +328,10 @@ void trace_faces(Diagram& d) {
       target = it->second;
     }
     d.faces[target].boundaries.push_back(hole->arcs);
+  }
+  if (!by_sites) {
+    if (d.faces.empty()) d.faces.push_back(Face{kNone, false, false, {}});  // no arcs: the plane
+    return;
   }
   // A diagram of one site (or none with arcs): the whole plane.
   for (std::size_t s = 0; s < d.sites.size(); ++s)

@@ -6,14 +6,21 @@
 // first (bounded faces; a cycle through infinity for unbounded faces bounded by lines), then holes.
 // Each face is marked orphan unless it contains its own site. Works on the engine's output and on
 // any other site-labelled arc graph. At a node where one site's region touches itself the next
-// half-arc is chosen by angle; elsewhere the labels alone decide.
+// half-arc is chosen by angle; elsewhere the labels alone decide. With FaceLabels::kGeometry every
+// continuation is chosen by angle (tangent, then curvature), for graphs without site labels.
 #pragma once
 
 #include "voronoi/diagram.h"
 
 namespace covmap::voronoi {
 
-void trace_faces(Diagram& d);
+enum class FaceLabels {
+  kSites,     // arcs name their sites; faces are the components of each site's region
+  kGeometry,  // arcs need not name sites (an input graph): continuations are chosen by angle and
+              // faces get site kNone; nesting is decided by containment
+};
+
+void trace_faces(Diagram& d, FaceLabels labels = FaceLabels::kSites);
 
 // True when p lies inside the region enclosed by `cycle` (half-arcs with the region on their left;
 // a cycle may pass through infinity). Used for containment of holes and sites.

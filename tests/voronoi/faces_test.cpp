@@ -10,6 +10,7 @@
 
 #include "site_families.h"
 #include "voronoi/engine.h"
+#include "voronoi/faces.h"
 
 namespace covmap::voronoi {
 namespace {
@@ -172,6 +173,50 @@ TEST(Faces, NestedRegionsGiveHolesAndOrphans) {
   }
   EXPECT_EQ(holes, 1);
 }
+
+}  // namespace
+}  // namespace covmap::voronoi
+
+namespace covmap::voronoi {
+namespace {
+
+// Tracing by geometry alone (as for an input graph without sites) must find exactly the faces
+// traced from the site labels: same boundary cycles, as sets of half-arcs.
+class FacesByGeometry : public ::testing::TestWithParam<Family> {};
+
+TEST_P(FacesByGeometry, MatchLabelledFaces) {
+  for (int seed = 1; seed <= 10; ++seed) {
+    const auto sites = testing::make_sites(GetParam(), 40, seed);
+    const Diagram labelled = build_diagram(sites);
+    Diagram geometric = labelled;
+    for (Arc& a : geometric.arcs) a.left_site = a.right_site = kNone;
+    trace_faces(geometric, FaceLabels::kGeometry);
+    auto canon = [](const Face& f) {
+      std::vector<std::vector<std::pair<int, bool>>> cycles;
+      for (const auto& b : f.boundaries) {
+        std::vector<std::pair<int, bool>> c;
+        for (const HalfArc& h : b) c.emplace_back(h.arc, h.forward);
+        std::sort(c.begin(), c.end());
+        cycles.push_back(c);
+      }
+      std::sort(cycles.begin(), cycles.end());
+      return cycles;
+    };
+    std::vector<decltype(canon(Face{}))> a, b;
+    for (const Face& f : labelled.faces) a.push_back(canon(f));
+    for (const Face& f : geometric.faces) b.push_back(canon(f));
+    std::sort(a.begin(), a.end());
+    std::sort(b.begin(), b.end());
+    ASSERT_EQ(a.size(), b.size()) << "seed " << seed;
+    EXPECT_TRUE(a == b) << "seed " << seed;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Families, FacesByGeometry,
+                         ::testing::Values(Family::UniformWeights, Family::EqualWeights,
+                                           Family::WeightClasses, Family::SharedMaximum,
+                                           Family::Grid),
+                         [](const auto& info) { return testing::family_name(info.param); });
 
 }  // namespace
 }  // namespace covmap::voronoi
