@@ -7,11 +7,13 @@
 
 namespace covmap::voronoi::tolerance {
 
-// Face tracing: two unbounded arcs whose directions differ by less than this angle (radians) are
-// taken as parallel (same point at infinity) and ordered by their offset. Directions of bisectors
-// of collinear sites are parallel in exact arithmetic but are computed from rounded differences,
-// which perturbs their angle by a few ulps (~1e-16); real distinct directions differ by far more.
-inline constexpr double kParallelAngle = 1e-12;
+// Face tracing: two arcs leaving a node (or two unbounded arcs) whose directions differ by less
+// than this angle (radians) are taken as tangent (parallel) and ordered by curvature (by offset at
+// infinity). Tangencies are real in degenerate input (collinear sites: circles tangent to a line
+// at a node), but a tangency node is a double root, known only to ~√ε ≈ 1e-8 relative, so its
+// tangent directions carry errors up to ~1e-9 rad. For arcs that do not cross, the curvature (or
+// offset) order is the true order whenever the angle difference is this small.
+inline constexpr double kParallelAngle = 1e-8;
 
 // Clipping: a crossing of an arc with the clip boundary closer than this fraction of the clip
 // polygon's diameter to a polygon vertex is snapped onto that vertex, so an arc through a corner
