@@ -1,0 +1,315 @@
+#include "recognition/recognize.h"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <sstream>
+
+#include "recognition/bisector_relation.h"
+#include "recognition/mobius.h"
+#include "voronoi/faces.h"
+
+namespace covmap::recognition {
+namespace {
+
+using voronoi::Arc;
+using voronoi::Diagram;
+using voronoi::HalfArc;
+using voronoi::kNone;
+
+GeneralizedCircle curve_of(const Arc& a) {
+  if (const auto* c = std::get_if<voronoi::Circle>(&a.curve)) return GeneralizedCircle::from(*c);
+  return GeneralizedCircle::from(std::get<voronoi::Line>(a.curve));
+}
+
+int half_id(const HalfArc& h) { return 2 * h.arc + (h.forward ? 0 : 1); }
+
+// Distance from z to a generalized circle (|value| / |gradient| to first order, exact for circles
+// and lines).
+double distance_to(const GeneralizedCircle& g, Complex z) {
+  if (g.is_line()) return std::abs(g.value(z)) / (2.0 * std::abs(g.B));
+  const auto c = g.centre();
+  const auto r = g.radius();
+  if (!c || !r) return INFINITY;
+  return std::abs(std::abs(z - *c) - *r);
+}
+
+// Intersection points of two generalized circles (0, 1 or 2; empty also when they coincide).
+std::vector<Complex> intersect(GeneralizedCircle a, GeneralizedCircle b) {
+  auto normalise = [](GeneralizedCircle g) {
+    if (g.A != 0.0) {
+      g.B /= g.A;
+      g.C /= g.A;
+      g.A = 1.0;
+    }
+    return g;
+  };
+  a = normalise(a);
+  b = normalise(b);
+  if (a.is_line() && !b.is_line()) std::swap(a, b);
+  // Now a is a circle or both are lines. The radical line of two circles: a - b.
+  GeneralizedCircle line = a;
+  if (!a.is_line() && !b.is_line()) {
+    line = GeneralizedCircle{0.0, a.B - b.B, a.C - b.C};
+  } else if (b.is_line()) {
+    line = b;
+  }
+  std::vector<Complex> out;
+  if (a.is_line()) {  // two lines: 2Re(conj(B) z) + C = 0 each
+    const double a1 = 2 * a.B.real(), b1 = 2 * a.B.imag(), a2 = 2 * b.B.real(), b2 = 2 * b.B.imag();
+    const double det = a1 * b2 - a2 * b1;
+    if (det == 0.0) return out;
+    out.emplace_back((-a.C * b2 + b.C * b1) / det, (-a1 * b.C + a2 * a.C) / det);
+    return out;
+  }
+  if (std::abs(line.B) == 0.0) return out;  // concentric or identical circles
+  // Line 2Re(conj(B) z) + C = 0: direction i·B, nearest point to the origin -C B / (2|B|²).
+  const Complex p0 = -line.C * line.B / (2.0 * std::norm(line.B));
+  const Complex dir = Complex(0, 1) * line.B / std::abs(line.B);
+  const Complex centre = *a.centre();
+  const double r = std::sqrt(std::max(0.0, std::norm(centre) - a.C));
+  // |p0 + t dir - c|² = r²
+  const Complex w = p0 - centre;
+  const double bq = std::real(std::conj(dir) * w);
+  const double cq = std::norm(w) - r * r;
+  const double disc = bq * bq - cq;
+  if (disc < 0) {
+    if (disc > -1e-12 * (r * r + std::norm(w))) out.push_back(p0 - bq * dir);
+    return out;
+  }
+  const double s = std::sqrt(disc);
+  out.push_back(p0 + (-bq - s) * dir);
+  out.push_back(p0 + (-bq + s) * dir);
+  return out;
+}
+
+struct FaceSite {
+  bool assigned = false;
+  Complex position;
+  double weight = 1.0;
+};
+
+}  // namespace
+
+Reconstruction recognize(const Diagram& input, const RecognitionOptions& options) {
+  Reconstruction out;
+  out.graph = input;
+  Diagram& g = out.graph;
+  g.sites.clear();
+  g.faces.clear();
+  for (Arc& a : g.arcs) {
+    if (a.frame) {
+      out.supported = false;
+      out.reason = "clipped graphs (frame arcs) are not handled yet";
+      return out;
+    }
+    a.left_site = a.right_site = kNone;
+  }
+  if (g.nodes.empty()) {
+    out.supported = false;
+    out.reason = "graphs without nodes (disjoint circles and lines, paper §3) are not handled yet";
+    return out;
+  }
+  voronoi::trace_faces(g, voronoi::FaceLabels::kGeometry);
+  const int faces = static_cast<int>(g.faces.size());
+  std::vector<int> face_of_half(2 * g.arcs.size(), kNone);
+  for (int f = 0; f < faces; ++f)
+    for (const auto& cycle : g.faces[f].boundaries)
+      for (const HalfArc& h : cycle) face_of_half[half_id(h)] = f;
+
+  double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;
+  for (const auto& n : g.nodes) {
+    xmin = std::min(xmin, n.x), xmax = std::max(xmax, n.x);
+    ymin = std::min(ymin, n.y), ymax = std::max(ymax, n.y);
+  }
+  const double scale = std::max(std::hypot(xmax - xmin, ymax - ymin), 1e-300);
+  const double tol = options.relative_tolerance * scale;
+
+  // Arcs at each node (an arc from a node to itself counts twice).
+  std::vector<std::vector<int>> arcs_at(g.nodes.size());
+  for (std::size_t a = 0; a < g.arcs.size(); ++a) {
+    if (g.arcs[a].from != kNone) arcs_at[g.arcs[a].from].push_back(static_cast<int>(a));
+    if (g.arcs[a].to != kNone) arcs_at[g.arcs[a].to].push_back(static_cast<int>(a));
+  }
+  auto faces_of_arc = [&](int a) {
+    return std::pair<int, int>{face_of_half[2 * a], face_of_half[2 * a + 1]};
+  };
+
+  // Lemma 5: the solution circle of face f at a degree-3 node: the fixed set of the three
+  // inversions that carry f's site around the node and back.
+  auto solution_circle = [&](int f, int v) -> std::optional<GeneralizedCircle> {
+    const auto& at = arcs_at[v];
+    if (at.size() != 3) return std::nullopt;
+    int a1 = -1;
+    for (int a : at) {
+      auto [l, r] = faces_of_arc(a);
+      if (l == f || r == f) {
+        a1 = a;
+        break;
+      }
+    }
+    if (a1 < 0) return std::nullopt;
+    auto [l1, r1] = faces_of_arc(a1);
+    const int gface = l1 == f ? r1 : l1;
+    int a2 = -1, a3 = -1;
+    for (int a : at) {
+      if (a == a1) continue;
+      auto [l, r] = faces_of_arc(a);
+      if ((l == gface || r == gface) && l != f && r != f) a2 = a;
+      else a3 = a;
+    }
+    if (a2 < 0 || a3 < 0) return std::nullopt;
+    const Mobius h = Mobius::inversion(curve_of(g.arcs[a3]))
+                         .after(Mobius::inversion(curve_of(g.arcs[a2])))
+                         .after(Mobius::inversion(curve_of(g.arcs[a1])));
+    const auto forms = h.fixed_set_forms();
+    auto size = [](const GeneralizedCircle& c) { return std::abs(c.A) + std::abs(c.B) + std::abs(c.C); };
+    return size(forms[0]) >= size(forms[1]) ? forms[0] : forms[1];
+  };
+
+  // The face with the most distinct degree-3 boundary nodes.
+  int start = -1;
+  std::vector<int> start_nodes;
+  for (int f = 0; f < faces; ++f) {
+    std::vector<int> nodes;
+    for (const auto& cycle : g.faces[f].boundaries)
+      for (const HalfArc& h : cycle) {
+        const Arc& a = g.arcs[h.arc];
+        const int v = h.forward ? a.to : a.from;
+        if (v != kNone && arcs_at[v].size() == 3) nodes.push_back(v);
+      }
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    if (nodes.size() > start_nodes.size()) start = f, start_nodes = nodes;
+  }
+  if (start < 0 || start_nodes.size() < 3) {
+    out.supported = false;
+    out.reason = "no face has three nodes of degree three (paper §4.2, k ≤ 2, and §4.4) — not handled yet";
+    return out;
+  }
+  std::vector<GeneralizedCircle> circles;
+  for (int v : start_nodes)
+    if (auto c = solution_circle(start, v)) circles.push_back(*c);
+  // Candidates: the intersection of two distinct solution circles, kept if on all the others.
+  std::vector<Complex> candidates;
+  for (std::size_t i = 0; i < circles.size() && candidates.empty(); ++i)
+    for (std::size_t j = i + 1; j < circles.size() && candidates.empty(); ++j) {
+      const auto pts = intersect(circles[i], circles[j]);
+      for (const Complex& p : pts) {
+        bool on_all = true;
+        for (const auto& c : circles) on_all = on_all && distance_to(c, p) <= tol;
+        if (on_all) candidates.push_back(p);
+      }
+    }
+  if (candidates.empty()) {
+    out.bisector_graph = false;
+    RecognitionFailure fail;
+    fail.face = start;
+    std::ostringstream msg;
+    msg << "the solution circles of face " << start << " (one per node, " << circles.size()
+        << " nodes) have no common point";
+    fail.message = msg.str();
+    out.reason = fail.message;
+    out.failure = fail;
+    return out;
+  }
+
+  // Propagate each candidate breadth first and verify every arc.
+  std::vector<Reconstruction> solutions;
+  std::optional<RecognitionFailure> last_failure;
+  for (const Complex& p : candidates) {
+    std::vector<FaceSite> site(faces);
+    site[start] = {true, p, 1.0};
+    std::deque<int> queue{start};
+    std::optional<RecognitionFailure> failure;
+    while (!queue.empty() && !failure) {
+      const int f = queue.front();
+      queue.pop_front();
+      for (const auto& cycle : g.faces[f].boundaries) {
+        for (const HalfArc& h : cycle) {
+          const Arc& arc = g.arcs[h.arc];
+          const int other = face_of_half[half_id({h.arc, !h.forward})];
+          if (other == kNone) continue;
+          const GeneralizedCircle c = curve_of(arc);
+          // The face on the left of h must hold its site on that side: inside the disk when h
+          // runs counter-clockwise, on the left of a line.
+          const bool f_left_is_inside = std::holds_alternative<voronoi::Line>(arc.curve)
+                                            ? h.forward
+                                            : (h.forward == arc.ccw);
+          const double side = c.value(site[f].position);
+          if ((side < 0) != f_left_is_inside && distance_to(c, site[f].position) > tol) {
+            failure = RecognitionFailure{};
+            failure->arc = h.arc;
+            failure->face = f;
+            failure->x = site[f].position.real();
+            failure->y = site[f].position.imag();
+            failure->amount = distance_to(c, site[f].position);
+            std::ostringstream msg;
+            msg << "arc " << h.arc << ": the site of face " << f << " lies on the wrong side of it";
+            failure->message = msg.str();
+            break;
+          }
+          const WeightedPoint partner = partner_across(c, {site[f].position, site[f].weight});
+          if (!site[other].assigned) {
+            site[other] = {true, partner.position, partner.weight};
+            queue.push_back(other);
+            continue;
+          }
+          const double off = std::abs(site[other].position - partner.position);
+          if (!(off <= tol)) {
+            failure = RecognitionFailure{};
+            failure->arc = h.arc;
+            failure->face = other;
+            failure->x = partner.position.real();
+            failure->y = partner.position.imag();
+            failure->amount = off;
+            std::ostringstream msg;
+            msg << "arc " << h.arc << ": the sites of faces " << f << " and " << other
+                << " are not mirror images in it (off by " << off << ")";
+            failure->message = msg.str();
+            break;
+          }
+        }
+        if (failure) break;
+      }
+    }
+    if (failure) {
+      last_failure = failure;
+      continue;
+    }
+    // Faces sharing one site (orphans) become one site; weights normalised to a largest of 1.
+    Reconstruction r;
+    double wmax = 0;
+    for (const FaceSite& s : site) wmax = std::max(wmax, s.weight);
+    r.face_site.assign(faces, kNone);
+    for (int f = 0; f < faces; ++f) {
+      if (!site[f].assigned) continue;
+      int found = kNone;
+      for (std::size_t k = 0; k < r.sites.size(); ++k)
+        if (std::hypot(r.sites[k].x - site[f].position.real(), r.sites[k].y - site[f].position.imag()) <= tol)
+          found = static_cast<int>(k);
+      if (found == kNone) {
+        found = static_cast<int>(r.sites.size());
+        r.sites.push_back({"s" + std::to_string(found), site[f].position.real(),
+                           site[f].position.imag(), site[f].weight / wmax});
+      }
+      r.face_site[f] = found;
+    }
+    solutions.push_back(std::move(r));
+  }
+  if (solutions.empty()) {
+    out.bisector_graph = false;
+    out.failure = last_failure;
+    out.reason = last_failure ? last_failure->message : "no candidate survived";
+    return out;
+  }
+  out.bisector_graph = true;
+  out.sites = solutions.front().sites;
+  out.face_site = solutions.front().face_site;
+  if (solutions.size() > 1)
+    for (const auto& s : solutions) out.candidates.push_back(s.sites);
+  out.reason = "every arc separates mirror-image sites";
+  return out;
+}
+
+}  // namespace covmap::recognition

@@ -1,0 +1,51 @@
+// covmap::recognition::recognize — is an arc graph a weighted bisector graph, and which weighted
+// sites drew it? (seed paper 5, §4: degree-3 nodes, Lemmas 3-7.)
+//
+// Contract (this stage): the input is a planar circular-arc graph (Diagram nodes and arcs; any
+// sites in it are ignored). Faces are traced by geometry. When some face has at least three nodes
+// of degree three, its site is the intersection of the nodes' solution circles (Lemma 5/6, at
+// most two candidates); each candidate is propagated to every face by inversion across the arcs
+// (Lemma 1), breadth first, and every arc is verified: the sites it separates must be each
+// other's inversion in its circle (mirror image in its line) with the lighter site on the disk
+// side. The answer names the arc and the distance when it fails. Not yet handled here (reported as
+// such, never guessed): graphs without nodes, nodes of degree > 3, frame arcs of clipped maps.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "voronoi/diagram.h"
+
+namespace covmap::recognition {
+
+struct RecognitionOptions {
+  // Relative to the diameter of the graph's nodes: how far a propagated site may be from where an
+  // arc says it must be. Exact (double-precision) graphs need ~1e-9; noisy maps use issue 4's
+  // tolerant path instead.
+  double relative_tolerance = 1e-7;
+};
+
+struct RecognitionFailure {
+  std::string message;
+  int arc = voronoi::kNone;
+  int node = voronoi::kNone;
+  int face = voronoi::kNone;
+  double x = 0.0, y = 0.0;  // where
+  double amount = 0.0;      // by how much (a length)
+};
+
+struct Reconstruction {
+  bool bisector_graph = false;
+  bool supported = true;  // false: the input needs a part of the method not implemented yet
+  std::string reason;
+  std::vector<voronoi::Site> sites;  // weights normalised so that the largest is 1
+  std::vector<int> face_site;        // per traced face of the input: index into sites
+  std::vector<std::vector<voronoi::Site>> candidates;  // when two solutions survive
+  std::optional<RecognitionFailure> failure;
+  voronoi::Diagram graph;  // the input with its faces traced (face_site refers to these)
+};
+
+Reconstruction recognize(const voronoi::Diagram& graph, const RecognitionOptions& options = {});
+
+}  // namespace covmap::recognition

@@ -1,0 +1,101 @@
+// Round trips through the engine: sites → MWVD → strip the sites → recognize → the same sites and
+// weight ratios. A face with three degree-3 nodes fixes the positions completely (Lemma 6), and
+// weights up to one common factor, so positions are compared directly and weights after
+// normalising both sets to a largest weight of 1.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "recognition/recognize.h"
+#include "voronoi/engine.h"
+
+namespace covmap::recognition {
+namespace {
+
+using voronoi::Diagram;
+using voronoi::Site;
+
+std::vector<Site> random_sites(std::mt19937_64& rng, int n, bool equal_weights) {
+  std::uniform_real_distribution<double> u(0.0, 1.0), w(1.0, 2.0);
+  std::vector<Site> s;
+  for (int i = 0; i < n; ++i) s.push_back({std::to_string(i), u(rng), u(rng), equal_weights ? 1.0 : w(rng)});
+  return s;
+}
+
+// Every original site (that owns a face) must be matched by a reconstructed one, at the same place
+// with the same normalised weight.
+void expect_same_sites(const std::vector<Site>& original, const Reconstruction& r, double tol) {
+  double wmax = 0;
+  for (const Site& s : original) wmax = std::max(wmax, s.weight);
+  for (const Site& s : original) {
+    double best = INFINITY;
+    const Site* match = nullptr;
+    for (const Site& t : r.sites) {
+      const double d = std::hypot(s.x - t.x, s.y - t.y);
+      if (d < best) best = d, match = &t;
+    }
+    ASSERT_NE(match, nullptr);
+    EXPECT_LT(best, tol) << "site " << s.id;
+    EXPECT_NEAR(match->weight, s.weight / wmax, 1e-9 * s.weight / wmax) << "site " << s.id;
+  }
+  EXPECT_EQ(r.sites.size(), original.size());
+}
+
+TEST(RoundTrip, WeightedSitesAreRecovered) {
+  std::mt19937_64 rng(11);
+  int recognised = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const auto sites = random_sites(rng, 6 + trial % 30, false);
+    Diagram d = voronoi::build_diagram(sites);
+    const Reconstruction r = recognize(d);
+    if (!r.supported) continue;  // e.g. no face with three nodes
+    ASSERT_TRUE(r.bisector_graph) << "trial " << trial << ": " << r.reason;
+    expect_same_sites(sites, r, 1e-9);
+    ++recognised;
+  }
+  EXPECT_GT(recognised, 150);
+}
+
+TEST(RoundTrip, EqualWeightsAreRecovered) {
+  std::mt19937_64 rng(12);
+  int recognised = 0;
+  for (int trial = 0; trial < 100; ++trial) {
+    const auto sites = random_sites(rng, 6 + trial % 30, true);
+    const Reconstruction r = recognize(voronoi::build_diagram(sites));
+    if (!r.supported) continue;
+    ASSERT_TRUE(r.bisector_graph) << "trial " << trial << ": " << r.reason;
+    expect_same_sites(sites, r, 1e-9);
+    ++recognised;
+  }
+  EXPECT_GT(recognised, 80);
+}
+
+// A graph that is not a bisector graph: move one node (and the arcs' ends with it) so the arcs no
+// longer meet on common bisectors; recognition must say no and name an arc or face.
+TEST(Negative, ShiftedArcIsRejected) {
+  std::mt19937_64 rng(13);
+  int rejected = 0;
+  for (int trial = 0; trial < 50; ++trial) {
+    const auto sites = random_sites(rng, 12, false);
+    Diagram d = voronoi::build_diagram(sites);
+    // Enlarge one circle arc's radius by 1%: it is then no bisector of mirror-image sites.
+    for (auto& a : d.arcs)
+      if (auto* c = std::get_if<voronoi::Circle>(&a.curve); c && a.from != voronoi::kNone) {
+        c->r *= 1.01;
+        break;
+      }
+    const Reconstruction r = recognize(d);
+    if (!r.supported) continue;
+    EXPECT_FALSE(r.bisector_graph) << "trial " << trial;
+    if (!r.bisector_graph) {
+      ASSERT_TRUE(r.failure.has_value());
+      EXPECT_TRUE(r.failure->arc != voronoi::kNone || r.failure->face != voronoi::kNone);
+      ++rejected;
+    }
+  }
+  EXPECT_GT(rejected, 30);
+}
+
+}  // namespace
+}  // namespace covmap::recognition
