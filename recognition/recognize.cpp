@@ -7,6 +7,7 @@
 
 #include "recognition/bisector_relation.h"
 #include "recognition/mobius.h"
+#include "voronoi/engine.h"
 #include "voronoi/faces.h"
 
 namespace covmap::recognition {
@@ -309,6 +310,20 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
   if (solutions.size() > 1)
     for (const auto& s : solutions) out.candidates.push_back(s.sites);
   out.reason = "every arc separates mirror-image sites";
+  if (options.voronoi_check) {
+    // The sites must be distinct for a Voronoi diagram; coinciding sites already answer "no".
+    try {
+      const voronoi::Diagram recomputed = voronoi::build_diagram(out.sites);
+      CompareOptions co;
+      co.relative_tolerance = options.relative_tolerance;
+      const Comparison c = compare_graphs(input, recomputed, co);
+      out.voronoi = c.equal() ? "yes" : "no";
+      out.voronoi_differences = c.differences;
+    } catch (const voronoi::InvalidSites& e) {
+      out.voronoi = "no";
+      out.voronoi_differences.push_back({DifferenceKind::NodeOnlyInA, kNone, 0, 0, e.what()});
+    }
+  }
   return out;
 }
 

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "recognition/compare.h"
 #include "voronoi/diagram.h"
 
 namespace covmap::recognition {
@@ -24,6 +25,9 @@ struct RecognitionOptions {
   // arc says it must be. Exact (double-precision) graphs need ~1e-9; noisy maps use issue 4's
   // tolerant path instead.
   double relative_tolerance = 1e-7;
+  // Recompute the MWVD of the reconstructed sites with the engine and compare it with the input
+  // (paper 5, §5): a bisector graph need not be the Voronoi diagram (e.g. a missing orphan face).
+  bool voronoi_check = true;
 };
 
 struct RecognitionFailure {
@@ -43,6 +47,10 @@ struct Reconstruction {
   std::vector<int> face_site;        // per traced face of the input: index into sites
   std::vector<std::vector<voronoi::Site>> candidates;  // when two solutions survive
   std::optional<RecognitionFailure> failure;
+  // "yes" / "no" / "unknown" (check not run, or not a bisector graph), and where the recomputed
+  // diagram differs from the input when "no".
+  std::string voronoi = "unknown";
+  std::vector<Difference> voronoi_differences;
   voronoi::Diagram graph;  // the input with its faces traced (face_site refers to these)
 };
 

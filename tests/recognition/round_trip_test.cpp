@@ -4,6 +4,7 @@
 // normalising both sets to a largest weight of 1.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -52,6 +53,8 @@ TEST(RoundTrip, WeightedSitesAreRecovered) {
     if (!r.supported) continue;  // e.g. no face with three nodes
     ASSERT_TRUE(r.bisector_graph) << "trial " << trial << ": " << r.reason;
     expect_same_sites(sites, r, 1e-9);
+    EXPECT_EQ(r.voronoi, "yes") << "trial " << trial << ": "
+                                << (r.voronoi_differences.empty() ? "" : r.voronoi_differences[0].message);
     ++recognised;
   }
   EXPECT_GT(recognised, 150);
