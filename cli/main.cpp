@@ -3,6 +3,7 @@
 
 #include "cli/check_command.h"
 #include "cli/diagram_command.h"
+#include "cli/recognize_command.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"covmap: multiplicatively weighted Voronoi diagrams of sensor coverage maps"};
@@ -11,6 +12,10 @@ int main(int argc, char** argv) {
   covmap::cli::CheckCommandOptions check;
   covmap::cli::setup_diagram(app, diagram);
   covmap::cli::setup_check(app, check);
+  covmap::cli::RecognizeOptions recognize;
+  covmap::cli::CompareCommandOptions compare;
+  covmap::cli::setup_recognize(app, recognize);
+  covmap::cli::setup_compare(app, compare);
   CLI11_PARSE(app, argc, argv);
   return 0;
 }

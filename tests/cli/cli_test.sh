@@ -54,5 +54,28 @@ grep -q "NodeNotEquidistant\|ArcEndNotOnCurve" "$work/out.txt" && ok || fail "vi
 code=$?
 [ "$code" -ne 0 ] && [ ! -e "$work/m.json" ] && ok || fail "missing input accepted"
 
+# 6. Recognition round trip: the engine's diagram is recognized as the MWVD of its own sites.
+"$covmap" recognize "$work/d.json" -o "$work/r.json" >"$work/rec.txt"
+code=$?
+[ "$code" -eq 0 ] && grep -q "MWVD: yes" "$work/rec.txt" && ok || fail "recognize: exit $code, $(cat "$work/rec.txt")"
+grep -q '"format":"covmap.reconstruction/1"' "$work/r.json" && ok || fail "reconstruction format tag"
+# 7. A circle arc with a changed radius is not a bisector graph: exit 3.
+python3 - "$work/d.json" "$work/bent.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+for a in d["arcs"]:
+    if "circle" in a and a["from"] is not None:
+        a["circle"]["r"] *= 1.01
+        break
+json.dump(d, open(sys.argv[2], "w"))
+PY
+"$covmap" recognize "$work/bent.json" >"$work/rec2.txt"
+code=$?
+[ "$code" -eq 3 ] && ok || fail "bent graph: exit $code, $(cat "$work/rec2.txt")"
+# 8. compare: a graph equals itself; the clipped one differs.
+"$covmap" compare "$work/d.json" "$work/d.json" >/dev/null && ok || fail "compare equal"
+"$covmap" compare "$work/d.json" "$work/c.json" >/dev/null
+[ $? -eq 1 ] && ok || fail "compare different"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

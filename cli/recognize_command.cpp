@@ -1,0 +1,104 @@
+#include "cli/recognize_command.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+#include "cli/cli_support.h"
+#include "io/atomic_file.h"
+#include "io/diagram_json.h"
+#include "io/reconstruction_json.h"
+#include "io/svg.h"
+#include "recognition/compare.h"
+#include "recognition/graph_repair.h"
+#include "recognition/recognize.h"
+#include "voronoi/engine.h"
+
+namespace covmap::cli {
+
+void setup_recognize(CLI::App& app, RecognizeOptions& options) {
+  CLI::App* cmd = app.add_subcommand(
+      "recognize", "Decide whether an arc graph is a weighted bisector graph / an MWVD and "
+                   "reconstruct its sites (exit 0 yes, 3 no)");
+  cmd->add_option("graph", options.graph_path, "a covmap.arcgraph/1 file (its sites are ignored)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("-o,--output", options.output_path, "write covmap.reconstruction/1 JSON");
+  cmd->add_option("--svg", options.svg_path, "draw the recomputed diagram of the reconstruction");
+  cmd->add_flag("--no-voronoi-check", options.no_voronoi_check,
+                "skip recomputing the MWVD of the reconstruction");
+  cmd->add_option("--tolerance", options.tolerance, "relative tolerance (times the graph's extent)")
+      ->capture_default_str();
+  cmd->callback([&options]() { std::exit(run_recognize(options)); });
+}
+
+int run_recognize(const RecognizeOptions& options) {
+  return guarded([&]() {
+    voronoi::Diagram graph = io::read_diagram_json(options.graph_path);
+    graph.sites.clear();
+    for (auto& a : graph.arcs) a.left_site = a.right_site = voronoi::kNone;
+    // Nodes of degree 2 on one curve are no nodes of a bisector graph: repaired and reported.
+    double extent = 0;
+    for (const auto& n : graph.nodes) extent = std::max({extent, std::abs(n.x), std::abs(n.y)});
+    const auto repairs = recognition::merge_degree_two_nodes(graph, 1e-12 * std::max(extent, 1.0));
+    for (const auto& r : repairs) std::cerr << "covmap: repaired: " << r.what << "\n";
+    recognition::RecognitionOptions ro;
+    ro.voronoi_check = !options.no_voronoi_check;
+    ro.relative_tolerance = options.tolerance;
+    const recognition::Reconstruction r = recognition::recognize(graph, ro);
+    std::ostringstream json, svg;
+    if (!options.output_path.empty()) io::write_reconstruction_json(r, json);
+    if (!options.svg_path.empty() && r.bisector_graph)
+      io::write_svg(voronoi::build_diagram(r.sites), svg);
+    if (!options.output_path.empty())
+      io::write_file_atomically(options.output_path, [&](std::ostream& o) { o << json.str(); });
+    if (!options.svg_path.empty() && r.bisector_graph)
+      io::write_file_atomically(options.svg_path, [&](std::ostream& o) { o << svg.str(); });
+    if (!r.supported) {
+      std::cout << options.graph_path << ": not handled yet: " << r.reason << "\n";
+      return kNotHandledYet;
+    }
+    if (!r.bisector_graph) {
+      std::cout << options.graph_path << ": not a bisector graph: " << r.reason << "\n";
+      return kNotBisectorGraph;
+    }
+    std::cout << options.graph_path << ": bisector graph of " << r.sites.size() << " sites"
+              << (r.candidates.size() > 1 ? " (two solutions)" : "") << "; MWVD: " << r.voronoi;
+    if (r.voronoi == "no" && !r.voronoi_differences.empty())
+      std::cout << " (" << r.voronoi_differences.size() << " differences; first: "
+                << r.voronoi_differences.front().message << ")";
+    std::cout << "\n";
+    return kOk;
+  });
+}
+
+void setup_compare(CLI::App& app, CompareCommandOptions& options) {
+  CLI::App* cmd = app.add_subcommand("compare", "Where two arc graphs differ (exit 0 equal, 1 not)");
+  cmd->add_option("a", options.a_path, "first covmap.arcgraph/1 file")->required()->check(CLI::ExistingFile);
+  cmd->add_option("b", options.b_path, "second covmap.arcgraph/1 file")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--tolerance", options.tolerance, "relative tolerance (times the graphs' extent)")
+      ->capture_default_str();
+  cmd->add_option("--show", options.show, "differences to list")->capture_default_str();
+  cmd->callback([&options]() { std::exit(run_compare(options)); });
+}
+
+int run_compare(const CompareCommandOptions& options) {
+  return guarded([&]() {
+    const voronoi::Diagram a = io::read_diagram_json(options.a_path);
+    const voronoi::Diagram b = io::read_diagram_json(options.b_path);
+    recognition::CompareOptions co;
+    co.relative_tolerance = options.tolerance;
+    const recognition::Comparison c = recognition::compare_graphs(a, b, co);
+    std::cout << c.brief() << "\n";
+    int shown = 0;
+    for (const auto& d : c.differences) {
+      if (shown++ >= options.show) break;
+      std::cout << "  " << recognition::to_string(d.kind) << " at (" << d.x << ", " << d.y
+                << "): " << d.message << "\n";
+    }
+    return c.equal() ? kOk : kViolations;
+  });
+}
+
+}  // namespace covmap::cli
