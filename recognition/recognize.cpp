@@ -7,6 +7,7 @@
 
 #include "recognition/bisector_relation.h"
 #include "recognition/mobius.h"
+#include "voronoi/clip.h"
 #include "voronoi/engine.h"
 #include "voronoi/faces.h"
 
@@ -84,6 +85,27 @@ std::vector<Complex> intersect(GeneralizedCircle a, GeneralizedCircle b) {
   return out;
 }
 
+// The clip polygon of a clipped graph: its own if stated, else the frame arcs followed from node to
+// node (counter-clockwise, as frame arcs keep the inside on their left).
+std::vector<voronoi::Point> frame_polygon(const Diagram& g) {
+  if (!g.clip.empty()) return g.clip;
+  std::vector<int> next_arc(g.nodes.size(), kNone);
+  int first = kNone;
+  for (std::size_t a = 0; a < g.arcs.size(); ++a)
+    if (g.arcs[a].frame && g.arcs[a].from != kNone) {
+      next_arc[g.arcs[a].from] = static_cast<int>(a);
+      if (first == kNone) first = static_cast<int>(a);
+    }
+  std::vector<voronoi::Point> poly;
+  for (int a = first, guard = 0; a != kNone && guard <= static_cast<int>(g.arcs.size()); ++guard) {
+    const auto& n = g.nodes[g.arcs[a].from];
+    poly.push_back({n.x, n.y});
+    a = next_arc[g.arcs[a].to];
+    if (a == first) break;
+  }
+  return poly;
+}
+
 struct FaceSite {
   bool assigned = false;
   Complex position;
@@ -98,12 +120,10 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
   Diagram& g = out.graph;
   g.sites.clear();
   g.faces.clear();
+  // Frame arcs (a clipped map's boundary) are no bisectors: they bound faces but constrain no site.
+  bool clipped = false;
   for (Arc& a : g.arcs) {
-    if (a.frame) {
-      out.supported = false;
-      out.reason = "clipped graphs (frame arcs) are not handled yet";
-      return out;
-    }
+    clipped = clipped || a.frame;
     a.left_site = a.right_site = kNone;
   }
   if (g.nodes.empty()) {
@@ -126,12 +146,23 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
   const double scale = std::max(std::hypot(xmax - xmin, ymax - ymin), 1e-300);
   const double tol = options.relative_tolerance * scale;
 
-  // Arcs at each node (an arc from a node to itself counts twice).
+  // Arcs at each node (an arc from a node to itself counts twice). Nodes on the frame are where
+  // the map was cut, not where sites meet: they give no solution circle.
   std::vector<std::vector<int>> arcs_at(g.nodes.size());
+  std::vector<char> on_frame(g.nodes.size(), 0);
   for (std::size_t a = 0; a < g.arcs.size(); ++a) {
-    if (g.arcs[a].from != kNone) arcs_at[g.arcs[a].from].push_back(static_cast<int>(a));
-    if (g.arcs[a].to != kNone) arcs_at[g.arcs[a].to].push_back(static_cast<int>(a));
+    for (int v : {g.arcs[a].from, g.arcs[a].to}) {
+      if (v == kNone) continue;
+      if (g.arcs[a].frame) on_frame[v] = 1;
+      else arcs_at[v].push_back(static_cast<int>(a));
+    }
   }
+  for (std::size_t v = 0; v < g.nodes.size(); ++v)
+    if (on_frame[v]) arcs_at[v].clear();
+  // The face outside the frame (on the right of frame arcs) has no site.
+  std::vector<char> outside(faces, 0);
+  for (std::size_t a = 0; a < g.arcs.size(); ++a)
+    if (g.arcs[a].frame && face_of_half[2 * a + 1] != kNone) outside[face_of_half[2 * a + 1]] = 1;
   auto faces_of_arc = [&](int a) {
     return std::pair<int, int>{face_of_half[2 * a], face_of_half[2 * a + 1]};
   };
@@ -172,6 +203,7 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
   int start = -1;
   std::vector<int> start_nodes;
   for (int f = 0; f < faces; ++f) {
+    if (outside[f]) continue;
     std::vector<int> nodes;
     for (const auto& cycle : g.faces[f].boundaries)
       for (const HalfArc& h : cycle) {
@@ -230,7 +262,7 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
         for (const HalfArc& h : cycle) {
           const Arc& arc = g.arcs[h.arc];
           const int other = face_of_half[half_id({h.arc, !h.forward})];
-          if (other == kNone) continue;
+          if (other == kNone || arc.frame) continue;
           const GeneralizedCircle c = curve_of(arc);
           // The face on the left of h must hold its site on that side: inside the disk when h
           // runs counter-clockwise, on the left of a line.
@@ -313,7 +345,8 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
   if (options.voronoi_check) {
     // The sites must be distinct for a Voronoi diagram; coinciding sites already answer "no".
     try {
-      const voronoi::Diagram recomputed = voronoi::build_diagram(out.sites);
+      voronoi::Diagram recomputed = voronoi::build_diagram(out.sites);
+      if (clipped) recomputed = voronoi::clip_diagram(recomputed, frame_polygon(input));
       CompareOptions co;
       co.relative_tolerance = options.relative_tolerance;
       const Comparison c = compare_graphs(input, recomputed, co);

@@ -102,3 +102,53 @@ TEST(Negative, ShiftedArcIsRejected) {
 
 }  // namespace
 }  // namespace covmap::recognition
+
+#include "voronoi/clip.h"
+
+namespace covmap::recognition {
+namespace {
+
+// Clipped maps: frame arcs are no bisectors; the sites of faces cut by the frame still come from
+// interior nodes and propagation. Sites whose regions meet the window are recovered; the MWVD
+// check clips the recomputed diagram to the same frame.
+TEST(RoundTrip, ClippedDiagramsAreRecovered) {
+  std::mt19937_64 rng(31);
+  const std::vector<voronoi::Point> window = {{0.2, 0.2}, {0.8, 0.2}, {0.8, 0.8}, {0.2, 0.8}};
+  int recognised = 0;
+  for (int trial = 0; trial < 100; ++trial) {
+    const auto sites = random_sites(rng, 40, trial % 3 == 0);
+    const Diagram d = voronoi::clip_diagram(voronoi::build_diagram(sites), window);
+    const Reconstruction r = recognize(d);
+    if (!r.supported) continue;
+    ASSERT_TRUE(r.bisector_graph) << "trial " << trial << ": " << r.reason;
+    EXPECT_EQ(r.voronoi, "yes") << "trial " << trial << ": "
+                                << (r.voronoi_differences.empty() ? "" : r.voronoi_differences[0].message);
+    // Every reconstructed site is one of the originals (same place, same relative weight).
+    for (const auto& t : r.sites) {
+      double best = INFINITY;
+      const Site* match = nullptr;
+      for (const Site& s : sites) {
+        const double dd = std::hypot(s.x - t.x, s.y - t.y);
+        if (dd < best) best = dd, match = &s;
+      }
+      ASSERT_LT(best, 1e-9) << "trial " << trial;
+      ASSERT_NE(match, nullptr);
+    }
+    // Weight ratios between reconstructed sites equal the originals'.
+    for (std::size_t a = 0; a + 1 < r.sites.size(); ++a) {
+      auto orig = [&](const Site& t) -> double {
+        for (const Site& s : sites)
+          if (std::hypot(s.x - t.x, s.y - t.y) < 1e-9) return s.weight;
+        return NAN;
+      };
+      const double ratio_rec = r.sites[a].weight / r.sites[a + 1].weight;
+      const double ratio_orig = orig(r.sites[a]) / orig(r.sites[a + 1]);
+      EXPECT_NEAR(ratio_rec, ratio_orig, 1e-9 * ratio_orig) << "trial " << trial;
+    }
+    ++recognised;
+  }
+  EXPECT_GT(recognised, 80);
+}
+
+}  // namespace
+}  // namespace covmap::recognition
