@@ -163,75 +163,170 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
   std::vector<char> outside(faces, 0);
   for (std::size_t a = 0; a < g.arcs.size(); ++a)
     if (g.arcs[a].frame && face_of_half[2 * a + 1] != kNone) outside[face_of_half[2 * a + 1]] = 1;
-  auto faces_of_arc = [&](int a) {
-    return std::pair<int, int>{face_of_half[2 * a], face_of_half[2 * a + 1]};
-  };
 
-  // Lemma 5: the solution circle of face f at a degree-3 node: the fixed set of the three
-  // inversions that carry f's site around the node and back.
-  auto solution_circle = [&](int f, int v) -> std::optional<GeneralizedCircle> {
-    const auto& at = arcs_at[v];
-    if (at.size() != 3) return std::nullopt;
-    int a1 = -1;
-    for (int a : at) {
-      auto [l, r] = faces_of_arc(a);
-      if (l == f || r == f) {
-        a1 = a;
-        break;
+  // The half-arc following each half-arc in its face's boundary cycle.
+  std::vector<int> next_half(2 * g.arcs.size(), kNone);
+  for (const auto& face : g.faces)
+    for (const auto& cycle : face.boundaries)
+      for (std::size_t k = 0; k < cycle.size(); ++k)
+        next_half[half_id(cycle[k])] = half_id(cycle[(k + 1) % cycle.size()]);
+
+  // Lemmas 5 and §4.4: going once around node v from face f, across every arc at v and back, maps
+  // f's site to itself. The composition of the inversions is an anti-Möbius map for an odd number
+  // of arcs (its fixed set: a circle — the solution circle — or at most two points) and a Möbius
+  // map for an even number (at most two fixed points, or no constraint when it is the identity).
+  struct Constraint {
+    bool any = false;            // no constraint
+    bool is_circle = false;
+    GeneralizedCircle circle;
+    std::vector<Complex> points;
+  };
+  auto node_constraint = [&](int f, int h_out) -> std::optional<Constraint> {
+    Mobius h_total;
+    int h = h_out, face = f, steps = 0;
+    do {
+      if (h == kNone || g.arcs[h / 2].frame) return std::nullopt;
+      h_total = Mobius::inversion(curve_of(g.arcs[h / 2])).after(h_total);
+      const int twin = h ^ 1;
+      face = face_of_half[twin];
+      h = next_half[twin];
+      if (++steps > 64) return std::nullopt;
+    } while (face != f || h != h_out);
+    const double norm = std::max({std::abs(h_total.a()), std::abs(h_total.b()),
+                                  std::abs(h_total.c()), std::abs(h_total.d())});
+    const double mt = options.matrix_tolerance * norm;
+    Constraint c;
+    if (h_total.conjugated()) {
+      const auto forms = h_total.fixed_set_forms();
+      auto size = [](const GeneralizedCircle& x) { return std::abs(x.A) + std::abs(x.B) + std::abs(x.C); };
+      const double n0 = size(forms[0]), n1 = size(forms[1]);
+      const GeneralizedCircle& big = n0 >= n1 ? forms[0] : forms[1];
+      const GeneralizedCircle& small = n0 >= n1 ? forms[1] : forms[0];
+      const double ratio = std::min(n0, n1) / std::max(n0, n1);
+      // Proportional forms (or a vanishing one) describe one circle.
+      const double lambda = (small.A * big.A + std::real(std::conj(small.B) * big.B) + small.C * big.C) /
+                            (big.A * big.A + std::norm(big.B) + big.C * big.C);
+      const double residual = std::abs(small.A - lambda * big.A) + std::abs(small.B - lambda * big.B) +
+                              std::abs(small.C - lambda * big.C);
+      if (ratio < options.matrix_tolerance || residual <= options.matrix_tolerance * std::max(n0, n1)) {
+        c.is_circle = true;
+        c.circle = big;
+      } else {
+        c.points = intersect(forms[0], forms[1]);
+      }
+    } else {
+      const Complex a = h_total.a(), b = h_total.b(), cc = h_total.c(), d = h_total.d();
+      if (std::abs(b) <= mt && std::abs(cc) <= mt && std::abs(a - d) <= mt) {
+        c.any = true;  // the identity: this node constrains nothing
+      } else if (std::abs(cc) <= mt) {
+        if (std::abs(d - a) > mt) c.points.push_back(b / (d - a));
+      } else {
+        // c z² + (d - a) z - b = 0
+        const Complex disc = std::sqrt((d - a) * (d - a) + 4.0 * cc * b);
+        c.points.push_back((-(d - a) + disc) / (2.0 * cc));
+        c.points.push_back((-(d - a) - disc) / (2.0 * cc));
       }
     }
-    if (a1 < 0) return std::nullopt;
-    auto [l1, r1] = faces_of_arc(a1);
-    const int gface = l1 == f ? r1 : l1;
-    int a2 = -1, a3 = -1;
-    for (int a : at) {
-      if (a == a1) continue;
-      auto [l, r] = faces_of_arc(a);
-      if ((l == gface || r == gface) && l != f && r != f) a2 = a;
-      else a3 = a;
-    }
-    if (a2 < 0 || a3 < 0) return std::nullopt;
-    const Mobius h = Mobius::inversion(curve_of(g.arcs[a3]))
-                         .after(Mobius::inversion(curve_of(g.arcs[a2])))
-                         .after(Mobius::inversion(curve_of(g.arcs[a1])));
-    const auto forms = h.fixed_set_forms();
-    auto size = [](const GeneralizedCircle& c) { return std::abs(c.A) + std::abs(c.B) + std::abs(c.C); };
-    return size(forms[0]) >= size(forms[1]) ? forms[0] : forms[1];
+    return c;
   };
 
-  // The face with the most distinct degree-3 boundary nodes.
+  // The face whose nodes give the most constraints; each node counted once per face.
   int start = -1;
-  std::vector<int> start_nodes;
+  std::vector<Constraint> constraints;
   for (int f = 0; f < faces; ++f) {
     if (outside[f]) continue;
-    std::vector<int> nodes;
+    std::vector<Constraint> found;
+    std::vector<int> seen_nodes;
     for (const auto& cycle : g.faces[f].boundaries)
-      for (const HalfArc& h : cycle) {
-        const Arc& a = g.arcs[h.arc];
-        const int v = h.forward ? a.to : a.from;
-        if (v != kNone && arcs_at[v].size() == 3) nodes.push_back(v);
+      for (const HalfArc& hh : cycle) {
+        const Arc& arc = g.arcs[hh.arc];
+        const int v = hh.forward ? arc.from : arc.to;  // hh starts at v
+        if (v == kNone || on_frame[v] || arc.frame) continue;
+        if (std::find(seen_nodes.begin(), seen_nodes.end(), v) != seen_nodes.end()) continue;
+        seen_nodes.push_back(v);
+        if (auto c = node_constraint(f, half_id(hh)); c && !c->any) found.push_back(*c);
       }
-    std::sort(nodes.begin(), nodes.end());
-    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-    if (nodes.size() > start_nodes.size()) start = f, start_nodes = nodes;
+    if (found.size() > constraints.size()) start = f, constraints = std::move(found);
+    if (constraints.size() >= 6) break;  // plenty: a bounded amount of work for the start face
   }
-  if (start < 0 || start_nodes.size() < 3) {
+  if (start < 0 || constraints.empty()) {
     out.supported = false;
-    out.reason = "no face has three nodes of degree three (paper §4.2, k ≤ 2, and §4.4) — not handled yet";
+    out.reason = "no face has a node that constrains its site (graphs without nodes, paper §3) — not handled yet";
     return out;
   }
-  std::vector<GeneralizedCircle> circles;
-  for (int v : start_nodes)
-    if (auto c = solution_circle(start, v)) circles.push_back(*c);
-  // Candidates: the intersection of two distinct solution circles, kept if on all the others.
+  auto satisfies = [&](Complex p) {
+    for (const Constraint& c : constraints) {
+      if (c.is_circle) {
+        if (distance_to(c.circle, p) > tol) return false;
+      } else {
+        bool near = false;
+        for (const Complex& q : c.points) near = near || std::abs(q - p) <= tol;
+        if (!near) return false;
+      }
+    }
+    return true;
+  };
   std::vector<Complex> candidates;
-  for (std::size_t i = 0; i < circles.size() && candidates.empty(); ++i)
-    for (std::size_t j = i + 1; j < circles.size() && candidates.empty(); ++j) {
-      const auto pts = intersect(circles[i], circles[j]);
-      for (const Complex& p : pts) {
-        bool on_all = true;
-        for (const auto& c : circles) on_all = on_all && distance_to(c, p) <= tol;
-        if (on_all) candidates.push_back(p);
+  bool family = false;
+  for (const Constraint& c : constraints)
+    for (const Complex& p : c.points)
+      if (satisfies(p) && std::none_of(candidates.begin(), candidates.end(),
+                                       [&](Complex q) { return std::abs(q - p) <= tol; }))
+        candidates.push_back(p);
+  if (candidates.empty()) {
+    std::vector<GeneralizedCircle> circles;
+    for (const Constraint& c : constraints)
+      if (c.is_circle) circles.push_back(c.circle);
+    bool distinct_pair = false;
+    for (std::size_t i = 0; i < circles.size(); ++i)
+      for (std::size_t j = i + 1; j < circles.size(); ++j) {
+        const auto pts = intersect(circles[i], circles[j]);
+        if (pts.empty()) continue;
+        distinct_pair = true;
+        for (const Complex& p : pts)
+          if (satisfies(p) && std::none_of(candidates.begin(), candidates.end(),
+                                           [&](Complex q) { return std::abs(q - p) <= tol; }))
+            candidates.push_back(p);
+      }
+    if (!distinct_pair && !circles.empty()) {
+      // All solution circles coincide (a face with at most two nodes, paper §4.2 k = 2): a
+      // one-parameter family. Points around the circle are tried in turn; propagation decides.
+      family = true;
+      const GeneralizedCircle& c = circles.front();
+      if (c.is_line()) {
+        const Complex p0 = -c.C * c.B / (2.0 * std::norm(c.B));
+        const Complex dir = Complex(0, 1) * c.B / std::abs(c.B);
+        for (int k = -12; k <= 12; ++k) candidates.push_back(p0 + (0.25 * k * scale) * dir);
+      } else if (auto centre = c.centre(); centre && c.radius()) {
+        for (int k = 0; k < 24; ++k) candidates.push_back(*centre + std::polar(*c.radius(), (k + 0.5) * 0.2617993877991494));
+      }
+    }
+  }
+  // Each candidate is polished by Gauss-Newton on its distances to all solution circles: an
+  // intersection of two circles alone can be ill-conditioned when they meet at a shallow angle.
+  if (!family)
+    for (Complex& p : candidates) {
+      for (int it = 0; it < 4; ++it) {
+        double jtj[3] = {0, 0, 0}, jtr[2] = {0, 0};
+        for (const Constraint& c : constraints) {
+          if (!c.is_circle || c.circle.is_line()) continue;
+          const auto centre = c.circle.centre();
+          const auto radius = c.circle.radius();
+          if (!centre || !radius) continue;
+          const Complex d = p - *centre;
+          const double len = std::abs(d);
+          if (len == 0) continue;
+          const double res = len - *radius;
+          const double gx = d.real() / len, gy = d.imag() / len;
+          jtj[0] += gx * gx, jtj[1] += gx * gy, jtj[2] += gy * gy;
+          jtr[0] += gx * res, jtr[1] += gy * res;
+        }
+        const double det = jtj[0] * jtj[2] - jtj[1] * jtj[1];
+        if (!(std::abs(det) > 0)) break;
+        const double dx = (jtj[2] * jtr[0] - jtj[1] * jtr[1]) / det;
+        const double dy = (jtj[0] * jtr[1] - jtj[1] * jtr[0]) / det;
+        if (!std::isfinite(dx) || !std::isfinite(dy) || std::hypot(dx, dy) > tol) break;
+        p -= Complex(dx, dy);
       }
     }
   if (candidates.empty()) {
@@ -239,7 +334,7 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
     RecognitionFailure fail;
     fail.face = start;
     std::ostringstream msg;
-    msg << "the solution circles of face " << start << " (one per node, " << circles.size()
+    msg << "the solution sets of face " << start << " (" << constraints.size()
         << " nodes) have no common point";
     fail.message = msg.str();
     out.reason = fail.message;
@@ -337,11 +432,14 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
     return out;
   }
   out.bisector_graph = true;
+  out.unique = !family;
   out.sites = solutions.front().sites;
   out.face_site = solutions.front().face_site;
-  if (solutions.size() > 1)
+  if (solutions.size() > 1 && !family)
     for (const auto& s : solutions) out.candidates.push_back(s.sites);
-  out.reason = "every arc separates mirror-image sites";
+  out.reason = family ? "every arc separates mirror-image sites; the sites are not unique (a "
+                        "one-parameter family along a solution circle): this is one of them"
+                      : "every arc separates mirror-image sites";
   if (options.voronoi_check) {
     // The sites must be distinct for a Voronoi diagram; coinciding sites already answer "no".
     try {

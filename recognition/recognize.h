@@ -7,7 +7,9 @@
 // most two candidates); each candidate is propagated to every face by inversion across the arcs
 // (Lemma 1), breadth first, and every arc is verified: the sites it separates must be each
 // other's inversion in its circle (mirror image in its line) with the lighter site on the disk
-// side. The answer names the arc and the distance when it fails. Not yet handled here (reported as
+// side. Nodes of any degree constrain the site of a face by the fixed set of the inversions around
+// them (§4.4: a circle, at most two points, or nothing); when all constraints are one circle (faces
+// with at most two nodes, §4.2) the sites form a family and one member is returned, marked so. The answer names the arc and the distance when it fails. Not yet handled here (reported as
 // such, never guessed): graphs without nodes, nodes of degree > 3, frame arcs of clipped maps.
 #pragma once
 
@@ -28,6 +30,10 @@ struct RecognitionOptions {
   // Recompute the MWVD of the reconstructed sites with the engine and compare it with the input
   // (paper 5, §5): a bisector graph need not be the Voronoi diagram (e.g. a missing orphan face).
   bool voronoi_check = true;
+  // Relative to the largest entry of a composed 2×2 Möbius matrix: entries smaller than this are
+  // zero, when deciding whether going around a node is the identity (no constraint), has one or
+  // two fixed points, or fixes a whole circle.
+  double matrix_tolerance = 1e-9;
 };
 
 struct RecognitionFailure {
@@ -46,6 +52,7 @@ struct Reconstruction {
   std::vector<voronoi::Site> sites;  // weights normalised so that the largest is 1
   std::vector<int> face_site;        // per traced face of the input: index into sites
   std::vector<std::vector<voronoi::Site>> candidates;  // when two solutions survive
+  bool unique = true;  // false: the graph fixes the sites only up to a one-parameter family
   std::optional<RecognitionFailure> failure;
   // "yes" / "no" / "unknown" (check not run, or not a bisector graph), and where the recomputed
   // diagram differs from the input when "no".
