@@ -5,7 +5,10 @@
 // matched end nodes and their curve (circle centre and radius, or line, within the tolerance);
 // full circles by their curve alone. Every unmatched node or arc of either graph is reported with
 // its position; an unmatched arc of `b` that names sites also names the faces (regions of those
-// sites) that `a` lacks there — e.g. an orphan face missing from a coverage map.
+// sites) that `a` lacks there — e.g. an orphan face missing from a coverage map. Unmatched nodes
+// and arcs lying entirely on the other graph (within the tolerance) are not differences: exactly
+// degenerate inputs (tangencies, nodes of degree four) can be redrawn with another topology after
+// any rounding of their sites.
 #pragma once
 
 #include <string>
@@ -16,9 +19,16 @@
 namespace covmap::recognition {
 
 struct CompareOptions {
-  // Relative to the diameter of the nodes of both graphs: positions and curve parameters closer
-  // than this are the same.
+  // Relative to the extent (see horizon): positions and curve parameters closer than this are
+  // the same.
   double relative_tolerance = 1e-7;
+  // The horizon, relative to the extent (the first graph's nodes and both graphs' sites; the
+  // first graph is the reference, e.g. the input of recognition): nodes farther than this
+  // from their centre count as points at infinity, and arcs entirely beyond it are not compared.
+  // Out there, parallel bisectors of a degenerate input meet after any rounding of the sites
+  // (three collinear equal-weight sites moved by 1e-15 give a node 1e15 away), which no
+  // double-precision graph can decide.
+  double horizon = 1e6;
 };
 
 enum class DifferenceKind { NodeOnlyInA, NodeOnlyInB, ArcOnlyInA, ArcOnlyInB };

@@ -405,6 +405,18 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
       last_failure = failure;
       continue;
     }
+    // Weights equal up to rounding are made equal (see RecognitionOptions::weight_snap).
+    {
+      std::vector<int> order;
+      for (int f = 0; f < faces; ++f)
+        if (site[f].assigned) order.push_back(f);
+      std::sort(order.begin(), order.end(), [&](int x, int y) { return site[x].weight < site[y].weight; });
+      for (std::size_t k = 1; k < order.size(); ++k) {
+        const double prev = site[order[k - 1]].weight;
+        double& w = site[order[k]].weight;
+        if (w - prev <= options.weight_snap * w) w = prev;
+      }
+    }
     // Faces sharing one site (orphans) become one site; weights normalised to a largest of 1.
     Reconstruction r;
     double wmax = 0;

@@ -34,6 +34,10 @@ struct RecognitionOptions {
   // zero, when deciding whether going around a node is the identity (no constraint), has one or
   // two fixed points, or fixes a whole circle.
   double matrix_tolerance = 1e-9;
+  // Reconstructed weights that agree to this relative amount are made equal: weights reach faces
+  // through chains of inversions and pick up rounding there, while equal weights are exactly what
+  // turns bisectors into lines (a weight ratio of 1 + 1e-16 is a circle of radius 1e16).
+  double weight_snap = 1e-12;
 };
 
 struct RecognitionFailure {

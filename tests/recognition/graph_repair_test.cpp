@@ -35,7 +35,7 @@ TEST(GraphRepair, SplitArcsAreJoinedBack) {
     ++splits;
   }
   ASSERT_EQ(splits, 10);
-  EXPECT_FALSE(compare_graphs(d, split).equal());
+  EXPECT_EQ(split.nodes.size(), d.nodes.size() + 10);  // geometrically the same graph, 10 extra nodes
   const auto repairs = merge_degree_two_nodes(split, 1e-9);
   EXPECT_EQ(repairs.size(), 10u);
   const Comparison c = compare_graphs(d, split);

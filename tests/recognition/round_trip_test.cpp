@@ -153,3 +153,62 @@ TEST(RoundTrip, ClippedDiagramsAreRecovered) {
 
 }  // namespace
 }  // namespace covmap::recognition
+
+#include "../voronoi/site_families.h"
+
+namespace covmap::recognition {
+namespace {
+
+// Degenerate inputs: integer grids with two weights give nodes of degree four and more, shared power
+// lines and tangencies; the sites must still come back exactly.
+TEST(RoundTrip, GridSitesWithHighDegreeNodesAreRecovered) {
+  int recognised = 0, high_degree = 0, voronoi_yes = 0;
+  for (int seed = 1; seed <= 60; ++seed) {
+    const auto sites = voronoi::testing::make_sites(voronoi::testing::Family::Grid, 25, seed);
+    const Diagram d = voronoi::build_diagram(sites);
+    std::vector<int> degree(d.nodes.size(), 0);
+    for (const auto& a : d.arcs)
+      for (int v : {a.from, a.to})
+        if (v != voronoi::kNone) ++degree[v];
+    if (std::any_of(degree.begin(), degree.end(), [](int k) { return k > 3; })) ++high_degree;
+    const Reconstruction r = recognize(d);
+    if (!r.supported) continue;
+    ASSERT_TRUE(r.bisector_graph) << "seed " << seed << ": " << r.reason;
+    if (!r.unique) continue;
+    expect_same_sites(sites, r, 1e-9);
+    voronoi_yes += r.voronoi == "yes";
+    ++recognised;
+  }
+  EXPECT_GT(recognised, 40);
+  // Known limit (docs/RECOGNITION.md): a few exactly degenerate grids are redrawn from the
+  // reconstructed sites (exact only to ~1e-15) with a circle looping through a tangency node that
+  // the comparison does not yet identify with the input's. At most 4 of the 60 seeds today.
+  EXPECT_GE(voronoi_yes, recognised - 4);
+  EXPECT_GT(high_degree, 10) << "the family should produce nodes of degree > 3";
+}
+
+// Three sites: every face has exactly two nodes. The two solution circles of a face still meet in
+// at most two points, so the sites are determined (as one of at most two candidates).
+TEST(RoundTrip, FacesWithTwoNodesAreRecovered) {
+  const std::vector<Site> sites = {{"a", 0, 0, 1}, {"b", 1, 0, 1.5}, {"c", 0.5, 0.8, 1.2}};
+  const Diagram d = voronoi::build_diagram(sites);
+  const Reconstruction r = recognize(d);
+  ASSERT_TRUE(r.supported) << r.reason;
+  ASSERT_TRUE(r.bisector_graph) << r.reason;
+  std::vector<std::vector<Site>> solutions = r.candidates;
+  if (solutions.empty()) solutions.push_back(r.sites);
+  bool found = false;
+  for (const auto& sol : solutions) {
+    bool all = sol.size() == sites.size();
+    for (const Site& s : sites) {
+      bool near = false;
+      for (const Site& t : sol) near = near || std::hypot(s.x - t.x, s.y - t.y) < 1e-9;
+      all = all && near;
+    }
+    found = found || all;
+  }
+  EXPECT_TRUE(found);
+}
+
+}  // namespace
+}  // namespace covmap::recognition
