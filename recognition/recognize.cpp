@@ -4,6 +4,7 @@
 #include <cmath>
 #include <deque>
 #include <sstream>
+#include <unordered_map>
 
 #include "recognition/bisector_relation.h"
 #include "recognition/mobius.h"
@@ -422,12 +423,23 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
     double wmax = 0;
     for (const FaceSite& s : site) wmax = std::max(wmax, s.weight);
     r.face_site.assign(faces, kNone);
+    // Sites of several faces (orphans) coincide: found through a hash of tol-sized cells.
+    std::unordered_map<long long, std::vector<int>> cells;
+    auto cell_key = [&](double x, double y) {
+      return static_cast<long long>(std::floor(x / tol)) * 1000003LL ^ static_cast<long long>(std::floor(y / tol));
+    };
     for (int f = 0; f < faces; ++f) {
       if (!site[f].assigned) continue;
       int found = kNone;
-      for (std::size_t k = 0; k < r.sites.size(); ++k)
-        if (std::hypot(r.sites[k].x - site[f].position.real(), r.sites[k].y - site[f].position.imag()) <= tol)
-          found = static_cast<int>(k);
+      const double px = site[f].position.real(), py = site[f].position.imag();
+      for (int dx = -1; dx <= 1 && found == kNone; ++dx)
+        for (int dy = -1; dy <= 1 && found == kNone; ++dy) {
+          auto it = cells.find(cell_key(px + dx * tol, py + dy * tol));
+          if (it == cells.end()) continue;
+          for (int k : it->second)
+            if (std::hypot(r.sites[k].x - px, r.sites[k].y - py) <= tol) found = k;
+        }
+      if (found == kNone) cells[cell_key(px, py)].push_back(static_cast<int>(r.sites.size()));
       if (found == kNone) {
         found = static_cast<int>(r.sites.size());
         r.sites.push_back({"s" + std::to_string(found), site[f].position.real(),

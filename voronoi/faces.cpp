@@ -1,6 +1,7 @@
 #include "voronoi/faces.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <span>
@@ -91,12 +92,16 @@ double ccw_distance(double a, double b) {
 
 }  // namespace
 
-bool cycle_contains(const Diagram& d, const std::vector<HalfArc>& cycle, Point p) {
+namespace {
+
+// Ray casting along kRayAngle; `path_of(arc)` gives each arc's path (cached by trace_faces).
+template <class PathOf>
+bool contains_with(const Diagram& d, const std::vector<HalfArc>& cycle, Point p, PathOf&& path_of) {
   const Point dir{std::cos(kRayAngle), std::sin(kRayAngle)};
   int crossings = 0;
   for (std::size_t k = 0; k < cycle.size(); ++k) {
     const HalfArc h = cycle[k];
-    const ArcPathView path = arc_path(d.arcs[h.arc], d.nodes);
+    const ArcPathView& path = path_of(h.arc);
     if (path.circle) {
       // p + t dir on the circle, t > 0, at a parameter inside the arc.
       const double fx = p.x - path.cx, fy = p.y - path.cy;
@@ -135,6 +140,16 @@ bool cycle_contains(const Diagram& d, const std::vector<HalfArc>& cycle, Point p
     }
   }
   return crossings % 2 == 1;
+}
+
+}  // namespace
+
+bool cycle_contains(const Diagram& d, const std::vector<HalfArc>& cycle, Point p) {
+  ArcPathView scratch;
+  return contains_with(d, cycle, p, [&](int arc) -> const ArcPathView& {
+    scratch = arc_path(d.arcs[arc], d.nodes);
+    return scratch;
+  });
 }
 
 void trace_faces(Diagram& d, FaceLabels labels) {
@@ -295,6 +310,84 @@ void trace_faces(Diagram& d, FaceLabels labels) {
     for (const HalfArc& h : d.faces[f].boundaries.front())
       outer_face_of_half[half_id(h.arc, h.forward)] = static_cast<int>(f);
   std::map<int, int> implicit_face;  // site -> its unbounded face without outer cycle
+  // Candidate outer cycles for a point, through a uniform grid over their bounding boxes. Cycles
+  // through infinity are always
+  // candidates. Without it, tracing by geometry (one label for all faces) would test every hole
+  // against every face.
+  struct BoxGrid {
+    double x0 = 0, y0 = 0, cell = 1;
+    int nx = 1, ny = 1;
+    std::vector<std::vector<int>> cells;
+    std::vector<int> always;
+  } grid;
+  {
+    std::vector<std::array<double, 4>> boxes(d.faces.size());
+    double gx0 = INFINITY, gy0 = INFINITY, gx1 = -INFINITY, gy1 = -INFINITY;
+    for (std::size_t f = 0; f < d.faces.size(); ++f) {
+      std::array<double, 4> b = {INFINITY, INFINITY, -INFINITY, -INFINITY};
+      for (const HalfArc& h : d.faces[f].boundaries.front()) {
+        const ArcPathView& p = paths[h.arc];
+        if (p.circle) {
+          // The arc's own box: its ends and the circle's extreme points within its sweep.
+          auto grow = [&](Point q) {
+            b = {std::min(b[0], q.x), std::min(b[1], q.y), std::max(b[2], q.x), std::max(b[3], q.y)};
+          };
+          grow(p.at(p.s0));
+          grow(p.at(p.s1));
+          for (int k = 0; k < 4; ++k) {
+            double t = p.sense * (k * 0.5 * kPi - p.start_angle);
+            t = std::fmod(t, kTwoPi);
+            if (t < 0) t += kTwoPi;
+            if (t >= p.s0 && t <= p.s1) grow(p.at(t));
+          }
+        } else {
+          for (double t : {p.s0, p.s1}) {
+            const Point q = std::isfinite(t) ? p.at(t) : Point{INFINITY, INFINITY};
+            if (!std::isfinite(q.x)) b = {-INFINITY, -INFINITY, INFINITY, INFINITY};
+            else b = {std::min(b[0], q.x), std::min(b[1], q.y), std::max(b[2], q.x), std::max(b[3], q.y)};
+          }
+        }
+      }
+      boxes[f] = b;
+      if (std::isfinite(b[0]) && std::isfinite(b[2])) {
+        gx0 = std::min(gx0, b[0]), gy0 = std::min(gy0, b[1]);
+        gx1 = std::max(gx1, b[2]), gy1 = std::max(gy1, b[3]);
+      }
+    }
+    if (std::isfinite(gx0)) {
+      const double extent = std::max(gx1 - gx0, gy1 - gy0);
+      const int side = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(d.faces.size()))), 1, 2048);
+      grid.x0 = gx0, grid.y0 = gy0, grid.cell = std::max(extent / side, 1e-300);
+      grid.nx = std::clamp(static_cast<int>((gx1 - gx0) / grid.cell) + 1, 1, 4096);
+      grid.ny = std::clamp(static_cast<int>((gy1 - gy0) / grid.cell) + 1, 1, 4096);
+      grid.cells.resize(static_cast<std::size_t>(grid.nx) * grid.ny);
+    }
+    for (std::size_t f = 0; f < d.faces.size(); ++f) {
+      const auto& b = boxes[f];
+      if (!std::isfinite(b[0]) || !std::isfinite(b[2]) || grid.cells.empty()) {
+        grid.always.push_back(static_cast<int>(f));
+        continue;
+      }
+      const int i0 = std::clamp(static_cast<int>((b[0] - grid.x0) / grid.cell), 0, grid.nx - 1);
+      const int i1 = std::clamp(static_cast<int>((b[2] - grid.x0) / grid.cell), 0, grid.nx - 1);
+      const int j0 = std::clamp(static_cast<int>((b[1] - grid.y0) / grid.cell), 0, grid.ny - 1);
+      const int j1 = std::clamp(static_cast<int>((b[3] - grid.y0) / grid.cell), 0, grid.ny - 1);
+      for (int i = i0; i <= i1; ++i)
+        for (int j = j0; j <= j1; ++j) grid.cells[static_cast<std::size_t>(i) * grid.ny + j].push_back(static_cast<int>(f));
+    }
+  }
+  auto candidate_faces = [&](Point p) {
+    std::vector<int> out = grid.always;
+    if (!grid.cells.empty()) {
+      const int i = static_cast<int>(std::floor((p.x - grid.x0) / grid.cell));
+      const int j = static_cast<int>(std::floor((p.y - grid.y0) / grid.cell));
+      if (i >= 0 && i < grid.nx && j >= 0 && j < grid.ny) {
+        const auto& c = grid.cells[static_cast<std::size_t>(i) * grid.ny + j];
+        out.insert(out.end(), c.begin(), c.end());
+      }
+    }
+    return out;
+  };
   for (const Cycle* hole : holes) {
     const HalfArc first = hole->arcs.front();
     const ArcPathView path = arc_path(d.arcs[first.arc], d.nodes);
@@ -306,11 +399,13 @@ void trace_faces(Diagram& d, FaceLabels labels) {
     int target = -1;
     std::vector<int> across;
     for (const HalfArc& h : hole->arcs) across.push_back(outer_face_of_half[half_id(h.arc, !h.forward)]);
-    for (int f : faces_of_site[hole->site]) {
+    for (int f : candidate_faces(p)) {
+      if (d.faces[f].site != (by_sites ? hole->site : kNone)) continue;
       if (f >= static_cast<int>(outer_area.size())) continue;  // hole-only faces have no outer
       if (std::find(across.begin(), across.end(), f) != across.end()) continue;
       // Innermost containing outer cycle (smallest area) wins.
-      if (cycle_contains(d, d.faces[f].boundaries.front(), p) &&
+      if (contains_with(d, d.faces[f].boundaries.front(), p,
+                        [&](int arc) -> const ArcPathView& { return paths[arc]; }) &&
           (target < 0 || outer_area[f] < outer_area[target]))
         target = f;
     }
