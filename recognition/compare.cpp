@@ -5,6 +5,7 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "recognition/extent.h"
 #include "voronoi/arc_path.h"
 
 namespace covmap::recognition {
@@ -58,15 +59,16 @@ double distance_to_arc(const voronoi::ArcPathView& p, voronoi::Point q) {
   return std::hypot(q.x - on.x, q.y - on.y);
 }
 
-// Whether every given point lies within tol of some arc of d (brute force over d's arcs).
-bool points_on_graph(const Diagram& d, const std::vector<voronoi::Point>& points, double tol) {
+// Whether every given point lies within tol(point) of some arc of d (brute force over d's arcs).
+template <class Tol>
+bool points_on_graph(const Diagram& d, const std::vector<voronoi::Point>& points, Tol&& tol) {
   std::vector<voronoi::ArcPathView> paths;
   paths.reserve(d.arcs.size());
   for (const Arc& a : d.arcs) paths.push_back(voronoi::arc_path(a, d.nodes));
   for (const voronoi::Point& q : points) {
     bool near = false;
     for (const auto& p : paths)
-      if (distance_to_arc(p, q) <= tol) {
+      if (distance_to_arc(p, q) <= tol(q)) {
         near = true;
         break;
       }
@@ -125,24 +127,19 @@ std::string Comparison::brief() const {
 
 Comparison compare_graphs(const Diagram& a, const Diagram& b, const CompareOptions& options) {
   Comparison out;
-  double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;
-  // The extent: the first graph's nodes and both graphs' sites (not the second graph's nodes, which
-  // may include the far artefacts the horizon is there to ignore).
-  for (const auto& n : a.nodes) {
-    xmin = std::min(xmin, n.x), xmax = std::max(xmax, n.x);
-    ymin = std::min(ymin, n.y), ymax = std::max(ymax, n.y);
-  }
-  if (a.nodes.empty())
-    for (const auto& n : b.nodes) {
-      xmin = std::min(xmin, n.x), xmax = std::max(xmax, n.x);
-      ymin = std::min(ymin, n.y), ymax = std::max(ymax, n.y);
-    }
+  // The extent: the central part of the first graph's nodes (recognition/extent.h) and both
+  // graphs' sites (not the second graph's nodes, which may hold the far artefacts the horizon is
+  // there to ignore).
+  const Extent e = robust_extent(a.nodes.empty() ? b.nodes : a.nodes);
+  double xmin = e.xmin, xmax = e.xmax, ymin = e.ymin, ymax = e.ymax;
+  if (a.nodes.empty() && b.nodes.empty()) xmin = ymin = INFINITY, xmax = ymax = -INFINITY;
   for (const Diagram* d : {&a, &b})
     for (const auto& s : d->sites) {
       xmin = std::min(xmin, s.x), xmax = std::max(xmax, s.x);
       ymin = std::min(ymin, s.y), ymax = std::max(ymax, s.y);
     }
-  const double scale = std::isfinite(xmax - xmin) ? std::max(std::hypot(xmax - xmin, ymax - ymin), 1e-300) : 1.0;
+  const double scale =
+      std::isfinite(xmax - xmin) ? std::max(std::hypot(xmax - xmin, ymax - ymin), 1e-300) : 1.0;
   const double tol = options.relative_tolerance * scale;
   const voronoi::Point centre{0.5 * (xmin + xmax), 0.5 * (ymin + ymax)};
   const double horizon = options.horizon * scale;
@@ -215,6 +212,36 @@ Comparison compare_graphs(const Diagram& a, const Diagram& b, const CompareOptio
       ++out.nodes_matched;
     }
   }
+  // Far from the sites, positions of nodes and circles are sensitive to the sites' rounding in
+  // proportion to their distance (nearly tangent bisectors): unmatched nodes get a second chance
+  // with the tolerance scaled by their distance from the centre, in units of the extent.
+  auto scaled_tol = [&](double x, double y) {
+    return tol * std::max(1.0, std::hypot(x - centre.x, y - centre.y) / scale);
+  };
+  {
+    std::vector<int> ua, ub;
+    for (std::size_t i = 0; i < a.nodes.size(); ++i)
+      if (ca[i] == static_cast<int>(i) && a_to_b[i] == kNone && !far_node(a, static_cast<int>(i)))
+        ua.push_back(static_cast<int>(i));
+    for (std::size_t j = 0; j < b.nodes.size(); ++j)
+      if (cb[j] == static_cast<int>(j) && b_to_a[j] == kNone && !far_node(b, static_cast<int>(j)))
+        ub.push_back(static_cast<int>(j));
+    if (ua.size() * ub.size() <= 4000000)
+      for (int i : ua) {
+        int best = kNone;
+        double best_d = scaled_tol(a.nodes[i].x, a.nodes[i].y);
+        for (int j : ub) {
+          if (b_to_a[j] != kNone) continue;
+          const double dd = std::hypot(a.nodes[i].x - b.nodes[j].x, a.nodes[i].y - b.nodes[j].y);
+          if (dd <= best_d) best = j, best_d = dd;
+        }
+        if (best != kNone) {
+          a_to_b[i] = best;
+          b_to_a[best] = i;
+          ++out.nodes_matched;
+        }
+      }
+  }
   for (std::size_t i = 0; i < a.nodes.size(); ++i)
     if (ca[i] == static_cast<int>(i) && a_to_b[i] == kNone && !far_node(a, static_cast<int>(i))) {
       std::ostringstream m;
@@ -234,6 +261,12 @@ Comparison compare_graphs(const Diagram& a, const Diagram& b, const CompareOptio
     return (static_cast<long long>(u) + 2) * 4000000007LL + (v + 2);
   };
   std::unordered_map<long long, std::vector<int>> b_arcs;
+  // A curve's own numbers are known in proportion to their size (see scaled_tol).
+  auto curve_tol = [&](const Arc& arc) {
+    if (const auto* c = std::get_if<voronoi::Circle>(&arc.curve))
+      return tol * std::max(1.0, (std::hypot(c->cx - centre.x, c->cy - centre.y) + c->r) / scale);
+    return tol;
+  };
   // Arc ends in b's node numbering: cluster representatives, far nodes as infinity.
   auto b_end = [&](int v) { return far_node(b, v) ? kNone : cb[v]; };
   for (std::size_t j = 0; j < b.arcs.size(); ++j)
@@ -250,7 +283,7 @@ Comparison compare_graphs(const Diagram& a, const Diagram& b, const CompareOptio
       auto it = b_arcs.find(key(u, v));
       if (it != b_arcs.end())
         for (int j : it->second)
-          if (!b_used[j] && same_curve(arc, b.arcs[j], tol)) {
+          if (!b_used[j] && same_curve(arc, b.arcs[j], curve_tol(arc))) {
             b_used[j] = 1;
             matched = true;
             ++out.arcs_matched;
@@ -291,7 +324,8 @@ Comparison compare_graphs(const Diagram& a, const Diagram& b, const CompareOptio
         points.push_back({own.nodes[diff.index].x, own.nodes[diff.index].y});
       else
         points = arc_samples(own, own.arcs[diff.index], scale);
-      if (!points_on_graph(other, points, tol)) kept.push_back(diff);
+      if (!points_on_graph(other, points, [&](voronoi::Point q) { return scaled_tol(q.x, q.y); }))
+        kept.push_back(diff);
     }
     out.differences = std::move(kept);
   }

@@ -20,7 +20,9 @@ namespace covmap::recognition {
 
 struct CompareOptions {
   // Relative to the extent (see horizon): positions and curve parameters closer than this are
-  // the same.
+  // the same. Far from the sites the allowance grows with the distance (in units of the extent):
+  // there nodes of nearly tangent bisectors and huge circles move in proportion to it when the
+  // sites are rounded.
   double relative_tolerance = 1e-7;
   // The horizon, relative to the extent (the first graph's nodes and both graphs' sites; the
   // first graph is the reference, e.g. the input of recognition): nodes farther than this

@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "recognition/bisector_relation.h"
+#include "recognition/extent.h"
 #include "recognition/mobius.h"
 #include "voronoi/clip.h"
 #include "voronoi/engine.h"
@@ -139,12 +140,7 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
     for (const auto& cycle : g.faces[f].boundaries)
       for (const HalfArc& h : cycle) face_of_half[half_id(h)] = f;
 
-  double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;
-  for (const auto& n : g.nodes) {
-    xmin = std::min(xmin, n.x), xmax = std::max(xmax, n.x);
-    ymin = std::min(ymin, n.y), ymax = std::max(ymax, n.y);
-  }
-  const double scale = std::max(std::hypot(xmax - xmin, ymax - ymin), 1e-300);
+  const double scale = std::max(robust_extent(g.nodes).diagonal(), 1e-300);
   const double tol = options.relative_tolerance * scale;
 
   // Arcs at each node (an arc from a node to itself counts twice). Nodes on the frame are where
