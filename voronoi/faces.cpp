@@ -388,7 +388,152 @@ void trace_faces(Diagram& d, FaceLabels labels) {
     }
     return out;
   };
-  for (const Cycle* hole : holes) {
+  // Tracing by geometry, every hole would be tested against every outer cycle around it. Instead
+  // each hole shoots a ray to +x from its rightmost point (there its containing face lies just to
+  // the right) and takes the first arc hit: the half-arc facing the ray's origin bounds the same
+  // face, as its outer cycle or as another hole. Holes whose ray meets nothing, or meets an arc at a
+  // node (ambiguous), fall back to containment tests.
+  std::vector<int> ray_face(holes.size(), -2);  // face, -1 unbounded, -2 undecided
+  if (!by_sites && !holes.empty()) {
+    // Which cycle each half-arc belongs to: outer cycles by face, holes by index.
+    std::vector<int> outer_of_half(halves, -1), hole_of_half(halves, -1);
+    for (std::size_t f = 0; f < d.faces.size(); ++f)
+      for (const HalfArc& h : d.faces[f].boundaries.front()) outer_of_half[half_id(h.arc, h.forward)] = static_cast<int>(f);
+    for (std::size_t k = 0; k < holes.size(); ++k)
+      for (const HalfArc& h : holes[k]->arcs) hole_of_half[half_id(h.arc, h.forward)] = static_cast<int>(k);
+    // Arc boxes in a uniform grid (rows by y, for horizontal rays).
+    std::vector<std::array<double, 4>> box(d.arcs.size());
+    double bx0 = INFINITY, by0 = INFINITY, bx1 = -INFINITY, by1 = -INFINITY;
+    std::vector<int> unbounded_arcs;
+    for (std::size_t a = 0; a < d.arcs.size(); ++a) {
+      const ArcPathView& p = paths[a];
+      std::array<double, 4> b = {INFINITY, INFINITY, -INFINITY, -INFINITY};
+      auto grow = [&](Point q) {
+        b = {std::min(b[0], q.x), std::min(b[1], q.y), std::max(b[2], q.x), std::max(b[3], q.y)};
+      };
+      if (p.circle) {
+        grow(p.at(p.s0));
+        grow(p.at(p.s1));
+        for (int k = 0; k < 4; ++k) {
+          double t = std::fmod(p.sense * (k * 0.5 * kPi - p.start_angle), kTwoPi);
+          if (t < 0) t += kTwoPi;
+          if (t >= p.s0 && t <= p.s1) grow(p.at(t));
+        }
+      } else if (std::isfinite(p.s0) && std::isfinite(p.s1)) {
+        grow(p.at(p.s0));
+        grow(p.at(p.s1));
+      } else {
+        unbounded_arcs.push_back(static_cast<int>(a));
+        continue;
+      }
+      box[a] = b;
+      bx0 = std::min(bx0, b[0]), by0 = std::min(by0, b[1]), bx1 = std::max(bx1, b[2]), by1 = std::max(by1, b[3]);
+    }
+    const int side = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(d.arcs.size()))), 1, 2048);
+    const double cw = std::max((bx1 - bx0) / side, 1e-300), ch = std::max((by1 - by0) / side, 1e-300);
+    std::vector<std::vector<int>> cell(static_cast<std::size_t>(side) * side);
+    if (std::isfinite(bx0))
+      for (std::size_t a = 0; a < d.arcs.size(); ++a) {
+        if (std::find(unbounded_arcs.begin(), unbounded_arcs.end(), static_cast<int>(a)) != unbounded_arcs.end()) continue;
+        const auto& b = box[a];
+        const int i0 = std::clamp(static_cast<int>((b[0] - bx0) / cw), 0, side - 1);
+        const int i1 = std::clamp(static_cast<int>((b[2] - bx0) / cw), 0, side - 1);
+        const int j0 = std::clamp(static_cast<int>((b[1] - by0) / ch), 0, side - 1);
+        const int j1 = std::clamp(static_cast<int>((b[3] - by0) / ch), 0, side - 1);
+        for (int i = i0; i <= i1; ++i)
+          for (int j = j0; j <= j1; ++j) cell[static_cast<std::size_t>(j) * side + i].push_back(static_cast<int>(a));
+      }
+    // Crossings of the horizontal line y with an arc: (x, tangent y-component) pairs.
+    auto crossings = [&](int a, double y, std::vector<std::pair<double, double>>& out) {
+      const ArcPathView& p = paths[a];
+      out.clear();
+      if (p.circle) {
+        const double dy = y - p.cy;
+        const double h2 = p.r * p.r - dy * dy;
+        if (h2 <= 0) return;
+        const double h = std::sqrt(h2);
+        for (double x : {p.cx - h, p.cx + h}) {
+          double s = std::fmod(p.sense * (std::atan2(dy, x - p.cx) - p.start_angle), kTwoPi);
+          if (s < 0) s += kTwoPi;
+          if (s > p.s0 && s < p.s1) out.emplace_back(x, p.tangent(s).y);
+        }
+      } else if (p.uy != 0) {
+        const double s = (y - p.oy) / p.uy;
+        if (s > p.s0 && s < p.s1) out.emplace_back(p.ox + s * p.ux, p.uy);
+      }
+    };
+    std::vector<std::pair<double, double>> xs;
+    const double eps_x = 1e-12 * std::max(bx1 - bx0, by1 - by0);
+    for (std::size_t k = 0; k < holes.size(); ++k) {
+      // Rightmost point of the hole.
+      Point right{-INFINITY, 0};
+      for (const HalfArc& h : holes[k]->arcs) {
+        const ArcPathView& p = paths[h.arc];
+        auto consider = [&](Point q) {
+          if (q.x > right.x) right = q;
+        };
+        if (std::isfinite(p.s0)) consider(p.at(p.s0));
+        if (std::isfinite(p.s1)) consider(p.at(p.s1));
+        if (p.circle) {
+          double t = std::fmod(p.sense * (0.0 - p.start_angle), kTwoPi);
+          if (t < 0) t += kTwoPi;
+          if (t >= p.s0 && t <= p.s1) consider(p.at(t));
+        }
+      }
+      if (!std::isfinite(right.x) || !std::isfinite(bx0)) continue;
+      double best_x = INFINITY, best_ty = 0;
+      int best_arc = -1;
+      bool ambiguous = false;
+      auto test_arc = [&](int a) {
+        crossings(a, right.y, xs);
+        for (auto [x, ty] : xs) {
+          if (x <= right.x + eps_x) continue;
+          if (std::abs(x - best_x) <= eps_x) ambiguous = true;
+          if (x < best_x) best_x = x, best_ty = ty, best_arc = a, ambiguous = false;
+        }
+      };
+      for (int a : unbounded_arcs) test_arc(a);
+      const int j = std::clamp(static_cast<int>((right.y - by0) / ch), 0, side - 1);
+      for (int i = std::clamp(static_cast<int>((right.x - bx0) / cw), 0, side - 1); i < side; ++i) {
+        if (best_x < bx0 + i * cw) break;  // the nearest hit is left of this cell
+        for (int a : cell[static_cast<std::size_t>(j) * side + i]) test_arc(a);
+      }
+      if (best_arc < 0) {
+        ray_face[k] = unbounded_arcs.empty() ? -1 : -2;
+        continue;
+      }
+      if (ambiguous || std::abs(best_ty) < 1e-12) continue;  // through a node, or tangent: fall back
+      // The half-arc facing -x (the ray's origin) on its left: tangent pointing up.
+      const int hit = half_id(best_arc, best_ty > 0);
+      if (outer_of_half[hit] >= 0) ray_face[k] = outer_of_half[hit];
+      else if (hole_of_half[hit] >= 0 && hole_of_half[hit] != static_cast<int>(k)) ray_face[k] = -3 - hole_of_half[hit];
+    }
+    // Resolve chains of holes (-3 - other) to faces.
+    for (std::size_t k = 0; k < holes.size(); ++k) {
+      int v = ray_face[k], steps = 0;
+      while (v <= -3 && steps++ <= static_cast<int>(holes.size())) v = ray_face[-3 - v];
+      ray_face[k] = v <= -3 ? -2 : v;
+    }
+  }
+  for (std::size_t hk = 0; hk < holes.size(); ++hk) {
+    const Cycle* hole = holes[hk];
+    if (ray_face[hk] != -2) {
+      int target = ray_face[hk];
+      if (target < 0) {
+        auto it = implicit_face.find(hole->site);
+        if (it == implicit_face.end()) {
+          Face f;
+          f.site = kNone;
+          f.bounded = false;
+          faces_of_site[hole->site].push_back(static_cast<int>(d.faces.size()));
+          d.faces.push_back(std::move(f));
+          it = implicit_face.emplace(hole->site, static_cast<int>(d.faces.size()) - 1).first;
+        }
+        target = it->second;
+      }
+      d.faces[target].boundaries.push_back(hole->arcs);
+      continue;
+    }
     const HalfArc first = hole->arcs.front();
     const ArcPathView path = arc_path(d.arcs[first.arc], d.nodes);
     const double mid = std::isfinite(path.s0) && std::isfinite(path.s1) ? 0.5 * (path.s0 + path.s1)
