@@ -429,6 +429,19 @@ void trace_faces(Diagram& d, FaceLabels labels) {
       box[a] = b;
       bx0 = std::min(bx0, b[0]), by0 = std::min(by0, b[1]), bx1 = std::max(bx1, b[2]), by1 = std::max(by1, b[3]);
     }
+    // Grid bounds from the central 98% of node coordinates: far arcs of nearly tangent bisectors
+    // would otherwise stretch the cells over the whole diagram (they land in the border cells).
+    if (d.nodes.size() >= 100) {
+      std::vector<double> nx, ny;
+      for (const Node& n : d.nodes)
+        if (std::isfinite(n.x) && std::isfinite(n.y)) nx.push_back(n.x), ny.push_back(n.y);
+      if (nx.size() >= 100) {
+        std::sort(nx.begin(), nx.end());
+        std::sort(ny.begin(), ny.end());
+        const std::size_t cut = nx.size() / 100;
+        bx0 = nx[cut], bx1 = nx[nx.size() - 1 - cut], by0 = ny[cut], by1 = ny[ny.size() - 1 - cut];
+      }
+    }
     const int side = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(d.arcs.size()))), 1, 2048);
     const double cw = std::max((bx1 - bx0) / side, 1e-300), ch = std::max((by1 - by0) / side, 1e-300);
     std::vector<std::vector<int>> cell(static_cast<std::size_t>(side) * side);
@@ -463,6 +476,7 @@ void trace_faces(Diagram& d, FaceLabels labels) {
       }
     };
     std::vector<std::pair<double, double>> xs;
+    std::vector<int> stamp(d.arcs.size(), -1);
     const double eps_x = 1e-12 * std::max(bx1 - bx0, by1 - by0);
     for (std::size_t k = 0; k < holes.size(); ++k) {
       // Rightmost point of the hole.
@@ -495,8 +509,12 @@ void trace_faces(Diagram& d, FaceLabels labels) {
       for (int a : unbounded_arcs) test_arc(a);
       const int j = std::clamp(static_cast<int>((right.y - by0) / ch), 0, side - 1);
       for (int i = std::clamp(static_cast<int>((right.x - bx0) / cw), 0, side - 1); i < side; ++i) {
-        if (best_x < bx0 + i * cw) break;  // the nearest hit is left of this cell
-        for (int a : cell[static_cast<std::size_t>(j) * side + i]) test_arc(a);
+        if (i > 0 && best_x < bx0 + i * cw) break;  // the nearest hit is left of this cell
+        for (int a : cell[static_cast<std::size_t>(j) * side + i]) {
+          if (stamp[a] == static_cast<int>(k)) continue;  // an arc spans several cells
+          stamp[a] = static_cast<int>(k);
+          test_arc(a);
+        }
       }
       if (best_arc < 0) {
         ray_face[k] = unbounded_arcs.empty() ? -1 : -2;
