@@ -299,33 +299,55 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
       }
     }
   }
-  // Each candidate is polished by Gauss-Newton on its distances to all solution circles: an
-  // intersection of two circles alone can be ill-conditioned when they meet at a shallow angle.
-  if (!family)
-    for (Complex& p : candidates) {
-      for (int it = 0; it < 4; ++it) {
-        double jtj[3] = {0, 0, 0}, jtr[2] = {0, 0};
-        for (const Constraint& c : constraints) {
-          if (!c.is_circle || c.circle.is_line()) continue;
-          const auto centre = c.circle.centre();
-          const auto radius = c.circle.radius();
-          if (!centre || !radius) continue;
-          const Complex d = p - *centre;
-          const double len = std::abs(d);
-          if (len == 0) continue;
-          const double res = len - *radius;
-          const double gx = d.real() / len, gy = d.imag() / len;
-          jtj[0] += gx * gx, jtj[1] += gx * gy, jtj[2] += gy * gy;
-          jtr[0] += gx * res, jtr[1] += gy * res;
-        }
-        const double det = jtj[0] * jtj[2] - jtj[1] * jtj[1];
-        if (!(std::abs(det) > 0)) break;
-        const double dx = (jtj[2] * jtr[0] - jtj[1] * jtr[1]) / det;
-        const double dy = (jtj[0] * jtr[1] - jtj[1] * jtr[0]) / det;
-        if (!std::isfinite(dx) || !std::isfinite(dy) || std::hypot(dx, dy) > tol) break;
-        p -= Complex(dx, dy);
+  // Gauss-Newton on the distances to the solution circles among `cs`: an intersection of two
+  // circles alone can be ill-conditioned when they meet at a shallow angle.
+  auto polish = [&](Complex p, const std::vector<Constraint>& cs) {
+    for (int it = 0; it < 4; ++it) {
+      double jtj[3] = {0, 0, 0}, jtr[2] = {0, 0};
+      int used = 0;
+      for (const Constraint& c : cs) {
+        if (!c.is_circle || c.circle.is_line()) continue;
+        const auto centre = c.circle.centre();
+        const auto radius = c.circle.radius();
+        if (!centre || !radius) continue;
+        const Complex d = p - *centre;
+        const double len = std::abs(d);
+        if (len == 0) continue;
+        const double res = len - *radius;
+        const double gx = d.real() / len, gy = d.imag() / len;
+        jtj[0] += gx * gx, jtj[1] += gx * gy, jtj[2] += gy * gy;
+        jtr[0] += gx * res, jtr[1] += gy * res;
+        ++used;
       }
+      if (used < 2) break;
+      const double det = jtj[0] * jtj[2] - jtj[1] * jtj[1];
+      if (!(std::abs(det) > 1e-12 * (jtj[0] + jtj[2]) * (jtj[0] + jtj[2]))) break;  // near-parallel
+      const double dx = (jtj[2] * jtr[0] - jtj[1] * jtr[1]) / det;
+      const double dy = (jtj[0] * jtr[1] - jtj[1] * jtr[0]) / det;
+      if (!std::isfinite(dx) || !std::isfinite(dy) || std::hypot(dx, dy) > tol) break;
+      p -= Complex(dx, dy);
     }
+    return p;
+  };
+  if (!family)
+    for (Complex& p : candidates) p = polish(p, constraints);
+  // The constraints of every face, for re-anchoring propagated sites (errors would otherwise grow
+  // along long chains of inversions).
+  auto face_constraints = [&](int f) {
+    std::vector<Constraint> cs;
+    std::vector<int> seen_nodes;
+    for (const auto& cycle : g.faces[f].boundaries)
+      for (const HalfArc& hh : cycle) {
+        const Arc& arc = g.arcs[hh.arc];
+        const int v = hh.forward ? arc.from : arc.to;
+        if (v == kNone || on_frame[v] || arc.frame) continue;
+        if (std::find(seen_nodes.begin(), seen_nodes.end(), v) != seen_nodes.end()) continue;
+        seen_nodes.push_back(v);
+        if (auto c = node_constraint(f, half_id(hh)); c && c->is_circle) cs.push_back(*c);
+        if (cs.size() >= 4) return cs;
+      }
+    return cs;
+  };
   if (candidates.empty()) {
     out.bisector_graph = false;
     RecognitionFailure fail;
@@ -376,7 +398,7 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
           }
           const WeightedPoint partner = partner_across(c, {site[f].position, site[f].weight});
           if (!site[other].assigned) {
-            site[other] = {true, partner.position, partner.weight};
+            site[other] = {true, polish(partner.position, face_constraints(other)), partner.weight};
             queue.push_back(other);
             continue;
           }

@@ -25,6 +25,8 @@ void extract_linear(const std::vector<Site>& sites, RegularTriangulation& rt, Di
 // be written in doubles to better than ~4 ulps of their size, while near its nodes the arc is
 // almost straight. A bounded arc whose sagitta chord²/(8r) is below that representation error is
 // written as the straight Line through its nodes instead: strictly closer to the true bisector.
+constexpr double kHugeCircleRatio = 1e6;  // radius / site spacing: |w_i - w_j| ≲ 1e-6 w
+
 void straighten_flat_arcs(Diagram& d) {
   for (Arc& a : d.arcs) {
     const Circle* c = std::get_if<Circle>(&a.curve);
@@ -34,7 +36,13 @@ void straighten_flat_arcs(Diagram& d) {
     const double chord = std::hypot(q.x - p.x, q.y - p.y);
     const double representation =
         4 * 0x1p-52 * std::max({std::fabs(c->cx), std::fabs(c->cy), c->r});
-    if (chord > 0 && chord * chord / (8 * c->r) < representation)
+    // Only circles that are huge against their sites' distance (weights equal to ~6 digits or
+    // more) qualify: a tiny arc of an ordinary circle is as well written as a circle, and its
+    // curve type tells readers (recognition) that the weights differ.
+    const Site& si = d.sites[a.left_site];
+    const Site& sj = d.sites[a.right_site];
+    const double spacing = std::hypot(sj.x - si.x, sj.y - si.y);
+    if (chord > 0 && c->r > kHugeCircleRatio * spacing && chord * chord / (8 * c->r) < representation)
       a.curve = Line{p.x, p.y, q.x - p.x, q.y - p.y};
   }
 }
