@@ -1,5 +1,7 @@
 #include "recognition/graph_repair.h"
 
+#include "voronoi/diagram_edit.h"
+
 #include <cmath>
 #include <sstream>
 
@@ -78,21 +80,7 @@ std::vector<Repair> merge_degree_two_nodes(voronoi::Diagram& g, double tolerance
   for (std::size_t a = 0; a < g.arcs.size(); ++a)
     if (alive[a]) arcs.push_back(g.arcs[a]);
   g.arcs = std::move(arcs);
-  std::vector<int> remap(g.nodes.size(), kNone);
-  for (const Arc& a : g.arcs)
-    for (int n : {a.from, a.to})
-      if (n != kNone) remap[n] = 0;
-  int next = 0;
-  for (std::size_t k = 0; k < g.nodes.size(); ++k)
-    if (remap[k] != kNone) {
-      remap[k] = next;
-      g.nodes[next++] = g.nodes[k];
-    }
-  g.nodes.resize(next);
-  for (Arc& a : g.arcs) {
-    if (a.from != kNone) a.from = remap[a.from];
-    if (a.to != kNone) a.to = remap[a.to];
-  }
+  voronoi::drop_unused_nodes(g);
   return repairs;
 }
 

@@ -310,6 +310,20 @@ void trace_faces(Diagram& d, FaceLabels labels) {
     for (const HalfArc& h : d.faces[f].boundaries.front())
       outer_face_of_half[half_id(h.arc, h.forward)] = static_cast<int>(f);
   std::map<int, int> implicit_face;  // site -> its unbounded face without outer cycle
+  // The unbounded component of a site without lines has no outer cycle, only holes: one face per
+  // site (per graph when tracing by geometry), made on first use.
+  auto implicit_face_of = [&](int site) {
+    auto it = implicit_face.find(site);
+    if (it == implicit_face.end()) {
+      Face f;
+      f.site = by_sites ? site : kNone;
+      f.bounded = false;
+      faces_of_site[site].push_back(static_cast<int>(d.faces.size()));
+      d.faces.push_back(std::move(f));
+      it = implicit_face.emplace(site, static_cast<int>(d.faces.size()) - 1).first;
+    }
+    return it->second;
+  };
   // Candidate outer cycles for a point, through a uniform grid over their bounding boxes. Cycles
   // through infinity are always
   // candidates. Without it, tracing by geometry (one label for all faces) would test every hole
@@ -537,18 +551,7 @@ void trace_faces(Diagram& d, FaceLabels labels) {
     const Cycle* hole = holes[hk];
     if (ray_face[hk] != -2) {
       int target = ray_face[hk];
-      if (target < 0) {
-        auto it = implicit_face.find(hole->site);
-        if (it == implicit_face.end()) {
-          Face f;
-          f.site = kNone;
-          f.bounded = false;
-          faces_of_site[hole->site].push_back(static_cast<int>(d.faces.size()));
-          d.faces.push_back(std::move(f));
-          it = implicit_face.emplace(hole->site, static_cast<int>(d.faces.size()) - 1).first;
-        }
-        target = it->second;
-      }
+      if (target < 0) target = implicit_face_of(hole->site);
       d.faces[target].boundaries.push_back(hole->arcs);
       continue;
     }
@@ -573,17 +576,7 @@ void trace_faces(Diagram& d, FaceLabels labels) {
         target = f;
     }
     if (target < 0) {
-      // The unbounded component of a site without lines: it has no outer cycle, only holes.
-      auto it = implicit_face.find(hole->site);
-      if (it == implicit_face.end()) {
-        Face f;
-        f.site = by_sites ? hole->site : kNone;
-        f.bounded = false;
-        faces_of_site[hole->site].push_back(static_cast<int>(d.faces.size()));
-        d.faces.push_back(std::move(f));
-        it = implicit_face.emplace(hole->site, static_cast<int>(d.faces.size()) - 1).first;
-      }
-      target = it->second;
+      target = implicit_face_of(hole->site);
     }
     d.faces[target].boundaries.push_back(hole->arcs);
   }

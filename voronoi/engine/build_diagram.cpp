@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "voronoi/engine.h"
+#include "voronoi/diagram_edit.h"
 #include "voronoi/faces.h"
 #include "voronoi/engine/extractors.h"
 #include "voronoi/engine/facet_walk.h"
@@ -47,25 +48,6 @@ void straighten_flat_arcs(Diagram& d) {
   }
 }
 
-// Nodes found twice (on a power line shared by two facets) leave unreferenced copies behind.
-void drop_unused_nodes(Diagram& d) {
-  std::vector<int> remap(d.nodes.size(), kNone);
-  for (const Arc& a : d.arcs)
-    for (int n : {a.from, a.to})
-      if (n != kNone) remap[n] = 0;
-  int next = 0;
-  for (std::size_t k = 0; k < d.nodes.size(); ++k)
-    if (remap[k] != kNone) {
-      remap[k] = next;
-      d.nodes[next++] = d.nodes[k];
-    }
-  d.nodes.resize(next);
-  for (Arc& a : d.arcs) {
-    if (a.from != kNone) a.from = remap[a.from];
-    if (a.to != kNone) a.to = remap[a.to];
-  }
-}
-
 }  // namespace engine
 
 Diagram build_diagram(std::span<const Site> input, BuildStats* stats_out) {
@@ -94,7 +76,7 @@ Diagram build_diagram(std::span<const Site> input, BuildStats* stats_out) {
     extract_planar(out.sites, rt, out, stats);
   else
     extract_linear(out.sites, rt, out);
-  drop_unused_nodes(out);
+  drop_unused_nodes(out);  // copies left by nodes found twice on a shared power line
   straighten_flat_arcs(out);
   stats.extraction_seconds = seconds_since(start);
   start = Clock::now();
