@@ -10,6 +10,7 @@
 #include "io/diagram_json.h"
 #include "io/reconstruction_json.h"
 #include "io/svg.h"
+#include "recognition/tolerances.h"
 #include "recognition/compare.h"
 #include "recognition/graph_repair.h"
 #include "recognition/recognize.h"
@@ -41,7 +42,8 @@ int run_recognize(const RecognizeOptions& options) {
     // Nodes of degree 2 on one curve are no nodes of a bisector graph: repaired and reported.
     double extent = 0;
     for (const auto& n : graph.nodes) extent = std::max({extent, std::abs(n.x), std::abs(n.y)});
-    const auto repairs = recognition::merge_degree_two_nodes(graph, 1e-12 * std::max(extent, 1.0));
+    const auto repairs = recognition::merge_degree_two_nodes(
+        graph, recognition::tolerance::kRepairRelative * std::max(extent, 1.0));
     for (const auto& r : repairs) std::cerr << "covmap: repaired: " << r.what << "\n";
     recognition::RecognitionOptions ro;
     ro.voronoi_check = !options.no_voronoi_check;

@@ -1,3 +1,4 @@
+#include "recognition/tolerances.h"
 #include "recognition/compare.h"
 
 #include <algorithm>
@@ -97,7 +98,7 @@ bool same_curve(const Arc& a, const Arc& b, double tol) {
     const double na = std::hypot(la.dx, la.dy), nb = std::hypot(lb.dx, lb.dy);
     const double cross = (la.dx * lb.dy - la.dy * lb.dx) / (na * nb);
     const double offset = std::abs((lb.x - la.x) * la.dy - (lb.y - la.y) * la.dx) / na;
-    return std::abs(cross) <= 1e-9 && offset <= tol;
+    return std::abs(cross) <= tolerance::kSameDirectionSine && offset <= tol;
   }
   return false;  // a circle and a line (a huge circle against a line is a different curve here)
 }

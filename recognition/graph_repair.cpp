@@ -1,3 +1,4 @@
+#include "recognition/tolerances.h"
 #include "recognition/graph_repair.h"
 
 #include "voronoi/diagram_edit.h"
@@ -36,7 +37,7 @@ bool same_curve(const Arc& a, const Arc& b, double tol) {
   const double na = std::hypot(la.dx, la.dy), nb = std::hypot(lb.dx, lb.dy);
   const double dot = (la.dx * lb.dx + la.dy * lb.dy) / (na * nb);
   const double offset = std::abs((lb.x - la.x) * la.dy - (lb.y - la.y) * la.dx) / na;
-  return dot > 1.0 - 1e-12 && offset <= tol;
+  return dot > 1.0 - tolerance::kSameDirectionCosine && offset <= tol;
 }
 
 }  // namespace

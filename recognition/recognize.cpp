@@ -1,3 +1,4 @@
+#include "recognition/tolerances.h"
 #include "recognition/recognize.h"
 
 #include <algorithm>
@@ -78,7 +79,7 @@ std::vector<Complex> intersect(GeneralizedCircle a, GeneralizedCircle b) {
   const double cq = std::norm(w) - r * r;
   const double disc = bq * bq - cq;
   if (disc < 0) {
-    if (disc > -1e-12 * (r * r + std::norm(w))) out.push_back(p0 - bq * dir);
+    if (disc > -tolerance::kTangentDiscriminant * (r * r + std::norm(w))) out.push_back(p0 - bq * dir);
     return out;
   }
   const double s = std::sqrt(disc);
@@ -321,7 +322,8 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
       }
       if (used < 2) break;
       const double det = jtj[0] * jtj[2] - jtj[1] * jtj[1];
-      if (!(std::abs(det) > 1e-12 * (jtj[0] + jtj[2]) * (jtj[0] + jtj[2]))) break;  // near-parallel
+      if (!(std::abs(det) > tolerance::kSingularNormalEquations * (jtj[0] + jtj[2]) * (jtj[0] + jtj[2])))
+        break;  // near-parallel circles
       const double dx = (jtj[2] * jtr[0] - jtj[1] * jtr[1]) / det;
       const double dy = (jtj[0] * jtr[1] - jtj[1] * jtr[0]) / det;
       if (!std::isfinite(dx) || !std::isfinite(dy) || std::hypot(dx, dy) > tol) break;

@@ -81,17 +81,6 @@ CGAL::Sign filtered_sign(F&& f) {
   return CGAL::sign(f(Exact{}));
 }
 
-// f(NT{}) returns std::optional<R>; nullopt means "some sign was uncertain, retry exactly".
-template <class F>
-auto filtered_eval(F&& f) {
-  if (auto r = f(Approx{})) return *r;
-  {
-    CGAL::Protect_FPU_rounding<true> guard;
-    if (auto r = f(Interval{})) return *r;
-  }
-  return *f(Exact{});
-}
-
 template <class NT>
 NT det2(const NT& a, const NT& b, const NT& c, const NT& d) {
   return a * d - b * c;

@@ -1,0 +1,28 @@
+// Every fixed approximate comparison of the recognition library, in one place. (Tolerances a user
+// may set — relative_tolerance, matrix_tolerance, weight_snap, the comparison's horizon — live in
+// RecognitionOptions and CompareOptions with their documentation.)
+#pragma once
+
+namespace covmap::recognition::tolerance {
+
+// Two solution circles whose intersection discriminant is negative by less than this fraction of
+// the terms' size are taken as tangent (one common point): the discriminant of a true tangency
+// comes out of rounding as ±1e-16 of them.
+inline constexpr double kTangentDiscriminant = 1e-12;
+
+// Gauss-Newton polishing stops when the solution circles' normal equations are this close to
+// singular (all circles nearly parallel at the point): a step would then be noise.
+inline constexpr double kSingularNormalEquations = 1e-12;
+
+// Two lines are the same direction (compare_graphs) / run the same way (graph repair) when the
+// sine, respectively 1 − cosine, of their angle is below these. Directions of bisector lines come
+// from rounded site differences (errors ~1e-16); distinct real bisectors differ by far more.
+inline constexpr double kSameDirectionSine = 1e-9;
+inline constexpr double kSameDirectionCosine = 1e-12;
+
+// Degree-2 repair in `covmap recognize`: two arcs are on one curve when their centres, radii or
+// line offsets agree to this fraction of the graph's coordinate magnitude (double rounding of the
+// numbers that state a curve).
+inline constexpr double kRepairRelative = 1e-12;
+
+}  // namespace covmap::recognition::tolerance
