@@ -36,7 +36,7 @@ void setup_recognize(CLI::App& app, RecognizeOptions& options) {
 
 int run_recognize(const RecognizeOptions& options) {
   return guarded([&]() {
-    voronoi::Diagram graph = io::read_diagram_json(options.graph_path);
+    voronoi::Diagram graph = io::read_diagram_json(options.graph_path, io::ArcLabels::kIgnored);
     graph.sites.clear();
     for (auto& a : graph.arcs) a.left_site = a.right_site = voronoi::kNone;
     // Nodes of degree 2 on one curve are no nodes of a bisector graph: repaired and reported.
@@ -66,7 +66,13 @@ int run_recognize(const RecognizeOptions& options) {
       return kNotBisectorGraph;
     }
     std::cout << options.graph_path << ": bisector graph of " << r.sites.size() << " sites"
-              << (r.candidates.size() > 1 ? " (two solutions)" : "") << "; MWVD: " << r.voronoi;
+              << (r.candidates.size() > 1 ? " (two solutions)" : "");
+    if (r.region)
+      std::cout << " (not unique: the site of face " << r.region->face << " may lie anywhere in a region of "
+                << r.region->bounds.size() << " bounds; one choice given)";
+    else if (!r.unique)
+      std::cout << " (not unique: a one-parameter family; one member given)";
+    std::cout << "; MWVD: " << r.voronoi;
     if (r.voronoi == "no" && !r.voronoi_differences.empty())
       std::cout << " (" << r.voronoi_differences.size() << " differences; first: "
                 << r.voronoi_differences.front().message << ")";
@@ -87,8 +93,8 @@ void setup_compare(CLI::App& app, CompareCommandOptions& options) {
 
 int run_compare(const CompareCommandOptions& options) {
   return guarded([&]() {
-    const voronoi::Diagram a = io::read_diagram_json(options.a_path);
-    const voronoi::Diagram b = io::read_diagram_json(options.b_path);
+    const voronoi::Diagram a = io::read_diagram_json(options.a_path, io::ArcLabels::kIgnored);
+    const voronoi::Diagram b = io::read_diagram_json(options.b_path, io::ArcLabels::kIgnored);
     recognition::CompareOptions co;
     co.relative_tolerance = options.tolerance;
     const recognition::Comparison c = recognition::compare_graphs(a, b, co);

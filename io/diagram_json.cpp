@@ -73,6 +73,7 @@ void write_array(std::ostream& out, std::string_view name, const std::vector<Out
 struct Reader {
   const Json& root;
   const std::string& file;
+  bool unlabelled = false;  // an arc graph without sites: arcs' "sites" are optional and ignored
   voronoi::Diagram diagram;
 
   const Json& array_member(std::string_view key) {
@@ -127,6 +128,11 @@ struct Reader {
       arc.curve = read_curve(a, at, arc.ccw);
       if (std::holds_alternative<voronoi::Circle>(arc.curve) && (arc.from == kNone) != (arc.to == kNone)) {
         throw FieldError(at, "a circle arc has both ends or neither (a full circle); only line arcs reach infinity");
+      }
+      if (unlabelled) {
+        if (const Json* frame = detail::optional_member(a, "frame")) arc.frame = detail::boolean(*frame, at + ".frame");
+        diagram.arcs.push_back(std::move(arc));
+        continue;
       }
       const Json& pair = detail::member(a, "sites", at);
       if (!pair.is_array() || pair.size() != 2) {
@@ -223,17 +229,19 @@ void write_diagram_json(const voronoi::Diagram& d, std::ostream& out) {
   out << "}\n";
 }
 
-voronoi::Diagram parse_diagram_json(std::string_view text, const std::string& file) {
+voronoi::Diagram parse_diagram_json(std::string_view text, const std::string& file, ArcLabels labels) {
   const Json root = detail::parse_json(text, file);
   detail::check_format_tag(root, "covmap.arcgraph/1", file);
-  Reader reader{root, file, {}};
-  const auto sites = root.find("sites");
-  if (sites == root.end()) throw InputError(file, 0, "sites", "missing");
-  reader.diagram.sites = detail::sites_from_json(*sites, "sites", file).sites;
+  Reader reader{root, file, labels == ArcLabels::kIgnored, {}};
+  if (labels == ArcLabels::kRequired) {
+    const auto sites = root.find("sites");
+    if (sites == root.end()) throw InputError(file, 0, "sites", "missing");
+    reader.diagram.sites = detail::sites_from_json(*sites, "sites", file).sites;
+  }
   try {
     reader.read_nodes();
     reader.read_arcs();
-    reader.read_faces();
+    if (labels == ArcLabels::kRequired) reader.read_faces();
     reader.read_clip();
   } catch (const FieldError& e) {
     throw InputError(file, 0, e.path, e.message);
@@ -241,8 +249,8 @@ voronoi::Diagram parse_diagram_json(std::string_view text, const std::string& fi
   return std::move(reader.diagram);
 }
 
-voronoi::Diagram read_diagram_json(const std::filesystem::path& path) {
-  return parse_diagram_json(detail::read_text_file(path), path.string());
+voronoi::Diagram read_diagram_json(const std::filesystem::path& path, ArcLabels labels) {
+  return parse_diagram_json(detail::read_text_file(path), path.string(), labels);
 }
 
 }  // namespace covmap::io

@@ -36,9 +36,15 @@ namespace covmap::io {
 
 void write_diagram_json(const voronoi::Diagram& diagram, std::ostream& out);
 
-voronoi::Diagram read_diagram_json(const std::filesystem::path& path);
+// kRequired: a diagram, sites and labels checked as above. kIgnored: an arc graph whose sites are
+// unknown (the input of recognition and comparison): "sites", the arcs' "sites" and "faces" may be
+// absent and are ignored; the result has no sites, no faces and kNone labels.
+enum class ArcLabels { kRequired, kIgnored };
+
+voronoi::Diagram read_diagram_json(const std::filesystem::path& path, ArcLabels labels = ArcLabels::kRequired);
 
 // Parses text already in memory; `file` is only used in error messages.
-voronoi::Diagram parse_diagram_json(std::string_view text, const std::string& file);
+voronoi::Diagram parse_diagram_json(std::string_view text, const std::string& file,
+                                    ArcLabels labels = ArcLabels::kRequired);
 
 }  // namespace covmap::io

@@ -1,6 +1,8 @@
 #include "io/reconstruction_json.h"
 
 #include <nlohmann/json.hpp>
+#include <algorithm>
+#include <cmath>
 #include <ostream>
 
 namespace covmap::io {
@@ -14,6 +16,20 @@ nlohmann::json sites_json(const std::vector<voronoi::Site>& sites) {
 
 nlohmann::json index_or_null(int i) { return i == voronoi::kNone ? nlohmann::json() : nlohmann::json(i); }
 
+// A bound of a site region: the open disk, the outside of a circle, or a half-plane.
+nlohmann::json bound_json(const recognition::GeneralizedCircle& g) {
+  if (g.is_line()) {
+    // 2Re(B̄z) + C < 0: the side the normal -B points to; the line's direction keeps it on the left.
+    const recognition::Complex n = g.B / std::abs(g.B);
+    const recognition::Complex p = -g.C * g.B / (2.0 * std::norm(g.B));
+    const recognition::Complex d = n * recognition::Complex(0.0, 1.0);
+    return {{"line", {{"x", p.real()}, {"y", p.imag()}, {"dx", d.real()}, {"dy", d.imag()}}}, {"side", "left"}};
+  }
+  const recognition::Complex c = -g.B / g.A;
+  const double r = std::sqrt(std::max(0.0, std::norm(c) - g.C / g.A));
+  return {{"circle", {{"cx", c.real()}, {"cy", c.imag()}, {"r", r}}}, {"side", g.A > 0 ? "inside" : "outside"}};
+}
+
 }  // namespace
 
 void write_reconstruction_json(const recognition::Reconstruction& r, std::ostream& out) {
@@ -24,6 +40,17 @@ void write_reconstruction_json(const recognition::Reconstruction& r, std::ostrea
   j["supported"] = r.supported;
   j["reason"] = r.reason;
   j["sites"] = sites_json(r.sites);
+  j["unique"] = r.unique;
+  if (r.region) {
+    nlohmann::json bounds = nlohmann::json::array();
+    for (const auto& b : r.region->bounds) bounds.push_back(bound_json(b));
+    j["region"] = {{"face", r.region->face},
+                   {"representative", {{"x", r.region->representative.x}, {"y", r.region->representative.y}}},
+                   {"margin", r.region->margin},
+                   {"bounds", bounds}};
+  } else {
+    j["region"] = nullptr;
+  }
   j["candidates"] = nlohmann::json::array();
   for (const auto& c : r.candidates) j["candidates"].push_back(sites_json(c));
   j["faces"] = nlohmann::json::array();

@@ -128,12 +128,13 @@ std::string Comparison::brief() const {
 
 Comparison compare_graphs(const Diagram& a, const Diagram& b, const CompareOptions& options) {
   Comparison out;
-  // The extent: the central part of the first graph's nodes (recognition/extent.h) and both
+  // The extent: the central part of the first graph's nodes and full circles (recognition/extent.h) and both
   // graphs' sites (not the second graph's nodes, which may hold the far artefacts the horizon is
   // there to ignore).
-  const Extent e = robust_extent(a.nodes.empty() ? b.nodes : a.nodes);
+  const Diagram& reference = a.arcs.empty() ? b : a;
+  const Extent e = graph_extent(reference);
   double xmin = e.xmin, xmax = e.xmax, ymin = e.ymin, ymax = e.ymax;
-  if (a.nodes.empty() && b.nodes.empty()) xmin = ymin = INFINITY, xmax = ymax = -INFINITY;
+  if (reference.arcs.empty() && reference.nodes.empty()) xmin = ymin = INFINITY, xmax = ymax = -INFINITY;
   for (const Diagram* d : {&a, &b})
     for (const auto& s : d->sites) {
       xmin = std::min(xmin, s.x), xmax = std::max(xmax, s.x);

@@ -37,4 +37,21 @@ inline Extent robust_extent(const std::vector<voronoi::Node>& nodes) {
   return e;
 }
 
+// The extent of a whole graph: its nodes, and for graphs with few or no nodes (disjoint circles and
+// lines, paper 5 §3) also the boxes of its full circles and the anchor points of its whole lines.
+inline Extent graph_extent(const voronoi::Diagram& g) {
+  std::vector<voronoi::Node> points = g.nodes;
+  for (const auto& a : g.arcs) {
+    if (a.from != voronoi::kNone || a.to != voronoi::kNone) continue;
+    if (const auto* c = std::get_if<voronoi::Circle>(&a.curve)) {
+      points.push_back({c->cx - c->r, c->cy - c->r});
+      points.push_back({c->cx + c->r, c->cy + c->r});
+    } else {
+      const auto& l = std::get<voronoi::Line>(a.curve);
+      points.push_back({l.x, l.y});
+    }
+  }
+  return robust_extent(points);
+}
+
 }  // namespace covmap::recognition

@@ -9,6 +9,7 @@
 
 #include "recognition/bisector_relation.h"
 #include "recognition/extent.h"
+#include "recognition/feasible_region.h"
 #include "recognition/mobius.h"
 #include "voronoi/clip.h"
 #include "voronoi/engine.h"
@@ -115,6 +116,45 @@ struct FaceSite {
   double weight = 1.0;
 };
 
+// Paper 5 §3: when no node constrains a site, the sites are fixed by one root site through the
+// inversions along a spanning tree of the faces, and each arc asks for its two sites to lie on its
+// two sides. Pulled back to the root by the composed (anti-)Möbius map, each such demand is a
+// generalized disk for the root's site. The root is an unbounded face when there is one.
+SiteRegion root_region(const Diagram& g, const std::vector<int>& face_of_half,
+                       const std::vector<char>& outside) {
+  SiteRegion region;
+  const int faces = static_cast<int>(g.faces.size());
+  for (int f = 0; f < faces && region.face == kNone; ++f)
+    if (!outside[f] && !g.faces[f].bounded) region.face = f;
+  for (int f = 0; f < faces && region.face == kNone; ++f)
+    if (!outside[f]) region.face = f;
+  if (region.face == kNone) return region;
+  std::vector<Mobius> to_face(faces);
+  std::vector<char> reached(faces, 0), arc_used(g.arcs.size(), 0);
+  std::deque<int> queue{region.face};
+  reached[region.face] = 1;
+  while (!queue.empty()) {
+    const int f = queue.front();
+    queue.pop_front();
+    for (const auto& cycle : g.faces[f].boundaries)
+      for (const HalfArc& h : cycle) {
+        const Arc& arc = g.arcs[h.arc];
+        if (arc.frame || arc_used[h.arc]) continue;
+        arc_used[h.arc] = 1;
+        const GeneralizedCircle c = curve_of(arc);
+        const bool f_left_is_inside = std::holds_alternative<voronoi::Line>(arc.curve) ? h.forward : (h.forward == arc.ccw);
+        const GeneralizedCircle side = f_left_is_inside ? c : GeneralizedCircle{-c.A, -c.B, -c.C};
+        region.bounds.push_back(to_face[f].inverse().apply(side));
+        const int other = face_of_half[half_id({h.arc, !h.forward})];
+        if (other == kNone || reached[other]) continue;
+        reached[other] = 1;
+        to_face[other] = Mobius::inversion(c).after(to_face[f]);
+        queue.push_back(other);
+      }
+  }
+  return region;
+}
+
 }  // namespace
 
 Reconstruction recognize(const Diagram& input, const RecognitionOptions& options) {
@@ -129,11 +169,6 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
     clipped = clipped || a.frame;
     a.left_site = a.right_site = kNone;
   }
-  if (g.nodes.empty()) {
-    out.supported = false;
-    out.reason = "graphs without nodes (disjoint circles and lines, paper §3) are not handled yet";
-    return out;
-  }
   voronoi::trace_faces(g, voronoi::FaceLabels::kGeometry);
   const int faces = static_cast<int>(g.faces.size());
   std::vector<int> face_of_half(2 * g.arcs.size(), kNone);
@@ -141,7 +176,8 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
     for (const auto& cycle : g.faces[f].boundaries)
       for (const HalfArc& h : cycle) face_of_half[half_id(h)] = f;
 
-  const double scale = std::max(robust_extent(g.nodes).diagonal(), 1e-300);
+  const Extent extent = graph_extent(g);
+  const double scale = std::max(extent.diagonal(), 1e-300);
   const double tol = options.relative_tolerance * scale;
 
   // Arcs at each node (an arc from a node to itself counts twice). Nodes on the frame are where
@@ -247,10 +283,33 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
     if (found.size() > constraints.size()) start = f, constraints = std::move(found);
     if (constraints.size() >= 6) break;  // plenty: a bounded amount of work for the start face
   }
+  std::optional<SiteRegion> free_root;
   if (start < 0 || constraints.empty()) {
-    out.supported = false;
-    out.reason = "no face has a node that constrains its site (graphs without nodes, paper §3) — not handled yet";
-    return out;
+    // No node fixes any site (paper 5, §3): the root's site ranges over a region.
+    SiteRegion region = root_region(g, face_of_half, outside);
+    if (region.face == kNone) {
+      out.bisector_graph = false;
+      out.reason = "the graph has no face that could hold a site";
+      return out;
+    }
+    const FeasibleRegion fr = feasible_region(region.bounds, Complex(0.5 * (extent.xmin + extent.xmax), 0.5 * (extent.ymin + extent.ymax)),
+                                              std::max(2.0 * scale, 1.0));
+    if (fr.empty) {
+      RecognitionFailure fail;
+      fail.face = region.face;
+      std::ostringstream msg;
+      msg << "no position for the site of face " << region.face << " puts every pair of sites on the two sides of their arc ("
+          << region.bounds.size() << " conditions, paper 5 §3: the solution set is empty)";
+      fail.message = msg.str();
+      out.bisector_graph = false;
+      out.reason = fail.message;
+      out.failure = fail;
+      return out;
+    }
+    region.representative = {fr.representative.real(), fr.representative.imag()};
+    region.margin = fr.margin;
+    start = region.face;
+    free_root = std::move(region);
   }
   auto satisfies = [&](Complex p) {
     for (const Constraint& c : constraints) {
@@ -265,13 +324,14 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
     return true;
   };
   std::vector<Complex> candidates;
-  bool family = false;
+  bool family = free_root.has_value();
+  if (free_root) candidates.push_back({free_root->representative.x, free_root->representative.y});
   for (const Constraint& c : constraints)
     for (const Complex& p : c.points)
       if (satisfies(p) && std::none_of(candidates.begin(), candidates.end(),
                                        [&](Complex q) { return std::abs(q - p) <= tol; }))
         candidates.push_back(p);
-  if (candidates.empty()) {
+  if (candidates.empty() && !free_root) {
     std::vector<GeneralizedCircle> circles;
     for (const Constraint& c : constraints)
       if (c.is_circle) circles.push_back(c.circle);
@@ -481,9 +541,12 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
   out.face_site = solutions.front().face_site;
   if (solutions.size() > 1 && !family)
     for (const auto& s : solutions) out.candidates.push_back(s.sites);
-  out.reason = family ? "every arc separates mirror-image sites; the sites are not unique (a "
-                        "one-parameter family along a solution circle): this is one of them"
-                      : "every arc separates mirror-image sites";
+  out.region = free_root;
+  out.reason = free_root ? "every arc separates mirror-image sites; no node fixes the sites: the site of face " +
+                               std::to_string(free_root->face) + " may lie anywhere in a region (see region), this is one choice"
+               : family  ? "every arc separates mirror-image sites; the sites are not unique (a "
+                           "one-parameter family along a solution circle): this is one of them"
+                         : "every arc separates mirror-image sites";
   if (options.voronoi_check) {
     // The sites must be distinct for a Voronoi diagram; coinciding sites already answer "no".
     try {

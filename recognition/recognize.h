@@ -9,8 +9,14 @@
 // other's inversion in its circle (mirror image in its line) with the lighter site on the disk
 // side. Nodes of any degree constrain the site of a face by the fixed set of the inversions around
 // them (§4.4: a circle, at most two points, or nothing); when all constraints are one circle (faces
-// with at most two nodes, §4.2) the sites form a family and one member is returned, marked so. The answer names the arc and the distance when it fails. Not yet handled here (reported as
-// such, never guessed): graphs without nodes, nodes of degree > 3, frame arcs of clipped maps.
+// with at most two nodes, §4.2) the sites form a family and one member is returned, marked so.
+// When no node constrains any site (graphs of disjoint, possibly nested circles and lines, §3, or
+// nodes whose inversions compose to the identity) every arc still demands that its two sites lie
+// on its two sides; pulled back to one root face through the composed transforms, these demands
+// are generalized disks, intersected by half-space intersection in 3D (feasible_region.h). The
+// region is returned with a representative point, whose propagation is the reconstruction. Frame
+// arcs of clipped maps bound faces but constrain nothing. The answer names the arc and the
+// distance when it fails.
 #pragma once
 
 #include <optional>
@@ -18,6 +24,7 @@
 #include <vector>
 
 #include "recognition/compare.h"
+#include "recognition/generalized_circle.h"
 #include "voronoi/diagram.h"
 
 namespace covmap::recognition {
@@ -49,6 +56,16 @@ struct RecognitionFailure {
   double amount = 0.0;      // by how much (a length)
 };
 
+// Where the site of one face may lie when the graph does not fix it (paper 5, §3): inside every
+// bound (the region where the form is negative). Any point of the region propagates to a valid
+// reconstruction; `representative` is the one returned, `margin` its distance to the boundary.
+struct SiteRegion {
+  int face = voronoi::kNone;
+  std::vector<GeneralizedCircle> bounds;
+  voronoi::Point representative;
+  double margin = 0.0;
+};
+
 struct Reconstruction {
   bool bisector_graph = false;
   bool supported = true;  // false: the input needs a part of the method not implemented yet
@@ -56,7 +73,8 @@ struct Reconstruction {
   std::vector<voronoi::Site> sites;  // weights normalised so that the largest is 1
   std::vector<int> face_site;        // per traced face of the input: index into sites
   std::vector<std::vector<voronoi::Site>> candidates;  // when two solutions survive
-  bool unique = true;  // false: the graph fixes the sites only up to a one-parameter family
+  bool unique = true;  // false: the graph fixes the sites only up to a family (see region)
+  std::optional<SiteRegion> region;  // set when the root site ranges over a 2D region (§3)
   std::optional<RecognitionFailure> failure;
   // "yes" / "no" / "unknown" (check not run, or not a bisector graph), and where the recomputed
   // diagram differs from the input when "no".

@@ -3,6 +3,8 @@
 // RecognitionOptions and CompareOptions with their documentation.)
 #pragma once
 
+#include <cstddef>
+
 namespace covmap::recognition::tolerance {
 
 // Two solution circles whose intersection discriminant is negative by less than this fraction of
@@ -24,5 +26,17 @@ inline constexpr double kSameDirectionCosine = 1e-12;
 // line offsets agree to this fraction of the graph's coordinate magnitude (double rounding of the
 // numbers that state a curve).
 inline constexpr double kRepairRelative = 1e-12;
+
+// feasible_region: how many of the facets where the paraboloid leaves the lifted polyhedron are
+// probed for a representative point. Each probe costs O(m); any one probe already yields a valid
+// point, more only a deeper one.
+inline constexpr std::size_t kMaxProbedFacets = 64;
+// ... and the shortest step (a fraction of the search window's half-size) tried from a boundary
+// point into the region: regions thinner than this are reported as having no interior.
+inline constexpr double kSmallestProbeStep = 1e-9;
+// A facet whose unit normal has a t-component below this fraction of its (x, y) part is vertical: it
+// meets the paraboloid in a line (a line constraint or a side of the window; the normal of an
+// exactly vertical facet, computed from its rounded vertices, is ~1e-17 off).
+inline constexpr double kVerticalFacet = 1e-14;
 
 }  // namespace covmap::recognition::tolerance

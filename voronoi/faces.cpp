@@ -482,7 +482,10 @@ void trace_faces(Diagram& d, FaceLabels labels) {
         for (double x : {p.cx - h, p.cx + h}) {
           double s = std::fmod(p.sense * (std::atan2(dy, x - p.cx) - p.start_angle), kTwoPi);
           if (s < 0) s += kTwoPi;
-          if (s > p.s0 && s < p.s1) out.emplace_back(x, p.tangent(s).y);
+          // A full circle has no end where the ray could pass through a node: its start angle
+          // is an ordinary point (concentric circles are hit exactly there).
+          const bool full = d.arcs[a].from == kNone;
+          if ((s > p.s0 && s < p.s1) || full) out.emplace_back(x, p.tangent(s).y);
         }
       } else if (p.uy != 0) {
         const double s = (y - p.oy) / p.uy;
