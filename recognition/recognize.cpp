@@ -210,10 +210,14 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
   // of arcs (its fixed set: a circle — the solution circle — or at most two points) and a Möbius
   // map for an even number (at most two fixed points, or no constraint when it is the identity).
   struct Constraint {
+    int node = kNone;            // the node it comes from
     bool any = false;            // no constraint
     bool is_circle = false;
     GeneralizedCircle circle;
     std::vector<Complex> points;
+    // Odd degree, fixed set empty: the two circles whose intersection it is miss each other by
+    // this much (how far the node is from being a node of a bisector graph).
+    double gap = 0.0;
   };
   auto node_constraint = [&](int f, int h_out) -> std::optional<Constraint> {
     Mobius h_total;
@@ -247,6 +251,16 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
         c.circle = big;
       } else {
         c.points = intersect(forms[0], forms[1]);
+        if (c.points.empty()) {
+          const auto c0 = forms[0].centre(), c1 = forms[1].centre();
+          const auto r0 = forms[0].radius(), r1 = forms[1].radius();
+          if (c0 && c1 && r0 && r1) {
+            const double between = std::abs(*c0 - *c1);
+            c.gap = std::max(between - *r0 - *r1, std::abs(*r0 - *r1) - between);
+          } else {
+            c.gap = INFINITY;  // an imaginary circle or parallel lines: no point at all
+          }
+        }
       }
     } else {
       const Complex a = h_total.a(), b = h_total.b(), cc = h_total.c(), d = h_total.d();
@@ -278,7 +292,10 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
         if (v == kNone || on_frame[v] || arc.frame) continue;
         if (std::find(seen_nodes.begin(), seen_nodes.end(), v) != seen_nodes.end()) continue;
         seen_nodes.push_back(v);
-        if (auto c = node_constraint(f, half_id(hh)); c && !c->any) found.push_back(*c);
+        if (auto c = node_constraint(f, half_id(hh)); c && !c->any) {
+          c->node = v;
+          found.push_back(*c);
+        }
       }
     if (found.size() > constraints.size()) start = f, constraints = std::move(found);
     if (constraints.size() >= 6) break;  // plenty: a bounded amount of work for the start face
@@ -311,17 +328,28 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
     start = region.face;
     free_root = std::move(region);
   }
+  // How far p is from satisfying every constraint of the start face, and which constraint is
+  // farthest; the point that came closest is named when none satisfies all.
+  struct Violation {
+    double amount = INFINITY;
+    int constraint = -1;
+    Complex at;
+  };
+  Violation closest;
   auto satisfies = [&](Complex p) {
-    for (const Constraint& c : constraints) {
+    Violation v{0.0, -1, p};
+    for (std::size_t k = 0; k < constraints.size(); ++k) {
+      const Constraint& c = constraints[k];
+      double off = INFINITY;
       if (c.is_circle) {
-        if (distance_to(c.circle, p) > tol) return false;
+        off = distance_to(c.circle, p);
       } else {
-        bool near = false;
-        for (const Complex& q : c.points) near = near || std::abs(q - p) <= tol;
-        if (!near) return false;
+        for (const Complex& q : c.points) off = std::min(off, std::abs(q - p));
       }
+      if (off > v.amount) v.amount = off, v.constraint = static_cast<int>(k);
     }
-    return true;
+    if (v.amount < closest.amount) closest = v;
+    return v.amount <= tol;
   };
   std::vector<Complex> candidates;
   bool family = free_root.has_value();
@@ -339,7 +367,18 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
     for (std::size_t i = 0; i < circles.size(); ++i)
       for (std::size_t j = i + 1; j < circles.size(); ++j) {
         const auto pts = intersect(circles[i], circles[j]);
-        if (pts.empty()) continue;
+        if (pts.empty()) {
+          // Where the two circles come closest (on the line of centres): measured, for the
+          // failure's "by how much", never a candidate.
+          const auto ci = circles[i].centre(), cj = circles[j].centre();
+          const auto ri = circles[i].radius();
+          if (ci && cj && ri && std::abs(*cj - *ci) > 0) {
+            const Complex u = (*cj - *ci) / std::abs(*cj - *ci);
+            satisfies(*ci + *ri * u);
+            satisfies(*ci - *ri * u);
+          }
+          continue;
+        }
         distinct_pair = true;
         for (const Complex& p : pts)
           if (satisfies(p) && std::none_of(candidates.begin(), candidates.end(),
@@ -417,6 +456,22 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
     std::ostringstream msg;
     msg << "the solution sets of face " << start << " (" << constraints.size()
         << " nodes) have no common point";
+    const auto empty_set = std::find_if(constraints.begin(), constraints.end(),
+                                        [](const Constraint& c) { return !c.any && !c.is_circle && c.points.empty(); });
+    if (empty_set != constraints.end()) {
+      fail.node = empty_set->node;
+      fail.x = g.nodes[fail.node].x;
+      fail.y = g.nodes[fail.node].y;
+      fail.amount = empty_set->gap;
+      msg << ": going around node " << fail.node << " maps no point to itself (its solution circles miss by "
+          << fail.amount << ")";
+    } else if (closest.constraint >= 0) {
+      fail.node = constraints[closest.constraint].node;
+      fail.x = closest.at.real();
+      fail.y = closest.at.imag();
+      fail.amount = closest.amount;
+      msg << ": the best candidate misses the solution set of node " << fail.node << " by " << fail.amount;
+    }
     fail.message = msg.str();
     out.reason = fail.message;
     out.failure = fail;

@@ -1,0 +1,126 @@
+// Graphs that are not bisector graphs must be rejected with the failing element named: a node moved
+// (its arcs bent to still meet there) and two faces merged (an arc removed). The graphs stay
+// geometrically consistent — every arc ends on its own circle — so only the bisector conditions
+// can reject them.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "recognition/recognize.h"
+#include "voronoi/arc_path.h"
+#include "voronoi/engine.h"
+
+namespace covmap::recognition {
+namespace {
+
+using voronoi::Arc;
+using voronoi::Diagram;
+using voronoi::kNone;
+using voronoi::Point;
+using voronoi::Site;
+
+std::vector<Site> random_sites(std::mt19937_64& rng, int n) {
+  std::uniform_real_distribution<double> u(0.0, 1.0), w(1.0, 3.0);
+  std::vector<Site> s;
+  for (int i = 0; i < n; ++i) s.push_back({std::to_string(i), u(rng), u(rng), w(rng)});
+  return s;
+}
+
+// The circle through a, m, b, travelled from a via m to b.
+std::optional<std::pair<voronoi::Circle, bool>> circle_through(Point a, Point m, Point b) {
+  const double d = 2 * (a.x * (m.y - b.y) + m.x * (b.y - a.y) + b.x * (a.y - m.y));
+  if (std::abs(d) < 1e-14) return std::nullopt;
+  const double a2 = a.x * a.x + a.y * a.y, m2 = m.x * m.x + m.y * m.y, b2 = b.x * b.x + b.y * b.y;
+  const double cx = (a2 * (m.y - b.y) + m2 * (b.y - a.y) + b2 * (a.y - m.y)) / d;
+  const double cy = (a2 * (b.x - m.x) + m2 * (a.x - b.x) + b2 * (m.x - a.x)) / d;
+  const bool ccw = (m.x - a.x) * (b.y - a.y) - (m.y - a.y) * (b.x - a.x) < 0;  // a→m→b turns left
+  return std::make_pair(voronoi::Circle{cx, cy, std::hypot(a.x - cx, a.y - cy)}, ccw);
+}
+
+int degree(const Diagram& d, int v) {
+  int k = 0;
+  for (const Arc& a : d.arcs) k += (a.from == v) + (a.to == v);
+  return k;
+}
+
+TEST(Negative, ShiftedNodeIsRejected) {
+  std::mt19937_64 rng(31);
+  std::uniform_real_distribution<double> angle(0.0, 6.283185307179586);
+  int rejected = 0, tried = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const auto sites = random_sites(rng, 15);
+    Diagram d = voronoi::build_diagram(sites);
+    // An inner node of degree 3 whose arcs are bounded circle arcs to other nodes.
+    int v = kNone;
+    for (std::size_t n = 0; n < d.nodes.size() && v == kNone; ++n) {
+      if (degree(d, static_cast<int>(n)) != 3) continue;
+      bool ok = true;
+      for (const Arc& a : d.arcs)
+        if ((a.from == static_cast<int>(n) || a.to == static_cast<int>(n)) &&
+            (!std::holds_alternative<voronoi::Circle>(a.curve) || a.from == kNone || a.to == kNone || a.from == a.to))
+          ok = false;
+      if (ok) v = static_cast<int>(n);
+    }
+    if (v == kNone) continue;
+    const Point moved{d.nodes[v].x + 1e-3 * std::cos(angle(rng)), d.nodes[v].y + 1e-3 * std::sin(angle(rng))};
+    bool bent = true;
+    for (Arc& a : d.arcs) {
+      if (a.from != v && a.to != v) continue;
+      const voronoi::ArcPathView p = voronoi::arc_path(a, d.nodes);
+      const Point mid = p.at(0.5 * (p.s0 + p.s1));
+      const Point from = a.from == v ? moved : Point{d.nodes[a.from].x, d.nodes[a.from].y};
+      const Point to = a.to == v ? moved : Point{d.nodes[a.to].x, d.nodes[a.to].y};
+      const auto c = circle_through(from, mid, to);
+      if (!c) {
+        bent = false;
+        break;
+      }
+      a.curve = c->first;
+      a.ccw = c->second;
+    }
+    if (!bent) continue;
+    d.nodes[v] = {moved.x, moved.y};
+    ++tried;
+    const Reconstruction r = recognize(d);
+    EXPECT_FALSE(r.bisector_graph) << "trial " << trial;
+    if (r.bisector_graph) continue;
+    ASSERT_TRUE(r.failure.has_value()) << "trial " << trial;
+    EXPECT_TRUE(r.failure->arc != kNone || r.failure->face != kNone || r.failure->node != kNone) << r.reason;
+    EXPECT_GT(r.failure->amount, 0.0) << "trial " << trial << ": " << r.reason;
+    ++rejected;
+  }
+  EXPECT_GT(tried, 40);
+  EXPECT_EQ(rejected, tried);
+}
+
+TEST(Negative, MergedFacesAreRejected) {
+  std::mt19937_64 rng(32);
+  int rejected = 0, tried = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const auto sites = random_sites(rng, 15);
+    Diagram d = voronoi::build_diagram(sites);
+    // Remove a bounded arc between two distinct nodes of degree 3: its two faces become one.
+    int victim = kNone;
+    for (std::size_t a = 0; a < d.arcs.size() && victim == kNone; ++a) {
+      const Arc& arc = d.arcs[a];
+      if (arc.from == kNone || arc.to == kNone || arc.from == arc.to) continue;
+      if (degree(d, arc.from) == 3 && degree(d, arc.to) == 3) victim = static_cast<int>(a);
+    }
+    if (victim == kNone) continue;
+    d.arcs.erase(d.arcs.begin() + victim);
+    d.faces.clear();
+    ++tried;
+    const Reconstruction r = recognize(d);
+    EXPECT_FALSE(r.bisector_graph) << "trial " << trial;
+    if (r.bisector_graph) continue;
+    ASSERT_TRUE(r.failure.has_value()) << "trial " << trial;
+    EXPECT_TRUE(r.failure->arc != kNone || r.failure->face != kNone || r.failure->node != kNone) << r.reason;
+    ++rejected;
+  }
+  EXPECT_GT(tried, 40);
+  EXPECT_EQ(rejected, tried);
+}
+
+}  // namespace
+}  // namespace covmap::recognition
