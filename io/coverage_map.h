@@ -1,0 +1,86 @@
+// covmap::io coverage maps: the map a radio planning tool exports, as input to `covmap audit`.
+//
+// Accepted: a GeoJSON FeatureCollection (RFC 7946) with one Feature per coverage cell. Each
+// feature's geometry is a Polygon or MultiPolygon; its properties name the serving sensor under
+// options.sensor_property (a non-empty string, or an integer, kept as its decimal text). Several
+// features may name the same sensor (a sensor's area may come in pieces); they stay separate
+// MapCells. Positions are [lon, lat] in degrees (extra values such as altitude are ignored), or
+// planar [x, y] with options.planar. A legacy "crs" member is accepted only as described in
+// io/geojson_crs.h. Unknown members are ignored.
+//
+// Guaranteed on success: at least one cell; every cell has at least one polygon; every ring has at
+// least 3 vertices, finite coordinates, no two consecutive vertices equal, no repeated closing
+// vertex, non-zero area, and no proper crossing of two of its edges or of an edge of another ring
+// of the same polygon; outer rings run counter-clockwise and holes clockwise (input is reversed as
+// needed). Lon/lat input is projected with LocalProjection about the centre of the bounding box of
+// all vertices (for a map straddling the antimeridian, the centre of the shortest longitude range
+// covering it), and max_scale_distortion reports the worst |k/k_centre - 1| over the vertices (see
+// io/local_projection.h for why that is the number to watch). Cells keep file order.
+//
+// Not checked (left to the audit, which can report them as findings rather than refuse the map):
+// rings that touch themselves or overlap along an edge without crossing, holes outside their outer
+// ring, and overlaps or gaps between different polygons or cells.
+//
+// Rejected with one InputError listing every problem found, each naming the feature
+// ("features[3] (sensor 'a')") and, where useful, the ring and the position index as in the file:
+// unreadable file; invalid JSON (byte offset and line; this includes number literals too large for
+// a double, the only way a JSON file can hold a non-finite coordinate); a top level that is not a
+// FeatureCollection; no features; a feature that is not a Feature or has no Polygon/MultiPolygon
+// geometry (other geometry types are named); a missing, empty, or non-string/non-integer sensor
+// property (the message lists the properties that do exist); malformed coordinates; rings not
+// closed (RFC 7946: the last position repeats the first); rings with fewer than 3 distinct
+// vertices, zero area, or doubling back at their lowest vertex; lon/lat out of range without
+// --planar ("coordinates look planar (x=...); use --planar"); self-crossing rings; and mixed or
+// non-WGS84 crs declarations. Consecutive repeated positions are dropped silently.
+//
+// Cost: O(V log V) for V vertices (crossings are found with a sparse grid whose cell size follows
+// the edge lengths; only rings with wildly uneven edge density approach the quadratic worst case).
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "io/local_projection.h"
+#include "voronoi/diagram.h"
+
+namespace covmap::io {
+
+using Ring = std::vector<voronoi::Point>;  // implicitly closed: last point != first
+
+struct MapPolygon {
+  Ring outer;               // counter-clockwise
+  std::vector<Ring> holes;  // each clockwise
+};
+
+// One GeoJSON feature.
+struct MapCell {
+  std::string sensor;                 // the sensor property's value
+  int feature = 0;                    // index in the file's "features" array, for messages
+  std::vector<MapPolygon> polygons;   // one for a Polygon, one per member of a MultiPolygon
+};
+
+struct CoverageMap {
+  std::vector<MapCell> cells;                 // planar metres (projected when geographic)
+  std::optional<LocalProjection> projection;  // set for lon/lat input
+  double max_scale_distortion = 0.0;          // worst |k/k0 - 1| over all vertices (0 for planar)
+  std::size_t vertex_count = 0;               // vertices kept, over all rings
+};
+
+struct CoverageMapOptions {
+  // The feature property that names the serving sensor (`covmap audit --sensor-property`).
+  std::string sensor_property = "sensor";
+  // true: positions are planar [x, y] in metres (or any one unit), used as they are, and any crs
+  // declaration is accepted (`--planar`). false: positions are WGS84 [lon, lat].
+  bool planar = false;
+};
+
+CoverageMap read_coverage_map(const std::filesystem::path& path, const CoverageMapOptions& options = {});
+
+// Parses text already in memory; `file` is only used in error messages.
+CoverageMap parse_coverage_map(std::string_view text, const std::string& file, const CoverageMapOptions& options = {});
+
+}  // namespace covmap::io

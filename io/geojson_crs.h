@@ -1,0 +1,44 @@
+// Legacy GeoJSON "crs" members (internal to io/), shared by the coverage-map and sensor readers.
+//
+// RFC 7946 dropped "crs": GeoJSON is WGS84 longitude/latitude. Files written to the 2008 draft, and
+// some tools today, still declare one on the collection, a feature or a geometry. covmap accepts a
+// declaration of WGS84 lon/lat ("urn:ogc:def:crs:OGC:1.3:CRS84", "EPSG:4326" and their URL and
+// short spellings; GeoJSON writers put EPSG:4326 coordinates in lon/lat order too) and, with
+// --planar, any declaration at all, since the user then vouches for planar coordinates. Refused:
+// a non-WGS84 declaration without --planar (the numbers are not lon/lat), and declarations that
+// disagree with each other (the file mixes coordinate systems, and no single reading is right).
+// "crs": null means "no declaration" and is ignored.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "io/input_error.h"
+#include "io/json_fields.h"
+
+namespace covmap::io::detail {
+
+struct CrsDeclaration {
+  std::string path;   // JSON path of the member: "crs", "features[3].crs", "features[3].geometry.crs"
+  std::string name;   // as declared ("EPSG:32632", "link https://..."), for messages
+  bool wgs84 = false; // declares WGS84 longitude/latitude
+  // Two declarations mean the same system iff their keys are equal (all WGS84 spellings share one).
+  std::string key() const { return wgs84 ? "WGS84" : name; }
+};
+
+// Collects the declarations of one file, then judges them all at once.
+class CrsDeclarations {
+ public:
+  // Records object["crs"] if present and not null; `path` is the object's JSON path.
+  void add(const Json& object, const std::string& path);
+
+  // Problems with the declarations, each reported once per distinct system (a file whose 5000
+  // features all declare EPSG:32632 gets one message, not 5000). Empty when all is well.
+  std::vector<InputProblem> problems(bool planar) const;
+
+ private:
+  std::vector<CrsDeclaration> declared_;
+};
+
+}  // namespace covmap::io::detail

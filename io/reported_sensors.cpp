@@ -1,0 +1,82 @@
+#include "io/reported_sensors.h"
+
+#include <cctype>
+#include <cmath>
+#include <stdexcept>
+
+#include "io/reported_sensors_parsers.h"
+#include "io/text_util.h"
+
+namespace covmap::io {
+namespace {
+
+void check_alpha(double alpha) {
+  if (!std::isfinite(alpha) || !(alpha > 0)) {
+    throw std::invalid_argument("path-loss exponent alpha must be finite and > 0 (got " + detail::format_number(alpha) + ")");
+  }
+}
+
+void check_options(const ReportedSensorOptions& options) {
+  if (options.alpha) check_alpha(*options.alpha);
+  if (options.planar && options.projection) {
+    throw std::invalid_argument("ReportedSensorOptions: planar and a projection are mutually exclusive");
+  }
+}
+
+bool looks_like_json(std::string_view text) {
+  const auto first = text.find_first_not_of(" \t\r\n");
+  return first != std::string_view::npos && text[first] == '{';
+}
+
+// kDetect with `json` set: the text is JSON (a .json file), and its content says which kind.
+std::vector<ReportedSensor> parse(std::string_view text, const std::string& file, const ReportedSensorOptions& options,
+                                  SensorsFormat format, bool json) {
+  check_options(options);
+  if (format == SensorsFormat::kDetect && !json && !looks_like_json(text)) format = SensorsFormat::kCsv;
+  std::vector<InputProblem> file_problems;
+  std::vector<detail::SensorDraft> drafts;
+  if (format == SensorsFormat::kCsv) {
+    drafts = detail::parse_sensors_csv(text, file);
+  } else {
+    const detail::Json root = detail::parse_json(text, file);
+    // covmap.sites/1 carries a "format" member; GeoJSON carries a "type" instead.
+    const bool geojson = format == SensorsFormat::kGeoJson ||
+                         (format == SensorsFormat::kDetect && root.is_object() && !root.contains("format") &&
+                          root.contains("type"));
+    drafts = geojson ? detail::parse_sensors_geojson(root, file, options.planar, file_problems)
+                     : detail::parse_sensors_sites_json(root, file);
+  }
+  return detail::finish_sensors(std::move(drafts), file, options, std::move(file_problems));
+}
+
+}  // namespace
+
+double weight_from_power(double tx_power_dbm, double alpha) {
+  check_alpha(alpha);
+  return std::pow(10.0, tx_power_dbm / (10.0 * alpha));
+}
+
+double power_from_weight(double weight, double alpha) {
+  check_alpha(alpha);
+  if (!std::isfinite(weight) || !(weight > 0)) {
+    throw std::invalid_argument("weight must be finite and > 0 (got " + detail::format_number(weight) + ")");
+  }
+  return 10.0 * alpha * std::log10(weight);
+}
+
+std::vector<ReportedSensor> parse_reported_sensors(std::string_view text, const std::string& file,
+                                                   const ReportedSensorOptions& options, SensorsFormat format) {
+  return parse(text, file, options, format, false);
+}
+
+std::vector<ReportedSensor> read_reported_sensors(const std::filesystem::path& path, const ReportedSensorOptions& options) {
+  check_options(options);  // before touching the file: a bad option is not the file's fault
+  std::string ext = path.extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const SensorsFormat format = ext == ".csv"       ? SensorsFormat::kCsv
+                               : ext == ".geojson" ? SensorsFormat::kGeoJson
+                                                   : SensorsFormat::kDetect;
+  return parse(detail::read_text_file(path), path.string(), options, format, ext == ".json");
+}
+
+}  // namespace covmap::io

@@ -1,0 +1,44 @@
+// The three syntaxes behind read_reported_sensors (internal to io/). Each turns its file into
+// drafts holding the values as read plus the problems found on the way; finish_sensors then applies
+// the same rules and wording to all of them.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "io/input_error.h"
+#include "io/json_fields.h"
+#include "io/reported_sensors.h"
+
+namespace covmap::io::detail {
+
+struct SensorDraft {
+  ReportedSensor sensor;  // id, strengths, sigmas and origin as read; position not yet set
+  std::optional<voronoi::Point> xy;  // a planar position as read
+  std::optional<LonLat> lon_lat;     // a geographic position as read
+  int line = 0;                      // line in a CSV file; 0 for JSON
+  std::vector<std::string> problems;  // what is wrong so far, in the order found
+  bool usable() const { return problems.empty(); }
+};
+
+// How a problem names the sensor: "sensor 'b'" in CSV (the line says where), "features[3]
+// (sensor 'b')" in JSON.
+std::string sensor_label(const SensorDraft& draft);
+
+// Each parser throws InputError for problems with the file as a whole (syntax, header, format
+// tag) and leaves per-sensor problems in the drafts. `file_problems` receives problems of the file
+// that do not stop the reading (the GeoJSON crs checks).
+std::vector<SensorDraft> parse_sensors_csv(std::string_view text, const std::string& file);
+std::vector<SensorDraft> parse_sensors_sites_json(const Json& root, const std::string& file);
+std::vector<SensorDraft> parse_sensors_geojson(const Json& root, const std::string& file, bool planar,
+                                               std::vector<InputProblem>& file_problems);
+
+// Value checks, strengths, projection, unique ids and positions; then the sensors, or one
+// InputError listing `file_problems` followed by every sensor's problems in file order.
+std::vector<ReportedSensor> finish_sensors(std::vector<SensorDraft> drafts, const std::string& file,
+                                           const ReportedSensorOptions& options,
+                                           std::vector<InputProblem> file_problems);
+
+}  // namespace covmap::io::detail
