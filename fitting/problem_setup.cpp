@@ -1,0 +1,118 @@
+#include "fitting/problem_setup.h"
+
+#include <cmath>
+#include <numeric>
+
+#include <ceres/manifold.h>
+
+namespace covmap::fitting::detail {
+namespace {
+
+// Union-find over site indices.
+class Groups {
+ public:
+  explicit Groups(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
+  int find(int i) {
+    while (parent_[i] != i) i = parent_[i] = parent_[parent_[i]];
+    return i;
+  }
+  void join(int a, int b) { parent_[find(a)] = find(b); }
+
+ private:
+  std::vector<int> parent_;
+};
+
+}  // namespace
+
+Layout make_layout(std::span<const voronoi::Site> initial, std::span<const BoundarySample> samples,
+                   std::span<const SitePrior> priors) {
+  const std::size_t n = initial.size();
+  Layout layout;
+  layout.sample_count.assign(n, 0);
+  layout.group.assign(n, voronoi::kNone);
+  Groups groups(n);
+  for (const BoundarySample& s : samples) {
+    ++layout.sample_count[s.site_a];
+    ++layout.sample_count[s.site_b];
+    groups.join(s.site_a, s.site_b);
+  }
+  std::vector<int> group_of_root(n, voronoi::kNone);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (layout.sample_count[i] == 0) continue;
+    int& g = group_of_root[groups.find(static_cast<int>(i))];
+    if (g == voronoi::kNone) {
+      g = static_cast<int>(layout.group_reference.size());
+      layout.group_reference.push_back(static_cast<int>(i));
+    }
+    layout.group[i] = g;
+    // Reference: the largest initial weight of the group (first such site on ties).
+    if (initial[i].weight > initial[layout.group_reference[g]].weight) layout.group_reference[g] = static_cast<int>(i);
+  }
+  std::vector<bool> weight_prior(layout.group_reference.size(), false);
+  for (const SitePrior& p : priors) {
+    if (p.log_weight_sigma > 0 && layout.group[p.site] != voronoi::kNone) weight_prior[layout.group[p.site]] = true;
+  }
+  std::size_t observed = 0;
+  for (std::size_t i = 0; i < n; ++i) observed += layout.sample_count[i] > 0 ? 1 : 0;
+  layout.free_parameters = kSiteBlockSize * observed;
+  for (std::size_t g = 0; g < weight_prior.size(); ++g) {
+    if (weight_prior[g]) {
+      layout.group_reference[g] = voronoi::kNone;
+    } else {
+      --layout.free_parameters;
+    }
+  }
+  return layout;
+}
+
+std::vector<SiteBlock> initial_blocks(std::span<const voronoi::Site> initial) {
+  std::vector<SiteBlock> blocks;
+  blocks.reserve(initial.size());
+  for (const voronoi::Site& s : initial) blocks.push_back({s.x, s.y, std::log(s.weight)});
+  return blocks;
+}
+
+BuiltProblem build_problem(std::vector<SiteBlock>& blocks, const Layout& layout, std::span<const BoundarySample> samples,
+                           std::span<const SitePrior> priors, ceres::LossFunction* loss,
+                           std::span<const double> sample_factor) {
+  ceres::Problem::Options problem_options;
+  problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  BuiltProblem built{std::make_unique<ceres::Problem>(problem_options), {}};
+  ceres::Problem& problem = *built.problem;
+  // Blocks in site order, so the covariance and diagnostics see a stable column order.
+  for (std::size_t i = 0; i < blocks.size(); ++i) {
+    if (layout.sample_count[i] > 0) problem.AddParameterBlock(blocks[i].data(), kSiteBlockSize);
+  }
+  built.sample_blocks.reserve(samples.size());
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const BoundarySample& s = samples[i];
+    const double factor = sample_factor.empty() ? 1.0 : sample_factor[i];
+    built.sample_blocks.push_back(problem.AddResidualBlock(BoundaryResidual::Create(s.p.x, s.p.y, factor / s.sigma),
+                                                           loss, blocks[s.site_a].data(), blocks[s.site_b].data()));
+  }
+  for (const SitePrior& p : priors) {
+    if (layout.sample_count[p.site] == 0) continue;  // unobserved sites are set from priors directly
+    if (p.position_sigma > 0) {
+      problem.AddResidualBlock(PositionPriorResidual::Create(p.position.x, p.position.y, p.position_sigma), nullptr,
+                               blocks[p.site].data());
+    }
+    if (p.log_weight_sigma > 0) {
+      problem.AddResidualBlock(LogWeightPriorResidual::Create(p.log_weight, p.log_weight_sigma), nullptr,
+                               blocks[p.site].data());
+    }
+  }
+  for (int reference : layout.group_reference) {
+    if (reference == voronoi::kNone) continue;
+    problem.SetManifold(blocks[reference].data(), new ceres::SubsetManifold(kSiteBlockSize, {kLogWeightIndex}));
+  }
+  return built;
+}
+
+double geometric_residual(const std::vector<SiteBlock>& blocks, const BoundarySample& sample) {
+  const BoundaryResidual residual(sample.p.x, sample.p.y, 1.0);
+  double r = 0.0;
+  residual(blocks[sample.site_a].data(), blocks[sample.site_b].data(), &r);
+  return r;
+}
+
+}  // namespace covmap::fitting::detail

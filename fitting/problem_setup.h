@@ -1,0 +1,52 @@
+// The least-squares problem of refine_sites: parameter blocks, groups and their gauge, residuals.
+//
+// One Ceres problem is built to solve (robust loss, samples at 1/σ) and another, over the same
+// parameter memory, for the covariance (no loss, samples at √c_i/σ with c_i the IRLS weight over the
+// noise variance factor, fitting/robust_loss.h). Both share this construction so the two cannot
+// disagree about blocks, priors or gauge.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include <ceres/problem.h>
+
+#include "fitting/refine.h"
+#include "fitting/residuals.h"
+
+namespace covmap::fitting::detail {
+
+using SiteBlock = std::array<double, kSiteBlockSize>;  // x, y, u = log(weight)
+
+// Which sites the samples tie together, and how each group's weight scale is fixed.
+struct Layout {
+  std::vector<int> sample_count;     // per site
+  std::vector<int> group;            // per site: its connected group, kNone for a site without samples
+  std::vector<int> group_reference;  // per group: the site whose u is held, kNone if weight priors fix the scale
+  std::size_t free_parameters = 0;   // tangent dimension of the problem
+};
+
+Layout make_layout(std::span<const voronoi::Site> initial, std::span<const BoundarySample> samples,
+                   std::span<const SitePrior> priors);
+
+std::vector<SiteBlock> initial_blocks(std::span<const voronoi::Site> initial);
+
+struct BuiltProblem {
+  std::unique_ptr<ceres::Problem> problem;
+  std::vector<ceres::ResidualBlockId> sample_blocks;  // per sample, in order
+};
+
+// Blocks of the sites with samples, one residual per sample (its 1/σ times sample_factor[i], or
+// times 1 when sample_factor is empty) under `loss` (not owned; may be nullptr), their priors, and
+// the gauge (a SubsetManifold holding u of each group_reference). `blocks` must outlive the problem.
+BuiltProblem build_problem(std::vector<SiteBlock>& blocks, const Layout& layout, std::span<const BoundarySample> samples,
+                           std::span<const SitePrior> priors, ceres::LossFunction* loss,
+                           std::span<const double> sample_factor = {});
+
+// Signed first-order distance of sample p from the bisector of its sites at `blocks` (units of p).
+double geometric_residual(const std::vector<SiteBlock>& blocks, const BoundarySample& sample);
+
+}  // namespace covmap::fitting::detail

@@ -1,0 +1,160 @@
+// refine_sites: validate, lay out the problem, solve, then uncertainty, unobserved sites, and the
+// normalisation of the weights. The pieces live in problem_setup, robust_loss and covariance.
+#include "fitting/refine.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include <ceres/solver.h>
+
+#include "fitting/covariance.h"
+#include "fitting/problem_setup.h"
+#include "fitting/robust_loss.h"
+#include "fitting/tolerances.h"
+#include "fitting/validate.h"
+
+namespace covmap::fitting {
+namespace {
+
+using detail::SiteBlock;
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+ceres::Solver::Options solver_options(const RefineOptions& options) {
+  ceres::Solver::Options solver;
+  solver.max_num_iterations = options.max_iterations;
+  solver.num_threads = options.threads;
+  solver.function_tolerance = tolerance::kFunctionTolerance;
+  solver.parameter_tolerance = tolerance::kParameterTolerance;
+  solver.gradient_tolerance = tolerance::kGradientTolerance;
+  // Each sample couples two sites: the normal equations are as sparse as the map's adjacency.
+  if (ceres::IsSparseLinearAlgebraLibraryTypeAvailable(ceres::SUITE_SPARSE)) {
+    solver.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
+    solver.sparse_linear_algebra_library_type = ceres::SUITE_SPARSE;
+  } else if (ceres::IsSparseLinearAlgebraLibraryTypeAvailable(ceres::EIGEN_SPARSE)) {
+    solver.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
+    solver.sparse_linear_algebra_library_type = ceres::EIGEN_SPARSE;
+  } else {
+    solver.linear_solver_type = ceres::DENSE_QR;
+  }
+  solver.minimizer_progress_to_stdout = options.verbose;
+  solver.logging_type = options.verbose ? ceres::PER_MINIMIZER_ITERATION : ceres::SILENT;
+  return solver;
+}
+
+// Precision-weighted combination of several independent Gaussian estimates of one quantity.
+struct Combined {
+  double precision = 0.0;  // Σ 1/σ²
+  double weighted = 0.0;   // Σ value/σ²
+  void add(double value, double sigma) {
+    precision += 1.0 / (sigma * sigma);
+    weighted += value / (sigma * sigma);
+  }
+  bool any() const { return precision > 0; }
+  double mean() const { return weighted / precision; }
+  double sigma() const { return any() ? 1.0 / std::sqrt(precision) : kInfinity; }
+};
+
+// Sites without samples: set from their priors (SiteStatus::kFromPrior) or left as they were.
+void settle_unobserved(std::vector<SiteBlock>& blocks, const detail::Layout& layout, std::span<const SitePrior> priors,
+                       const RefineOptions& options, RefineResult& result) {
+  for (std::size_t i = 0; i < blocks.size(); ++i) {
+    if (layout.sample_count[i] > 0) continue;
+    ++result.summary.sites_without_samples;
+    Combined x, y, u;
+    for (const SitePrior& p : priors) {
+      if (static_cast<std::size_t>(p.site) != i) continue;
+      if (p.position_sigma > 0) {
+        x.add(p.position.x, p.position_sigma);
+        y.add(p.position.y, p.position_sigma);
+      }
+      if (p.log_weight_sigma > 0) u.add(p.log_weight, p.log_weight_sigma);
+    }
+    if (x.any()) {
+      blocks[i][0] = x.mean();
+      blocks[i][1] = y.mean();
+    }
+    if (u.any()) blocks[i][kLogWeightIndex] = u.mean();
+    result.status[i] = (x.any() || u.any()) ? SiteStatus::kFromPrior : SiteStatus::kUnobserved;
+    if (options.compute_covariance) {
+      SiteUncertainty& s = result.uncertainty[i];
+      s.sigma_x = x.sigma();
+      s.sigma_y = y.sigma();
+      s.sigma_log_weight = u.sigma();
+      s.log_weight_reference = voronoi::kNone;
+      s.available = x.any() && u.any();
+    }
+  }
+}
+
+}  // namespace
+
+RefineResult refine_sites(std::span<const voronoi::Site> initial, std::span<const BoundarySample> samples,
+                          std::span<const SitePrior> priors, const RefineOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  std::string error;
+  if (!options.IsValid(&error)) throw std::invalid_argument("refine_sites: invalid options: " + error);
+  detail::validate_inputs(initial, samples, priors);
+
+  const detail::Layout layout = detail::make_layout(initial, samples, priors);
+  std::vector<SiteBlock> blocks = detail::initial_blocks(initial);
+  const std::unique_ptr<ceres::LossFunction> loss = detail::make_loss(options.loss, options.loss_scale);
+
+  RefineResult result;
+  result.uncertainty.resize(initial.size());
+  result.status.assign(initial.size(), SiteStatus::kRefined);
+  RefineSummary& summary = result.summary;
+  summary.samples = samples.size();
+
+  if (samples.empty()) {
+    summary.converged = true;
+    summary.termination = "NO_SAMPLES";
+    summary.message = "no boundary samples: nothing to refine";
+  } else {
+    detail::BuiltProblem built = detail::build_problem(blocks, layout, samples, priors, loss.get());
+    ceres::Solver::Summary solved;
+    ceres::Solve(solver_options(options), built.problem.get(), &solved);
+    summary.converged = solved.termination_type == ceres::CONVERGENCE;
+    summary.termination = ceres::TerminationTypeToString(solved.termination_type);
+    summary.message = solved.message;
+    summary.iterations = solved.num_successful_steps + solved.num_unsuccessful_steps;
+    summary.initial_cost = solved.initial_cost;
+    summary.final_cost = solved.final_cost;
+  }
+
+  result.sample_residual.reserve(samples.size());
+  std::vector<double> r_sigma;  // σ units, for the noise estimate
+  r_sigma.reserve(samples.size());
+  double sum_squares = 0.0;
+  for (const BoundarySample& s : samples) {
+    const double r = detail::geometric_residual(blocks, s);
+    result.sample_residual.push_back(r);
+    r_sigma.push_back(r / s.sigma);
+    sum_squares += r * r;
+  }
+  if (!samples.empty()) summary.rms_residual = std::sqrt(sum_squares / samples.size());
+
+  if (options.compute_covariance && !samples.empty()) {
+    detail::CovarianceOutcome covariance =
+        detail::site_covariance(blocks, layout, samples, priors, loss.get(), r_sigma, options);
+    result.uncertainty = std::move(covariance.uncertainty);
+    summary.noise_variance_factor = covariance.variance_factor;
+    if (!covariance.remark.empty()) summary.message += (summary.message.empty() ? "" : "; ") + covariance.remark;
+  }
+  settle_unobserved(blocks, layout, priors, options, result);
+
+  // Largest weight 1: subtract the largest log weight (no overflow for any weight ratio).
+  double largest = -kInfinity;
+  for (const SiteBlock& b : blocks) largest = std::max(largest, b[kLogWeightIndex]);
+  result.sites.reserve(initial.size());
+  for (std::size_t i = 0; i < initial.size(); ++i) {
+    result.sites.push_back({initial[i].id, blocks[i][0], blocks[i][1], std::exp(blocks[i][kLogWeightIndex] - largest)});
+  }
+  summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace covmap::fitting

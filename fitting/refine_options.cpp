@@ -1,0 +1,62 @@
+// The small value-type members of refine.h: names of enums, option validation, the summary line.
+#include <cmath>
+#include <cstdio>
+
+#include "fitting/refine.h"
+
+namespace covmap::fitting {
+
+std::string to_string(RobustLoss loss) {
+  switch (loss) {
+    case RobustLoss::kNone: return "none";
+    case RobustLoss::kHuber: return "huber";
+    case RobustLoss::kCauchy: return "cauchy";
+  }
+  return "unknown";
+}
+
+bool from_string(std::string_view name, RobustLoss* loss) {
+  for (RobustLoss candidate : {RobustLoss::kNone, RobustLoss::kHuber, RobustLoss::kCauchy}) {
+    if (name == to_string(candidate)) {
+      *loss = candidate;
+      return true;
+    }
+  }
+  return false;
+}
+
+std::string to_string(SiteStatus status) {
+  switch (status) {
+    case SiteStatus::kRefined: return "refined";
+    case SiteStatus::kFromPrior: return "from-prior";
+    case SiteStatus::kUnobserved: return "unobserved";
+  }
+  return "unknown";
+}
+
+bool RefineOptions::IsValid(std::string* error) const {
+  auto fail = [&](std::string message) {
+    if (error != nullptr) *error = std::move(message);
+    return false;
+  };
+  if (loss != RobustLoss::kNone && loss != RobustLoss::kHuber && loss != RobustLoss::kCauchy) {
+    return fail("loss is not a RobustLoss value");
+  }
+  if (!std::isfinite(loss_scale) || !(loss_scale > 0)) {
+    return fail("loss_scale must be finite and positive (got " + std::to_string(loss_scale) + ")");
+  }
+  if (max_iterations < 1) return fail("max_iterations must be at least 1 (got " + std::to_string(max_iterations) + ")");
+  if (threads < 1) return fail("threads must be at least 1 (got " + std::to_string(threads) + ")");
+  return true;
+}
+
+std::string RefineSummary::brief() const {
+  char buffer[256];
+  std::snprintf(buffer, sizeof buffer, "%s after %d iterations, cost %.6g -> %.6g, rms %.6g over %zu samples, %.3g s",
+                termination.c_str(), iterations, initial_cost, final_cost, rms_residual, samples, seconds);
+  std::string line = buffer;
+  if (sites_without_samples > 0) line += ", " + std::to_string(sites_without_samples) + " sites without samples";
+  return line;
+}
+
+}  // namespace covmap::fitting
