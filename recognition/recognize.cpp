@@ -30,6 +30,20 @@ GeneralizedCircle curve_of(const Arc& a) {
 
 int half_id(const HalfArc& h) { return 2 * h.arc + (h.forward ? 0 : 1); }
 
+// The arc's curve in the frame z' = (z - v) / L of one of its nodes v: forced through the origin
+// (the node is on the arc up to rounding) and scaled so its largest coefficient is 1.
+GeneralizedCircle curve_through_origin(const Arc& a, Complex v, double L) {
+  if (const auto* c = std::get_if<voronoi::Circle>(&a.curve)) {
+    const Complex centre = (Complex(c->cx, c->cy) - v) / L;
+    const double s = std::max(1.0, std::abs(centre));
+    return {1.0 / s, -centre / s, 0.0};
+  }
+  const auto& l = std::get<voronoi::Line>(a.curve);
+  GeneralizedCircle g = GeneralizedCircle::line({0.0, 0.0}, {l.dx, l.dy});
+  g.B /= std::abs(g.B);
+  return g;
+}
+
 // Distance from z to a generalized circle (|value| / |gradient| to first order, exact for circles
 // and lines).
 double distance_to(const GeneralizedCircle& g, Complex z) {
@@ -219,12 +233,22 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
     // this much (how far the node is from being a node of a bisector graph).
     double gap = 0.0;
   };
+  // Composed in the node's own frame z' = (z - v) / L, where every arc at v passes through the
+  // origin and has a normalised form: an arc of a huge circle (nearly equal weights) is then a
+  // near-reflection with O(1) matrix entries, where in plane coordinates its inversion matrix has
+  // entries ~R² that cancel in the composition (the solution circle would lose ~(R/L)² digits).
   auto node_constraint = [&](int f, int h_out) -> std::optional<Constraint> {
+    const Arc& first = g.arcs[h_out / 2];
+    const int v = (h_out % 2 == 0) ? first.from : first.to;
+    const Complex at(g.nodes[v].x, g.nodes[v].y);
+    const int far_end = (h_out % 2 == 0) ? first.to : first.from;
+    double L = far_end != kNone ? std::abs(Complex(g.nodes[far_end].x, g.nodes[far_end].y) - at) : 0.0;
+    if (!(L > 0)) L = scale;
     Mobius h_total;
     int h = h_out, face = f, steps = 0;
     do {
       if (h == kNone || g.arcs[h / 2].frame) return std::nullopt;
-      h_total = Mobius::inversion(curve_of(g.arcs[h / 2])).after(h_total);
+      h_total = Mobius::inversion(curve_through_origin(g.arcs[h / 2], at, L)).after(h_total);
       const int twin = h ^ 1;
       face = face_of_half[twin];
       h = next_half[twin];
@@ -275,6 +299,14 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
         c.points.push_back((-(d - a) - disc) / (2.0 * cc));
       }
     }
+    // Back to the plane.
+    const Mobius to_plane(Complex(L, 0.0), at, Complex(0.0, 0.0), Complex(1.0, 0.0), false);
+    // A solution circle through the node whose radius exceeds L / matrix_tolerance is its tangent
+    // line to within the tolerance over the node's neighbourhood: a line (A exactly 0), so that a
+    // rounding-level A does not become a circle of radius 1e16 in plane coordinates.
+    if (c.is_circle && std::abs(c.circle.A) <= options.matrix_tolerance * std::abs(c.circle.B)) c.circle.A = 0.0;
+    if (c.is_circle) c.circle = to_plane.apply(c.circle);
+    for (Complex& p : c.points) p = at + L * p;
     return c;
   };
 
@@ -364,8 +396,23 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
     for (const Constraint& c : constraints)
       if (c.is_circle) circles.push_back(c.circle);
     bool distinct_pair = false;
+    // Two solution circles that agree within the tolerance are one circle (computed around two
+    // nodes of the same three bisectors, e.g.): their "intersection" would be rounding noise.
+    auto same_circle = [&](const GeneralizedCircle& a, const GeneralizedCircle& b) {
+      if (a.is_line() != b.is_line()) return false;
+      if (a.is_line()) {
+        const Complex ua = a.B / std::abs(a.B), ub = b.B / std::abs(b.B);
+        const double sine = std::abs(std::imag(std::conj(ua) * ub));
+        const Complex pa = -a.C * a.B / (2.0 * std::norm(a.B));
+        return sine <= options.matrix_tolerance && distance_to(b, pa) <= tol;
+      }
+      const auto ca = a.centre(), cb = b.centre();
+      const auto ra = a.radius(), rb = b.radius();
+      return ca && cb && ra && rb && std::abs(*ca - *cb) <= tol && std::abs(*ra - *rb) <= tol;
+    };
     for (std::size_t i = 0; i < circles.size(); ++i)
       for (std::size_t j = i + 1; j < circles.size(); ++j) {
+        if (same_circle(circles[i], circles[j])) continue;
         const auto pts = intersect(circles[i], circles[j]);
         if (pts.empty()) {
           // Where the two circles come closest (on the line of centres): measured, for the
