@@ -45,23 +45,15 @@
 #include <vector>
 
 #include "io/local_projection.h"
+#include "recognition/coverage_cells.h"
 #include "voronoi/diagram.h"
 
 namespace covmap::io {
 
-using Ring = std::vector<voronoi::Point>;  // implicitly closed: last point != first
-
-struct MapPolygon {
-  Ring outer;               // counter-clockwise
-  std::vector<Ring> holes;  // each clockwise
-};
-
-// One GeoJSON feature.
-struct MapCell {
-  std::string sensor;                 // the sensor property's value
-  int feature = 0;                    // index in the file's "features" array, for messages
-  std::vector<MapPolygon> polygons;   // one for a Polygon, one per member of a MultiPolygon
-};
+// The plain map types live in recognition/coverage_cells.h (the cleaning step reads them).
+using Ring = recognition::Ring;
+using MapPolygon = recognition::CellPolygon;
+using MapCell = recognition::CoverageCell;
 
 struct CoverageMap {
   std::vector<MapCell> cells;                 // planar metres (projected when geographic)
