@@ -5,7 +5,7 @@
 //  1. The true sensors are placed in a plane (metres): planar input as given; lon/lat input through
 //     MapProjection (transverse Mercator about `centre`, see map_projection.h). Weights are scaled
 //     so the largest is 1, and tx_power_dbm = 10 · alpha · log10(weight) + reference_power_dbm.
-//  2. A best-server raster of square bins (best_server_raster.h): each bin centre belongs to the
+//  2. A best-server raster of square bins (voronoi/best_server_raster.h): each bin centre belongs to the
 //     sensor minimizing distance / weight, ties to the lowest index; with max_range_m, bins whose
 //     smallest distance / weight exceeds it are not covered.
 //  3. The cells: each 4-connected component of a sensor's bins becomes a polygon with its holes
@@ -35,12 +35,16 @@
 #include <string>
 #include <vector>
 
-#include "datasets/generate/best_server_raster.h"
+#include "voronoi/best_server_raster.h"
 #include "datasets/generate/map_projection.h"
 #include "datasets/generate/reported_sensors.h"
 #include "voronoi/diagram.h"
 
 namespace covmap::mapgen {
+
+using voronoi::BestServerRaster;
+using voronoi::RasterGrid;
+using voronoi::best_server_raster;
 
 enum class OutputFrame {
   kPlanar,  // coordinates in metres in the generator's plane

@@ -1,16 +1,37 @@
-#include "datasets/generate/best_server_raster.h"
+#include "voronoi/best_server_raster.h"
 
 #include <gtest/gtest.h>
 
-#include "mapgen_test_util.h"
+#include <cmath>
+#include <limits>
+#include <random>
+#include <string>
 
-namespace covmap::mapgen {
+namespace covmap::voronoi {
 namespace {
 
-using testing::brute_force_owner;
-using testing::random_test_sites;
-using voronoi::kNone;
-using voronoi::Site;
+// The oracle: every site, plain arithmetic.
+int brute_force_owner(const std::vector<Site>& sites, double px, double py, double max_range = -1.0) {
+  int best = kNone;
+  double best_d = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < sites.size(); ++k) {
+    const double dx = px - sites[k].x, dy = py - sites[k].y;
+    const double d = std::sqrt(dx * dx + dy * dy) / sites[k].weight;
+    if (d < best_d) best_d = d, best = static_cast<int>(k);
+  }
+  if (max_range >= 0.0 && best_d > max_range) return kNone;
+  return best;
+}
+
+// Sites uniform in a size × size square, weights log-uniform in [1/ratio, 1].
+std::vector<Site> random_test_sites(int n, double size, double ratio, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<Site> sites;
+  for (int k = 0; k < n; ++k)
+    sites.push_back(Site{"s" + std::to_string(k), size * unit(rng), size * unit(rng), std::exp(-std::log(ratio) * unit(rng))});
+  return sites;
+}
 
 // Every bin against brute force over all sites, bit for bit.
 void expect_brute_force(const std::vector<Site>& sites, const RasterGrid& grid, std::optional<double> range) {
@@ -50,7 +71,7 @@ TEST(BestServerRaster, TiesGoToTheLowestIndex) {
   // sites. Swapping the site order must swap the winners on those bins.
   std::vector<Site> sites;
   for (int a = 0; a < 5; ++a)
-    for (int b = 0; b < 5; ++b) sites.push_back(Site{testing::numbered("g", a * 5 + b), 4.0 * a, 4.0 * b, 1.0});
+    for (int b = 0; b < 5; ++b) sites.push_back(Site{"g" + std::to_string(a * 5 + b), 4.0 * a, 4.0 * b, 1.0});
   std::vector<Site> reversed(sites.rbegin(), sites.rend());
   const RasterGrid grid{-0.5, -0.5, 1.0, 17, 17};  // bin centres at the integers 0..16
   expect_brute_force(sites, grid, std::nullopt);
@@ -85,4 +106,4 @@ TEST(BestServerRaster, RejectsEmptyGrids) {
 }
 
 }  // namespace
-}  // namespace covmap::mapgen
+}  // namespace covmap::voronoi

@@ -1,13 +1,13 @@
-#include "datasets/generate/best_server_raster.h"
+#include "voronoi/best_server_raster.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
-#include "datasets/generate/mapgen_tolerances.h"
+#include "voronoi/tolerances.h"
 
-namespace covmap::mapgen {
+namespace covmap::voronoi {
 namespace {
 
 using voronoi::kNone;
@@ -128,4 +128,4 @@ BestServerRaster best_server_raster(std::span<const Site> sites, const RasterGri
   return out;
 }
 
-}  // namespace covmap::mapgen
+}  // namespace covmap::voronoi

@@ -1,14 +1,13 @@
-// covmap::mapgen best-server raster: which sensor serves the centre of each square bin.
+// covmap::voronoi best-server raster: which sensor serves the centre of each square bin.
 //
 // Contract
-//  - Input: sites with finite coordinates and finite positive weights (validated by the caller;
-//    coverage_map_generator.h does), a RasterGrid with nx, ny >= 1 and bin > 0, and optionally a
+//  - Input: sites with finite coordinates and finite positive weights (validated by the caller), a RasterGrid with nx, ny >= 1 and bin > 0, and optionally a
 //    maximum weighted range.
 //  - Output: for every bin (i, j), label = the index of the site minimizing
 //        d(p, s) = std::sqrt(dx * dx + dy * dy) / s.weight,   p = (grid.center_x(i), grid.center_y(j)),
 //    computed exactly so in double; ties go to the lowest index. A bin whose smallest d exceeds
 //    max_weighted_range gets kNone (not covered). The result equals brute force over all sites bit
-//    for bit: pruning only ever discards sites that cannot win (see mapgen_tolerances.h).
+//    for bit: pruning only ever discards sites that cannot win (see voronoi/tolerances.h).
 //  - Cost: the raster is split recursively into blocks; each block keeps only the sites whose
 //    lower bound on d over the block is within the block's upper bound on the best d. Blocks with
 //    one candidate are filled without per-bin work when no range is set. About O(bins + n log bins)
@@ -22,7 +21,7 @@
 
 #include "voronoi/diagram.h"
 
-namespace covmap::mapgen {
+namespace covmap::voronoi {
 
 // A raster of nx × ny square bins; bin (i, j) covers [x0 + i·bin, x0 + (i+1)·bin] × [y0 + j·bin, ...].
 // Rows run south to north (j = 0 is the southernmost row), columns west to east.
@@ -47,7 +46,7 @@ struct BestServerRaster {
 };
 
 // Throws std::invalid_argument for an empty grid or a non-positive bin.
-BestServerRaster best_server_raster(std::span<const voronoi::Site> sites, const RasterGrid& grid,
+BestServerRaster best_server_raster(std::span<const Site> sites, const RasterGrid& grid,
                                     std::optional<double> max_weighted_range = std::nullopt);
 
-}  // namespace covmap::mapgen
+}  // namespace covmap::voronoi
