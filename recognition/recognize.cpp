@@ -11,6 +11,7 @@
 #include "recognition/extent.h"
 #include "recognition/feasible_region.h"
 #include "recognition/mobius.h"
+#include "recognition/node_frame.h"
 #include "voronoi/clip.h"
 #include "voronoi/engine.h"
 #include "voronoi/faces.h"
@@ -29,20 +30,6 @@ GeneralizedCircle curve_of(const Arc& a) {
 }
 
 int half_id(const HalfArc& h) { return 2 * h.arc + (h.forward ? 0 : 1); }
-
-// The arc's curve in the frame z' = (z - v) / L of one of its nodes v: forced through the origin
-// (the node is on the arc up to rounding) and scaled so its largest coefficient is 1.
-GeneralizedCircle curve_through_origin(const Arc& a, Complex v, double L) {
-  if (const auto* c = std::get_if<voronoi::Circle>(&a.curve)) {
-    const Complex centre = (Complex(c->cx, c->cy) - v) / L;
-    const double s = std::max(1.0, std::abs(centre));
-    return {1.0 / s, -centre / s, 0.0};
-  }
-  const auto& l = std::get<voronoi::Line>(a.curve);
-  GeneralizedCircle g = GeneralizedCircle::line({0.0, 0.0}, {l.dx, l.dy});
-  g.B /= std::abs(g.B);
-  return g;
-}
 
 // Distance from z to a generalized circle (|value| / |gradient| to first order, exact for circles
 // and lines).
@@ -194,19 +181,13 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
   const double scale = std::max(extent.diagonal(), 1e-300);
   const double tol = options.relative_tolerance * scale;
 
-  // Arcs at each node (an arc from a node to itself counts twice). Nodes on the frame are where
-  // the map was cut, not where sites meet: they give no solution circle.
-  std::vector<std::vector<int>> arcs_at(g.nodes.size());
+  // Nodes on the frame are where the map was cut, not where sites meet: they give no solution
+  // circle.
   std::vector<char> on_frame(g.nodes.size(), 0);
-  for (std::size_t a = 0; a < g.arcs.size(); ++a) {
-    for (int v : {g.arcs[a].from, g.arcs[a].to}) {
-      if (v == kNone) continue;
-      if (g.arcs[a].frame) on_frame[v] = 1;
-      else arcs_at[v].push_back(static_cast<int>(a));
-    }
-  }
-  for (std::size_t v = 0; v < g.nodes.size(); ++v)
-    if (on_frame[v]) arcs_at[v].clear();
+  for (const Arc& a : g.arcs)
+    if (a.frame)
+      for (int v : {a.from, a.to})
+        if (v != kNone) on_frame[v] = 1;
   // The face outside the frame (on the right of frame arcs) has no site.
   std::vector<char> outside(faces, 0);
   for (std::size_t a = 0; a < g.arcs.size(); ++a)
@@ -524,7 +505,6 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
     out.failure = fail;
     return out;
   }
-
   // Propagate each candidate breadth first and verify every arc.
   std::vector<Reconstruction> solutions;
   std::optional<RecognitionFailure> last_failure;

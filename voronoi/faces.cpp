@@ -53,10 +53,6 @@ double segment_area2(const ArcPathView& p, int id) {
   return travel_sense * p.r * p.r * (sweep - std::sin(sweep));
 }
 
-double angle_between(Point a, Point b) {  // signed angle from a to b in (-π, π]
-  return std::atan2(a.x * b.y - a.y * b.x, a.x * b.x + a.y * b.y);
-}
-
 // A point at infinity: the direction angle, and the offset that orders parallel arcs.
 struct AtInfinity {
   double angle = 0.0;
@@ -194,6 +190,15 @@ void trace_faces(Diagram& d, FaceLabels labels) {
       return key_less(infinity_key(d, a, false), infinity_key(d, b, false));
     });
 
+  // Per half-arc: the angle of its direction of travel where it starts, and its curvature in that
+  // direction (computed once; next_of compares them at every node).
+  std::vector<double> depart_angle(halves, 0.0), depart_curvature(halves, 0.0);
+  for (int h = 0; h < halves; ++h) {
+    if (info(d, h).start == kNone) continue;
+    const Point t = travel_direction(path_of(h), h, 0);
+    depart_angle[h] = std::atan2(t.y, t.x);
+    depart_curvature[h] = path_of(h).curvature() * (h % 2 == 0 ? 1.0 : -1.0);
+  }
   auto next_of = [&](int h) -> int {
     const HalfInfo hi = info(d, h);
     const Arc& arc = d.arcs[h / 2];
@@ -219,19 +224,16 @@ void trace_faces(Diagram& d, FaceLabels labels) {
     // first outgoing arc clockwise from the reversed incoming direction (the face is on the left);
     // of arcs leaving in the same direction, the one bending more to the left lies at larger
     // angles next to the node, so the clockwise sweep from the back direction meets it first.
-    const Point in = travel_direction(path_of(h), h, 1);
-    const Point back{-in.x, -in.y};
-    auto travel_curvature = [&](int x) {
-      return path_of(x).curvature() * (x % 2 == 0 ? 1.0 : -1.0);
-    };
-    const double back_curvature = travel_curvature(h ^ 1);
+    // The reversed incoming direction is the departure of the twin half-arc h ^ 1.
+    const double back_angle = depart_angle[h ^ 1];
+    const double back_curvature = depart_curvature[h ^ 1];
     double best_angle = 1e9, best_curvature = 0.0;
     for (int c : outgoing(hi.end)) {
       if (label(c) != label(h) || c == (h ^ 1)) continue;
-      const Point t = travel_direction(path_of(c), c, 0);
-      double cw = -angle_between(back, t);
+      // Clockwise angle from the back direction to c's departure, in (0, 2π].
+      double cw = std::fmod(back_angle - depart_angle[c], kTwoPi);
       if (cw <= 0) cw += kTwoPi;
-      const double k = travel_curvature(c);
+      const double k = depart_curvature[c];
       // Leaving along the way we came: right of the returning arc (bending less left) comes first
       // in the sweep, left of it last.
       if (cw < tolerance::kParallelAngle || cw > kTwoPi - tolerance::kParallelAngle)
@@ -284,7 +286,6 @@ void trace_faces(Diagram& d, FaceLabels labels) {
     }
     if (closed) cycles.push_back(std::move(cyc));
   }
-
   // Outer cycles make faces; clockwise cycles are holes of the face of their site containing them.
   std::unordered_map<int, std::vector<int>> faces_of_site;
   std::vector<const Cycle*> holes;
@@ -334,10 +335,13 @@ void trace_faces(Diagram& d, FaceLabels labels) {
     std::vector<std::vector<int>> cells;
     std::vector<int> always;
   } grid;
-  {
-    std::vector<std::array<double, 4>> boxes(d.faces.size());
+  // Built on first use: most graphs have no hole that needs a containment test.
+  bool grid_built = false;
+  auto build_grid = [&]() {
+    grid_built = true;
+    std::vector<std::array<double, 4>> boxes(outer_area.size());
     double gx0 = INFINITY, gy0 = INFINITY, gx1 = -INFINITY, gy1 = -INFINITY;
-    for (std::size_t f = 0; f < d.faces.size(); ++f) {
+    for (std::size_t f = 0; f < outer_area.size(); ++f) {
       std::array<double, 4> b = {INFINITY, INFINITY, -INFINITY, -INFINITY};
       for (const HalfArc& h : d.faces[f].boundaries.front()) {
         const ArcPathView& p = paths[h.arc];
@@ -370,13 +374,13 @@ void trace_faces(Diagram& d, FaceLabels labels) {
     }
     if (std::isfinite(gx0)) {
       const double extent = std::max(gx1 - gx0, gy1 - gy0);
-      const int side = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(d.faces.size()))), 1, 2048);
+      const int side = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(outer_area.size()))), 1, 2048);
       grid.x0 = gx0, grid.y0 = gy0, grid.cell = std::max(extent / side, 1e-300);
       grid.nx = std::clamp(static_cast<int>((gx1 - gx0) / grid.cell) + 1, 1, 4096);
       grid.ny = std::clamp(static_cast<int>((gy1 - gy0) / grid.cell) + 1, 1, 4096);
       grid.cells.resize(static_cast<std::size_t>(grid.nx) * grid.ny);
     }
-    for (std::size_t f = 0; f < d.faces.size(); ++f) {
+    for (std::size_t f = 0; f < outer_area.size(); ++f) {
       const auto& b = boxes[f];
       if (!std::isfinite(b[0]) || !std::isfinite(b[2]) || grid.cells.empty()) {
         grid.always.push_back(static_cast<int>(f));
@@ -389,8 +393,9 @@ void trace_faces(Diagram& d, FaceLabels labels) {
       for (int i = i0; i <= i1; ++i)
         for (int j = j0; j <= j1; ++j) grid.cells[static_cast<std::size_t>(i) * grid.ny + j].push_back(static_cast<int>(f));
     }
-  }
+  };
   auto candidate_faces = [&](Point p) {
+    if (!grid_built) build_grid();
     std::vector<int> out = grid.always;
     if (!grid.cells.empty()) {
       const int i = static_cast<int>(std::floor((p.x - grid.x0) / grid.cell));
@@ -416,11 +421,21 @@ void trace_faces(Diagram& d, FaceLabels labels) {
     for (std::size_t k = 0; k < holes.size(); ++k)
       for (const HalfArc& h : holes[k]->arcs) hole_of_half[half_id(h.arc, h.forward)] = static_cast<int>(k);
     // Arc boxes in a uniform grid (rows by y, for horizontal rays).
-    std::vector<std::array<double, 4>> box(d.arcs.size());
+    // A few holes (the usual case: the outer boundary of a weighted diagram) are cheaper to test
+    // against every arc than to grid all arcs for.
+    const bool scan_all = holes.size() <= 16;
+    std::vector<std::array<double, 4>> box(scan_all ? 0 : d.arcs.size());
     double bx0 = INFINITY, by0 = INFINITY, bx1 = -INFINITY, by1 = -INFINITY;
     std::vector<int> unbounded_arcs;
+    std::vector<char> is_unbounded(d.arcs.size(), 0);
     for (std::size_t a = 0; a < d.arcs.size(); ++a) {
       const ArcPathView& p = paths[a];
+      if (!p.circle && (!std::isfinite(p.s0) || !std::isfinite(p.s1))) {
+        unbounded_arcs.push_back(static_cast<int>(a));
+        is_unbounded[a] = 1;
+        continue;
+      }
+      if (scan_all) continue;
       std::array<double, 4> b = {INFINITY, INFINITY, -INFINITY, -INFINITY};
       auto grow = [&](Point q) {
         b = {std::min(b[0], q.x), std::min(b[1], q.y), std::max(b[2], q.x), std::max(b[3], q.y)};
@@ -433,19 +448,16 @@ void trace_faces(Diagram& d, FaceLabels labels) {
           if (t < 0) t += kTwoPi;
           if (t >= p.s0 && t <= p.s1) grow(p.at(t));
         }
-      } else if (std::isfinite(p.s0) && std::isfinite(p.s1)) {
+      } else {
         grow(p.at(p.s0));
         grow(p.at(p.s1));
-      } else {
-        unbounded_arcs.push_back(static_cast<int>(a));
-        continue;
       }
       box[a] = b;
       bx0 = std::min(bx0, b[0]), by0 = std::min(by0, b[1]), bx1 = std::max(bx1, b[2]), by1 = std::max(by1, b[3]);
     }
     // Grid bounds from the central 98% of node coordinates: far arcs of nearly tangent bisectors
     // would otherwise stretch the cells over the whole diagram (they land in the border cells).
-    if (d.nodes.size() >= 100) {
+    if (!scan_all && d.nodes.size() >= 100) {
       std::vector<double> nx, ny;
       for (const Node& n : d.nodes)
         if (std::isfinite(n.x) && std::isfinite(n.y)) nx.push_back(n.x), ny.push_back(n.y);
@@ -458,10 +470,10 @@ void trace_faces(Diagram& d, FaceLabels labels) {
     }
     const int side = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(d.arcs.size()))), 1, 2048);
     const double cw = std::max((bx1 - bx0) / side, 1e-300), ch = std::max((by1 - by0) / side, 1e-300);
-    std::vector<std::vector<int>> cell(static_cast<std::size_t>(side) * side);
-    if (std::isfinite(bx0))
+    std::vector<std::vector<int>> cell(scan_all ? 0 : static_cast<std::size_t>(side) * side);
+    if (!scan_all && std::isfinite(bx0))
       for (std::size_t a = 0; a < d.arcs.size(); ++a) {
-        if (std::find(unbounded_arcs.begin(), unbounded_arcs.end(), static_cast<int>(a)) != unbounded_arcs.end()) continue;
+        if (is_unbounded[a]) continue;
         const auto& b = box[a];
         const int i0 = std::clamp(static_cast<int>((b[0] - bx0) / cw), 0, side - 1);
         const int i1 = std::clamp(static_cast<int>((b[2] - bx0) / cw), 0, side - 1);
@@ -494,7 +506,11 @@ void trace_faces(Diagram& d, FaceLabels labels) {
     };
     std::vector<std::pair<double, double>> xs;
     std::vector<int> stamp(d.arcs.size(), -1);
-    const double eps_x = 1e-12 * std::max(bx1 - bx0, by1 - by0);
+    if (scan_all)  // the extent for eps_x from the nodes (no arc boxes were made)
+      for (const Node& n : d.nodes)
+        if (std::isfinite(n.x) && std::isfinite(n.y))
+          bx0 = std::min(bx0, n.x), bx1 = std::max(bx1, n.x), by0 = std::min(by0, n.y), by1 = std::max(by1, n.y);
+    const double eps_x = std::isfinite(bx0) ? 1e-12 * std::max(bx1 - bx0, by1 - by0) : 0.0;
     for (std::size_t k = 0; k < holes.size(); ++k) {
       // Rightmost point of the hole.
       Point right{-INFINITY, 0};
@@ -511,7 +527,7 @@ void trace_faces(Diagram& d, FaceLabels labels) {
           if (t >= p.s0 && t <= p.s1) consider(p.at(t));
         }
       }
-      if (!std::isfinite(right.x) || !std::isfinite(bx0)) continue;
+      if (!std::isfinite(right.x) || (!scan_all && !std::isfinite(bx0))) continue;
       double best_x = INFINITY, best_ty = 0;
       int best_arc = -1;
       bool ambiguous = false;
@@ -524,8 +540,11 @@ void trace_faces(Diagram& d, FaceLabels labels) {
         }
       };
       for (int a : unbounded_arcs) test_arc(a);
-      const int j = std::clamp(static_cast<int>((right.y - by0) / ch), 0, side - 1);
-      for (int i = std::clamp(static_cast<int>((right.x - bx0) / cw), 0, side - 1); i < side; ++i) {
+      if (scan_all)
+        for (std::size_t a = 0; a < d.arcs.size(); ++a)
+          if (!is_unbounded[a]) test_arc(static_cast<int>(a));
+      const int j = scan_all ? 0 : std::clamp(static_cast<int>((right.y - by0) / ch), 0, side - 1);
+      for (int i = scan_all ? side : std::clamp(static_cast<int>((right.x - bx0) / cw), 0, side - 1); i < side; ++i) {
         if (i > 0 && best_x < bx0 + i * cw) break;  // the nearest hit is left of this cell
         for (int a : cell[static_cast<std::size_t>(j) * side + i]) {
           if (stamp[a] == static_cast<int>(k)) continue;  // an arc spans several cells
