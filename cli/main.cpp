@@ -1,11 +1,18 @@
 // covmap: reconstruct and verify sensor coverage maps. This file only wires the subcommands.
 #include <CLI/CLI.hpp>
+#include <glog/logging.h>
 
+#include <string>
+
+#include "cli/audit_command.h"
 #include "cli/check_command.h"
 #include "cli/diagram_command.h"
 #include "cli/recognize_command.h"
 
 int main(int argc, char** argv) {
+  // Ceres reports through glog (e.g. rank-deficient covariances); covmap states what matters in its
+  // own reports, so the program keeps stderr for its own messages.
+  FLAGS_minloglevel = google::GLOG_FATAL;
   CLI::App app{"covmap: multiplicatively weighted Voronoi diagrams of sensor coverage maps"};
   app.require_subcommand(1);
   covmap::cli::DiagramOptions diagram;
@@ -16,6 +23,9 @@ int main(int argc, char** argv) {
   covmap::cli::CompareCommandOptions compare;
   covmap::cli::setup_recognize(app, recognize);
   covmap::cli::setup_compare(app, compare);
+  covmap::cli::AuditCommandOptions audit;
+  for (int k = 0; k < argc; ++k) audit.command_line += (k ? " " : "") + std::string(argv[k]);
+  covmap::cli::setup_audit(app, audit);
   CLI11_PARSE(app, argc, argv);
   return 0;
 }

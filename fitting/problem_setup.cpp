@@ -101,9 +101,18 @@ BuiltProblem build_problem(std::vector<SiteBlock>& blocks, const Layout& layout,
                                blocks[p.site].data());
     }
   }
+  std::vector<char> is_reference(blocks.size(), 0);
   for (int reference : layout.group_reference) {
     if (reference == voronoi::kNone) continue;
+    is_reference[reference] = 1;
     problem.SetManifold(blocks[reference].data(), new ceres::SubsetManifold(kSiteBlockSize, {kLogWeightIndex}));
+  }
+  // A log weight wandering tens of units away (a weight ratio beyond 1e13) only happens on the
+  // way to a divergence from a bad start; bounding it keeps the residuals finite there.
+  for (std::size_t i = 0; i < blocks.size(); ++i) {
+    if (layout.sample_count[i] == 0 || is_reference[i]) continue;
+    problem.SetParameterLowerBound(blocks[i].data(), kLogWeightIndex, blocks[i][kLogWeightIndex] - tolerance::kLogWeightExcursion);
+    problem.SetParameterUpperBound(blocks[i].data(), kLogWeightIndex, blocks[i][kLogWeightIndex] + tolerance::kLogWeightExcursion);
   }
   return built;
 }

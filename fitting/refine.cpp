@@ -27,7 +27,7 @@ ceres::Solver::Options solver_options(const RefineOptions& options) {
   ceres::Solver::Options solver;
   solver.max_num_iterations = options.max_iterations;
   solver.num_threads = options.threads;
-  solver.function_tolerance = tolerance::kFunctionTolerance;
+  solver.function_tolerance = options.function_tolerance;
   solver.parameter_tolerance = tolerance::kParameterTolerance;
   solver.gradient_tolerance = tolerance::kGradientTolerance;
   // Each sample couples two sites: the normal equations are as sparse as the map's adjacency.

@@ -36,6 +36,7 @@
 #include <string_view>
 #include <vector>
 
+#include "fitting/tolerances.h"
 #include "voronoi/diagram.h"
 
 namespace covmap::fitting {
@@ -75,6 +76,10 @@ struct RefineOptions {
   double loss_scale = 1.0;
   // Solver iterations (Levenberg–Marquardt steps). Must be >= 1.
   int max_iterations = 200;
+  // Stop when an iteration lowers the cost by less than this fraction (Ceres' function tolerance).
+  // The default suits exact data; noisy maps (covmap audit) stop far earlier without losing
+  // anything their noise would not swamp. Must be > 0.
+  double function_tolerance = tolerance::kFunctionTolerance;
   // Per-site 1-σ uncertainties (ceres::Covariance). Costs about one more solver iteration.
   bool compute_covariance = true;
   // true: sample σ are nominal (relative weights only); the noise level is estimated from the

@@ -45,6 +45,9 @@ bool RefineOptions::IsValid(std::string* error) const {
   if (!std::isfinite(loss_scale) || !(loss_scale > 0)) {
     return fail("loss_scale must be finite and positive (got " + std::to_string(loss_scale) + ")");
   }
+  if (!std::isfinite(function_tolerance) || !(function_tolerance > 0)) {
+    return fail("function_tolerance must be finite and positive (got " + std::to_string(function_tolerance) + ")");
+  }
   if (max_iterations < 1) return fail("max_iterations must be at least 1 (got " + std::to_string(max_iterations) + ")");
   if (threads < 1) return fail("threads must be at least 1 (got " + std::to_string(threads) + ")");
   return true;

@@ -43,4 +43,9 @@ inline constexpr int kMaxDenseDiagnosisParameters = 1500;
 // the covariance problem divides sample residuals by its square root.
 inline constexpr double kMinVarianceFactor = 1e-40;
 
+// How far (in log weight, from its starting value) the refinement may move a weight: 30 is a
+// factor of 1e13, far beyond any real pair of sensors, but it stops a diverging start before the
+// weight underflows and the residuals turn into NaN.
+inline constexpr double kLogWeightExcursion = 30.0;
+
 }  // namespace covmap::fitting::tolerance

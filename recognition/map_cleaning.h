@@ -25,11 +25,20 @@
 //     a frame arc is a Line arc between two nodes; frame vertices that are not junctions become
 //     nodes of degree 2 between frame arcs). left_site / right_site hold sensor indices (kNone
 //     outside the frame). arc_chain maps arcs to chains.
+//     Details: a non-frame arc's curve is its chain's fit refitted through the arc's two end
+//     nodes (the line through them, or the best circle of the family through them), so its ends
+//     lie on it exactly; chain.fit stays the free fit. A chain whose two ends are one junction
+//     (a loop through it) becomes two arcs with a degree-2 node at its far point. graph.sites has
+//     one placeholder site per sensor (its id at the area centroid of its cells, weight 1:
+//     recognition estimates the real ones); graph.faces is left empty (recognition traces faces
+//     by geometry).
 //   - report: what was repaired and how often (every repair counted), and the bin size estimate.
-//   Guaranteed: deterministic; O(V log V) in the number of polygon vertices V.
-//   Rejected with std::invalid_argument: an empty map (no cell with a usable ring), and options out
-//   of range (negative or non-finite lengths, line_preference < 1). Everything else is repaired
-//   and counted. docs/CLEANING.md describes every repair and tolerance.
+//   Guaranteed: deterministic; O(V log V + L / s) for V polygon vertices, boundary length L and
+//   snap distance s (the boundaries are sampled every s).
+//   Rejected with std::invalid_argument: an empty map (no cell with a usable ring), options out
+//   of range (negative or non-finite lengths, line_preference < 1), and a snap distance so small
+//   against the boundaries' length that sampling them would take more than 5·10^7 samples.
+//   Everything else is repaired and counted. docs/CLEANING.md describes every repair and tolerance.
 //
 // Why chains are found from vertices rather than by exact shared edges: exports round and jitter
 // coordinates, so two cells' copies of one boundary differ by up to the snap distance, with gaps
@@ -69,8 +78,14 @@ struct BoundaryChain {
   int sensor_b = voronoi::kNone;
   int from = voronoi::kNone;       // junction indices, kNone for a closed loop
   int to = voronoi::kNone;
-  std::vector<voronoi::Point> points;  // ordered along the chain, a on the left of travel
-  FittedCurve fit;                     // non-frame chains only
+  // Ordered along the chain, a on the left of travel. Non-loop chains start and end at their
+  // junctions' positions; non-frame chains' other points are midpoints between the two cells'
+  // copies of the boundary (those within ~1 bin of a junction dropped), frame chains' are the
+  // simplified frame's vertices.
+  std::vector<voronoi::Point> points;
+  // Non-frame chains only: fitted to the chain's boundary points (before the junctions were
+  // added and the points next to them dropped). Lines run along the chain.
+  FittedCurve fit;
 };
 
 struct CleaningReport {

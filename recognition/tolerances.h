@@ -39,4 +39,23 @@ inline constexpr double kSmallestProbeStep = 1e-9;
 // exactly vertical facet, computed from its rounded vertices, is ~1e-17 off).
 inline constexpr double kVerticalFacet = 1e-14;
 
+// Starting values for noisy maps (tolerant_sites.h). A junction's solution circle whose curvature
+// is below this fraction of its normalised linear term is a line; it is kept as a circle of that
+// curvature (radius ~1e9 frame lengths), which the least-squares intersection handles as a line.
+inline constexpr double kEstimateLineCurvature = 1e-9;
+// Going around an even-degree junction is the identity (no constraint) when the composed matrix's
+// off-diagonal entry c is below this fraction of its largest entry.
+inline constexpr double kEstimateIdentity = 1e-9;
+// Tie-breaker between candidate positions with (nearly) equal residuals, e.g. the two
+// intersections of two circles: a pull of this weight (per unit squared length) towards the
+// sensor's own cell, far too weak to move a well-determined estimate.
+inline constexpr double kEstimateCentroidPull = 1e-6;
+// Added to the log-weight system's diagonal to fix each connected component's free common factor.
+inline constexpr double kEstimateGaugePull = 1e-6;
+
+// The audit's first refinement phase holds every log weight loosely about its start: ±3 is a
+// factor of 20, far looser than any boundary constrains a weight, but it stops a weight that a
+// poor start leaves unconstrained from running off (recognition/audit.cpp, phase 2 drops it).
+inline constexpr double kAuditLogWeightPrior = 3.0;
+
 }  // namespace covmap::recognition::tolerance

@@ -77,5 +77,41 @@ code=$?
 "$covmap" compare "$work/d.json" "$work/c.json" >/dev/null
 [ $? -eq 1 ] && ok || fail "compare different"
 
+# 9. recognize: a graph of nested circles without sites or labels (paper 5 §3): a region answer.
+cat > "$work/nested.json" <<'JSON'
+{"format":"covmap.arcgraph/1","nodes":[],"arcs":[
+ {"from":null,"to":null,"circle":{"cx":0,"cy":0,"r":1,"ccw":true}},
+ {"from":null,"to":null,"circle":{"cx":0,"cy":0,"r":0.5,"ccw":true}},
+ {"from":null,"to":null,"circle":{"cx":2.5,"cy":0,"r":1,"ccw":true}}]}
+JSON
+"$covmap" recognize "$work/nested.json" -o "$work/nested_rec.json" >"$work/nested.txt"
+code=$?
+[ "$code" -eq 0 ] && grep -q '"region":{' "$work/nested_rec.json" && ok || fail "nested circles: exit $code, $(cat "$work/nested.txt")"
+
+# 10. audit: a bundled map with its reported sensors writes the four reports; a broken map is
+#     named with its feature and leaves no output directory.
+map="$data/maps/bern"
+if "$covmap" audit "$map/map.geojson" --sensors "$map/sensors.geojson" --alpha 3.5 -o "$work/audit" -q >"$work/audit.txt"; then
+  for f in report.json report.html sensors.geojson diagram.geojson; do
+    [ -s "$work/audit/$f" ] && ok || fail "audit did not write $f"
+  done
+  grep -q '"format": *"covmap.audit/1"' "$work/audit/report.json" && ok || fail "audit report format tag"
+else
+  fail "audit on the bundled Bern map: $(cat "$work/audit.txt")"
+fi
+python3 - "$map/map.geojson" "$work/broken_map.geojson" <<'PY'
+import json, sys
+m = json.load(open(sys.argv[1]))
+ring = m["features"][2]["geometry"]["coordinates"]
+ring = ring[0] if m["features"][2]["geometry"]["type"] == "Polygon" else ring[0][0]
+ring.pop()  # no longer closed
+json.dump(m, open(sys.argv[2], "w"))
+PY
+"$covmap" audit "$work/broken_map.geojson" -o "$work/audit_broken" -q 2>"$work/audit_err.txt"
+code=$?
+[ "$code" -eq 2 ] && ok || fail "broken map: exit $code"
+grep -q "features\[2\]" "$work/audit_err.txt" && ok || fail "broken map: feature not named: $(cat "$work/audit_err.txt")"
+[ ! -e "$work/audit_broken" ] && ok || fail "broken map: output directory left behind"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

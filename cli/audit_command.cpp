@@ -1,0 +1,119 @@
+#include "cli/audit_command.h"
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <random>
+#include <sstream>
+
+#include "cli/cli_support.h"
+#include "io/audit_report.h"
+#include "io/coverage_map.h"
+#include "io/reported_sensors.h"
+#include "recognition/audit.h"
+
+namespace covmap::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Writes the files into a fresh directory beside the target and renames it into place, so that a
+// failure leaves no partial output directory (and an existing one untouched until the end).
+void write_directory(const fs::path& target, const std::vector<std::pair<std::string, std::string>>& files) {
+  const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  fs::create_directories(parent);
+  std::random_device rd;
+  const fs::path temp = parent / (target.filename().string() + ".tmp-" + std::to_string(rd()));
+  try {
+    fs::create_directory(temp);
+    for (const auto& [name, content] : files) {
+      std::ofstream f(temp / name, std::ios::binary);
+      f << content;
+      f.close();
+      if (!f) throw std::runtime_error("cannot write " + (temp / name).string());
+    }
+    if (fs::exists(target)) {
+      const fs::path old = parent / (target.filename().string() + ".old-" + std::to_string(rd()));
+      fs::rename(target, old);
+      fs::rename(temp, target);
+      fs::remove_all(old);
+    } else {
+      fs::rename(temp, target);
+    }
+  } catch (...) {
+    std::error_code ignored;
+    fs::remove_all(temp, ignored);
+    throw;
+  }
+}
+
+}  // namespace
+
+void setup_audit(CLI::App& app, AuditCommandOptions& options) {
+  CLI::App* cmd = app.add_subcommand("audit", "Audit a coverage map against its sensors; write reports to a directory");
+  cmd->add_option("map", options.map_path, "coverage map: GeoJSON FeatureCollection of (Multi)Polygon cells")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--sensors", options.sensors_path, "reported sensors: covmap.sites/1 JSON, CSV or GeoJSON Points")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--alpha", options.alpha, "path-loss exponent (weight = 10^(P/(10·alpha))); enables dB")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--sensor-property", options.sensor_property, "feature property naming the serving sensor")
+      ->capture_default_str();
+  cmd->add_flag("--planar", options.planar, "coordinates are planar metres, not lon/lat");
+  cmd->add_option("--snap", options.snap, "how far apart two cells' copies of a boundary may be (map units; 0 = estimate)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("-o,--output", options.output_dir, "output directory (created or replaced as a whole)")->required();
+  cmd->add_flag("-q,--quiet", options.quiet, "no progress messages");
+  cmd->callback([&options]() { std::exit(run_audit(options)); });
+}
+
+int run_audit(const AuditCommandOptions& options) {
+  return guarded([&]() {
+    io::CoverageMapOptions mo;
+    mo.sensor_property = options.sensor_property;
+    mo.planar = options.planar;
+    const io::CoverageMap map = io::read_coverage_map(options.map_path, mo);
+    std::vector<recognition::ReportedSensorValues> reported;
+    if (!options.sensors_path.empty()) {
+      io::ReportedSensorOptions so;
+      so.alpha = options.alpha;
+      so.planar = options.planar;
+      so.projection = map.projection ? &*map.projection : nullptr;
+      for (const io::ReportedSensor& r : io::read_reported_sensors(options.sensors_path, so))
+        reported.push_back({r.id, r.position, r.weight, r.tx_power_dbm, r.position_sigma_m, r.power_sigma_db});
+    }
+    recognition::AuditOptions ao;
+    ao.alpha = options.alpha;
+    ao.cleaning.snap_distance = options.snap;
+    if (!options.quiet)
+      ao.progress = [](const std::string& stage, double f) {
+        std::cerr << "covmap audit: " << stage << " (" << static_cast<int>(100 * f) << " %)\n";
+      };
+    const recognition::AuditResult result = recognition::audit(map.cells, reported, ao);
+    io::AuditReportContext context{result, map, options.map_path, options.sensors_path, options.alpha,
+                                   options.command_line, &ao};
+    std::ostringstream json, html, sensors, diagram;
+    io::write_audit_json(context, json);
+    io::write_audit_html(context, html);
+    io::write_sensors_geojson(context, sensors);
+    io::write_diagram_geojson(context, diagram);
+    write_directory(options.output_dir, {{"report.json", json.str()},
+                                         {"report.html", html.str()},
+                                         {"sensors.geojson", sensors.str()},
+                                         {"diagram.geojson", diagram.str()}});
+    const io::AuditVerdictCounts counts = io::count_verdicts(result.sensors);
+    std::cout << options.map_path << ": " << result.cleaned.sensors.size() << " sensors in the map, "
+              << counts.reported << " reported: " << counts.consistent << " consistent, " << counts.inconsistent
+              << " inconsistent, " << counts.not_in_map << " not in the map; refined diagram agrees with the map on "
+              << 100.0 * result.refined_agreement.mean_iou << " % of its area";
+    if (result.reported_agreement)
+      std::cout << " (reported sensors: " << 100.0 * result.reported_agreement->mean_iou << " %)";
+    std::cout << " -> " << options.output_dir << "\n";
+    for (const auto& s : result.sensors)
+      if (s.verdict == "inconsistent") std::cout << "  " << s.id << ": " << s.reason << "\n";
+    return kOk;
+  });
+}
+
+}  // namespace covmap::cli

@@ -1,0 +1,29 @@
+// covmap audit MAP.geojson [--sensors S] [--alpha 3.5] -o OUTDIR/: does a coverage map agree with
+// the sensors that drew it? Writes report.json, report.html, sensors.geojson and diagram.geojson
+// into OUTDIR (all or nothing) and prints a short summary.
+// Exit 0: audited (whatever the verdicts); 2: bad input; 4: internal error.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <optional>
+#include <string>
+
+namespace covmap::cli {
+
+struct AuditCommandOptions {
+  std::string map_path;
+  std::string sensors_path;          // empty: no reported sensors
+  std::string output_dir;
+  std::optional<double> alpha;       // path-loss exponent: weight = 10^(P / (10 alpha))
+  std::string sensor_property = "sensor";
+  bool planar = false;               // map and sensors in planar metres, not lon/lat
+  double snap = 0.0;                 // cleaning snap distance (0: estimated)
+  bool quiet = false;                // no progress on stderr
+  std::string command_line;          // recorded in the reports
+};
+
+void setup_audit(CLI::App& app, AuditCommandOptions& options);
+int run_audit(const AuditCommandOptions& options);
+
+}  // namespace covmap::cli

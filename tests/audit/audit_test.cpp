@@ -1,0 +1,163 @@
+// covmap audit on generated maps (datasets/generate): raster best-server maps of known sensors,
+// polygonized, rounded and jittered, with reported sensors carrying small errors and a known set
+// of gross ones. The maps go through the same files and readers as a user's (GeoJSON → io →
+// audit), planar and in lon/lat. Asserted: reconstructed positions within a stated multiple of the
+// bin size; every gross error flagged; few false alarms; the same answers in lon/lat.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <random>
+
+#include "datasets/generate/coverage_map_files.h"
+#include "datasets/generate/coverage_map_generator.h"
+#include "datasets/generate/site_layouts.h"
+#include "io/coverage_map.h"
+#include "io/reported_sensors.h"
+#include "recognition/audit.h"
+
+namespace covmap {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    std::random_device rd;
+    path = fs::temp_directory_path() / ("covmap-audit-test-" + std::to_string(rd()));
+    fs::create_directories(path);
+  }
+  ~TempDir() {
+    std::error_code ignored;
+    fs::remove_all(path, ignored);
+  }
+};
+
+struct AuditRun {
+  mapgen::CoverageMap generated;
+  io::CoverageMap map;
+  recognition::AuditResult result;
+};
+
+// Generates a map, writes it, reads it back like `covmap audit` does and audits it.
+AuditRun run(const mapgen::CoverageMapOptions& options, const std::vector<voronoi::Site>& sites, double alpha) {
+  AuditRun r;
+  r.generated = mapgen::generate_coverage_map(sites, options);
+  TempDir dir;
+  mapgen::write_coverage_map(r.generated, dir.path);
+  io::CoverageMapOptions mo;
+  mo.planar = options.frame == mapgen::OutputFrame::kPlanar;
+  r.map = io::read_coverage_map(dir.path / mapgen::kMapFileName, mo);
+  io::ReportedSensorOptions so;
+  so.alpha = alpha;
+  so.planar = mo.planar;
+  so.projection = r.map.projection ? &*r.map.projection : nullptr;
+  std::vector<recognition::ReportedSensorValues> reported;
+  for (const auto& s : io::read_reported_sensors(dir.path / mapgen::kSensorsFileName, so))
+    reported.push_back({s.id, s.position, s.weight, s.tx_power_dbm, s.position_sigma_m, s.power_sigma_db});
+  recognition::AuditOptions ao;
+  ao.alpha = alpha;
+  r.result = recognition::audit(r.map.cells, reported, ao);
+  return r;
+}
+
+mapgen::CoverageMapOptions base_options(std::uint64_t seed) {
+  mapgen::CoverageMapOptions o;
+  o.bin_size_m = 100.0;
+  o.coordinate_digits = 1;  // decimetres
+  o.vertex_jitter_m = 5.0;
+  o.errors.gross_fraction = 0.1;
+  o.seed = seed;
+  return o;
+}
+
+std::vector<voronoi::Site> sensors(int n, std::uint64_t seed) {
+  mapgen::RandomSitesOptions ro;
+  ro.count = n;
+  ro.width_m = 20'000.0;
+  ro.height_m = 20'000.0;
+  ro.weight_ratio = 3.0;
+  ro.seed = seed;
+  return mapgen::random_sites(ro);
+}
+
+// The reconstruction is measured in bins: how far each sensor that owns a cell of at least
+// 20 bins lies from the truth (smaller cells carry too little boundary to fix a position).
+std::vector<double> position_errors_in_bins(const AuditRun& r, double bin) {
+  std::map<std::string, voronoi::Point> truth;
+  std::map<std::string, std::size_t> bins;
+  for (const auto& t : r.generated.truth) truth[t.id] = t.position, bins[t.id] = t.bins;
+  std::vector<double> out;
+  for (const auto& s : r.result.sensors) {
+    if (!s.in_map || bins[s.id] < 20) continue;
+    voronoi::Point p = s.position;
+    voronoi::Point q = truth[s.id];
+    if (r.generated.projection) {
+      // Truth is in the generator's plane, the audit's in io's: compare through lon/lat.
+      const auto ll = r.map.projection->inverse(p);
+      p = r.generated.projection->forward({ll.lon, ll.lat});
+    }
+    out.push_back(std::hypot(p.x - q.x, p.y - q.y) / bin);
+  }
+  return out;
+}
+
+TEST(Audit, PlanarMapReconstructsSensorsAndFlagsGrossErrors) {
+  const auto sites = sensors(60, 7);
+  const AuditRun r = run(base_options(3), sites, 3.5);
+  ASSERT_EQ(r.result.cleaned.sensors.size(), r.generated.features.size());
+  const auto errors = position_errors_in_bins(r, 100.0);
+  ASSERT_GT(errors.size(), 40u);
+  std::vector<double> sorted = errors;
+  std::sort(sorted.begin(), sorted.end());
+  // Stated accuracy (docs/ACCURACY.md): median within 0.5 bin, 90 % within 2 bins.
+  EXPECT_LT(sorted[sorted.size() / 2], 0.5);
+  EXPECT_LT(sorted[sorted.size() * 9 / 10], 2.0);
+  // Verdicts: every gross error flagged, at most 10 % of the others.
+  std::map<std::string, bool> gross;
+  for (const auto& s : r.generated.reported) gross[s.id] = s.error.gross != mapgen::GrossErrorKind::kNone;
+  int gross_count = 0, flagged_gross = 0, clean_count = 0, false_alarms = 0;
+  for (const auto& s : r.result.sensors) {
+    if (!s.reported || !s.in_map || s.verdict == "undetermined") continue;
+    if (gross[s.id]) {
+      ++gross_count;
+      flagged_gross += s.verdict == "inconsistent";
+      EXPECT_EQ(s.verdict, "inconsistent") << s.id << ": " << s.reason;
+    } else {
+      ++clean_count;
+      false_alarms += s.verdict == "inconsistent";
+    }
+  }
+  EXPECT_GT(gross_count, 3);
+  EXPECT_EQ(flagged_gross, gross_count);
+  EXPECT_LE(false_alarms, clean_count / 10) << false_alarms << " of " << clean_count;
+  EXPECT_GT(r.result.refined_agreement.mean_iou, 0.95);
+}
+
+TEST(Audit, LonLatMapGivesTheSameAnswers) {
+  const auto sites = sensors(40, 11);
+  mapgen::CoverageMapOptions planar = base_options(5);
+  mapgen::CoverageMapOptions lonlat = planar;
+  lonlat.frame = mapgen::OutputFrame::kLonLat;
+  lonlat.centre = mapgen::LonLat{8.5, 47.3};
+  lonlat.coordinate_digits = 7;  // ~1 cm, like the planar decimetres
+  const AuditRun a = run(planar, sites, 3.5);
+  const AuditRun b = run(lonlat, sites, 3.5);
+  ASSERT_EQ(a.result.sensors.size(), b.result.sensors.size());
+  const auto ea = position_errors_in_bins(a, 100.0), eb = position_errors_in_bins(b, 100.0);
+  ASSERT_EQ(ea.size(), eb.size());
+  double worst = 0;
+  for (std::size_t k = 0; k < ea.size(); ++k) worst = std::max(worst, std::abs(ea[k] - eb[k]));
+  EXPECT_LT(worst, 0.25) << "position errors differ by up to " << worst << " bins";
+  std::map<std::string, std::string> va;
+  for (const auto& s : a.result.sensors) va[s.id] = s.verdict;
+  int differ = 0;
+  for (const auto& s : b.result.sensors) differ += va[s.id] != s.verdict;
+  EXPECT_LE(differ, 1);
+  EXPECT_NEAR(a.result.refined_agreement.mean_iou, b.result.refined_agreement.mean_iou, 0.01);
+}
+
+}  // namespace
+}  // namespace covmap
