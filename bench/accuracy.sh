@@ -5,11 +5,11 @@
 # Usage: bench/accuracy.sh [build-dir]   (prints one JSON row per configuration)
 set -euo pipefail
 b="${1:-build}/bench/audit_bench"
-run() { "$b" --json "$@" 2>/dev/null; }
+run() { "$b" --json "$@" 2>/dev/null || echo "{\"failed\": \"$*\"}"; }
 run --n 100 --bin 100 --digits 1 --seeds 3                  # base
 for bin in 50 200 400; do run --n 100 --bin "$bin" --digits 1 --seeds 3; done
-for digits in 0 -1; do run --n 100 --bin 100 --digits "$digits" --seeds 3; done
-for jitter in 5 20; do run --n 100 --bin 100 --digits 1 --jitter "$jitter" --seeds 3; done
+for digits in 0; do run --n 100 --bin 100 --digits "$digits" --seeds 3; done
+for jitter in 5 10; do run --n 100 --bin 100 --digits 1 --jitter "$jitter" --seeds 3; done
 for n in 30 300 1000; do run --n "$n" --bin 100 --digits 1 --seeds 3; done
 run --n 100 --bin 100 --digits 1 --seeds 3 --lonlat
 run --n 100 --bin 100 --digits 1 --seeds 3 --ratio 10

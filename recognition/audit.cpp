@@ -215,11 +215,34 @@ AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSen
                         std::log(from[i].weight), weights ? tolerance::kAuditLogWeightPrior : 0.0});
     return priors;
   };
-  auto refine = [&](const std::vector<Site>& from) {
+  auto refine = [&](std::vector<Site> from) {
+    // Two sensors may not start at one point (their bisector would be undefined): a later one moves
+    // to its cell's centroid, or a tenth of a bin aside.
+    std::map<std::pair<double, double>, int> taken;
+    for (std::size_t i = 0; i < n; ++i) {
+      for (int attempt = 0; taken.count({from[i].x, from[i].y}); ++attempt) {
+        if (attempt == 0) from[i].x = centroids[i].x, from[i].y = centroids[i].y;
+        else from[i].x += 0.1 * out.bin_size_m * attempt;
+      }
+      taken[{from[i].x, from[i].y}] = static_cast<int>(i);
+    }
     fitting::RefineOptions quick = ro;
     quick.compute_covariance = false;
-    const fitting::RefineResult phase1 = fitting::refine_sites(from, samples, priors_for(from, true), quick);
-    return fitting::refine_sites(phase1.sites, samples, priors_for(from, false), quick);
+    try {
+      const fitting::RefineResult phase1 = fitting::refine_sites(from, samples, priors_for(from, true), quick);
+      return fitting::refine_sites(phase1.sites, samples, priors_for(from, false), quick);
+    } catch (const std::exception& e) {
+      // A refinement that cannot run leaves the starting values, said in the report.
+      out.messages.push_back(std::string("refinement failed (") + e.what() + "); kept the starting values");
+      fitting::RefineResult kept;
+      kept.sites = from;
+      double top = 0;
+      for (const Site& site : kept.sites) top = std::max(top, site.weight);
+      for (Site& site : kept.sites) site.weight /= top;
+      kept.summary.final_cost = INFINITY;
+      kept.summary.message = "not run";
+      return kept;
+    }
   };
   auto lap = [&, last = t0](const std::string& what) mutable {
     const auto now = std::chrono::steady_clock::now();
@@ -251,6 +274,34 @@ AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSen
       out.messages.push_back("refinement: the start from the reported sensors reached a lower cost (" +
                              std::to_string(second.summary.final_cost) + " < " + std::to_string(refined.summary.final_cost) + ")");
       refined = std::move(second);
+    }
+  }
+  // A site lies in its own region. One that the refinement left inside another sensor's cell (or
+  // far outside the map) was
+  // dragged off by a poor start or a bad neighbour (and, with its weight, distorts the cells
+  // around it): it restarts from its cell's centroid with its neighbours' typical weight, and the
+  // refinement runs once more.
+  {
+    std::vector<Site> repaired = refined.sites;
+    std::vector<std::vector<double>> neighbour_logw(n);
+    for (const auto& sample : samples) {
+      neighbour_logw[sample.site_a].push_back(std::log(refined.sites[sample.site_b].weight));
+      neighbour_logw[sample.site_b].push_back(std::log(refined.sites[sample.site_a].weight));
+    }
+    int escaped = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const int at = label_at(repaired[i].x, repaired[i].y);
+      if (at == static_cast<int>(i)) continue;
+      // Outside the map is possible for a sensor beyond its edge, but not far beyond.
+      if (at == kNone && std::hypot(repaired[i].x - centroids[i].x, repaired[i].y - centroids[i].y) <= 3.0 * spacing) continue;
+      ++escaped;
+      repaired[i].x = centroids[i].x, repaired[i].y = centroids[i].y;
+      if (!neighbour_logw[i].empty()) repaired[i].weight = std::exp(median(neighbour_logw[i]));
+    }
+    if (escaped > 0) {
+      fitting::RefineResult again = refine(repaired);
+      out.messages.push_back(std::to_string(escaped) + " sensor(s) ended in another sensor's cell and were refined again from their cell's centroid");
+      if (std::isfinite(again.summary.final_cost)) refined = std::move(again);
     }
   }
   out.refinement_summary = refined.summary.brief();
