@@ -108,7 +108,7 @@ int main(int argc, char** argv) {
     seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
     iou_sum += r.refined_agreement.mean_iou;
     for (const auto& m : r.messages)
-      if (m.find(" took ") != std::string::npos) stages.push_back(m);
+      if (m.find(" took ") != std::string::npos || m.find("phase 1") != std::string::npos) stages.push_back(m);
     stages.push_back(r.refinement_summary);
     std::map<std::string, const mapgen::TrueSensor*> truth;
     for (const auto& t : generated.truth) truth[t.id] = &t;
@@ -158,6 +158,7 @@ int main(int argc, char** argv) {
                         {"pos_err_spacing_median", quantile(pos_spacing, 0.5)},
                         {"weight_err_db_median", quantile(weight_db, 0.5)},
                         {"weight_err_db_p90", quantile(weight_db, 0.9)},
+                        {"weight_err_db_max", quantile(weight_db, 1.0)},
                         {"mean_iou", iou_sum / seeds},
                         {"judged", judged},
                         {"gross", gross_total},

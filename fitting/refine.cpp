@@ -28,6 +28,8 @@ ceres::Solver::Options solver_options(const RefineOptions& options) {
   solver.max_num_iterations = options.max_iterations;
   solver.num_threads = options.threads;
   solver.function_tolerance = options.function_tolerance;
+  solver.use_inner_iterations = options.inner_iterations;
+  solver.use_nonmonotonic_steps = options.nonmonotonic_steps;
   solver.parameter_tolerance = tolerance::kParameterTolerance;
   solver.gradient_tolerance = tolerance::kGradientTolerance;
   // Each sample couples two sites: the normal equations are as sparse as the map's adjacency.

@@ -80,6 +80,14 @@ struct RefineOptions {
   // The default suits exact data; noisy maps (covmap audit) stop far earlier without losing
   // anything their noise would not swamp. Must be > 0.
   double function_tolerance = tolerance::kFunctionTolerance;
+  // Ceres' inner iterations: after each step, every site's block is improved with the others held
+  // (non-linear block coordinate descent). Far from the optimum on large maps it cuts the number
+  // of iterations several-fold. Not with a held reference weight (a site with a partial manifold),
+  // so only useful together with weight priors.
+  bool inner_iterations = false;
+  // Ceres' non-monotonic steps: accept a step that raises the cost a little if the trend is down
+  // (helps through the flat, curved valleys of weight ratios).
+  bool nonmonotonic_steps = false;
   // Per-site 1-σ uncertainties (ceres::Covariance). Costs about one more solver iteration.
   bool compute_covariance = true;
   // true: sample σ are nominal (relative weights only); the noise level is estimated from the

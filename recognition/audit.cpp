@@ -29,6 +29,8 @@ using voronoi::Site;
 // Maps up to this many sensors are refined from several starts (the tolerant estimate, the cells'
 // centroids, the reported sensors); larger ones from one, to bound the time.
 constexpr std::size_t kMultiStartSensors = 300;
+// Maps up to this many sensors get one boundary sample per bin, larger ones one per two bins.
+constexpr std::size_t kDenseSamplingSensors = 3000;
 
 // Signed area and area-weighted centroid of a ring (shoelace).
 void accumulate_ring(const Ring& ring, double& area, double& cx, double& cy) {
@@ -186,7 +188,10 @@ AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSen
   // 3. Refinement on boundary samples (one per bin along each shared boundary).
   progress("refinement", 0.3);
   const double sigma = out.bin_size_m / std::sqrt(12.0);
-  const auto samples = sample_boundaries(cleaned, out.bin_size_m, sigma);
+  // One sample per bin; on maps too large for that to stay fast, one per two bins (each chain
+  // still has about ten, against its curve's three parameters).
+  const double sample_spacing = n > kDenseSamplingSensors ? 2.0 * out.bin_size_m : out.bin_size_m;
+  const auto samples = sample_boundaries(cleaned, sample_spacing, sigma);
   out.boundary_samples = samples.size();
   fitting::RefineOptions ro;
   ro.loss_scale = 3.0;  // in sample σ: staircase noise is bounded by ±bin/2 ≈ 1.7 σ
@@ -215,21 +220,29 @@ AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSen
                         std::log(from[i].weight), weights ? tolerance::kAuditLogWeightPrior : 0.0});
     return priors;
   };
-  auto refine = [&](std::vector<Site> from) {
-    // Two sensors may not start at one point (their bisector would be undefined): a later one moves
-    // to its cell's centroid, or a tenth of a bin aside.
+  // Two sensors may not start at one point (their bisector would be undefined): a later one moves
+  // to its cell's centroid, or a tenth of a bin aside.
+  auto separate = [&](std::vector<Site>& sites) {
     std::map<std::pair<double, double>, int> taken;
     for (std::size_t i = 0; i < n; ++i) {
-      for (int attempt = 0; taken.count({from[i].x, from[i].y}); ++attempt) {
-        if (attempt == 0) from[i].x = centroids[i].x, from[i].y = centroids[i].y;
-        else from[i].x += 0.1 * out.bin_size_m * attempt;
+      for (int attempt = 0; taken.count({sites[i].x, sites[i].y}); ++attempt) {
+        if (attempt == 0) sites[i].x = centroids[i].x, sites[i].y = centroids[i].y;
+        else sites[i].x += 0.1 * out.bin_size_m * attempt;
       }
-      taken[{from[i].x, from[i].y}] = static_cast<int>(i);
+      taken[{sites[i].x, sites[i].y}] = static_cast<int>(i);
     }
+  };
+  auto refine = [&](std::vector<Site> from) {
+    separate(from);
     fitting::RefineOptions quick = ro;
     quick.compute_covariance = false;
+    fitting::RefineOptions first = quick;
+    first.inner_iterations = true;  // phase 1 has weight priors, no held reference: allowed
+    quick.nonmonotonic_steps = true;
     try {
-      const fitting::RefineResult phase1 = fitting::refine_sites(from, samples, priors_for(from, true), quick);
+      fitting::RefineResult phase1 = fitting::refine_sites(from, samples, priors_for(from, true), first);
+      out.messages.push_back("refinement phase 1: " + phase1.summary.brief());
+      separate(phase1.sites);
       return fitting::refine_sites(phase1.sites, samples, priors_for(from, false), quick);
     } catch (const std::exception& e) {
       // A refinement that cannot run leaves the starting values, said in the report.
@@ -253,13 +266,16 @@ AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSen
   };
   lap("cleaning and starting values");
   const bool multi_start = n <= kMultiStartSensors;
-  fitting::RefineResult refined = refine(start);
+  // The first start: every sensor at its cell's centroid, with the tolerant weights. Measured on
+  // generated maps (docs/ACCURACY.md), it converges in about half the iterations of the junction
+  // positions, whose solution circles come from short, noisy arcs; those positions are a second
+  // start on maps small enough for several.
+  std::vector<Site> centroid_start = estimates.sites;
+  for (std::size_t i = 0; i < n; ++i) centroid_start[i].x = centroids[i].x, centroid_start[i].y = centroids[i].y;
+  fitting::RefineResult refined = refine(centroid_start);
   if (multi_start) {
-    // A second start from every cell's centroid (weights from the tolerant estimate): cheap for
-    // maps of this size, and it rescues maps whose junction estimates are poor.
-    std::vector<Site> alt = estimates.sites;
-    for (std::size_t i = 0; i < n; ++i) alt[i].x = centroids[i].x, alt[i].y = centroids[i].y;
-    fitting::RefineResult second = refine(alt);
+    // A second start from the tolerant estimates themselves (outside their own cell: centroid).
+    fitting::RefineResult second = refine(start);
     if (second.summary.final_cost < refined.summary.final_cost) refined = std::move(second);
   }
   if (multi_start && !reported_of.empty()) {
@@ -291,9 +307,14 @@ AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSen
     int escaped = 0;
     for (std::size_t i = 0; i < n; ++i) {
       const int at = label_at(repaired[i].x, repaired[i].y);
-      if (at == static_cast<int>(i)) continue;
       // Outside the map is possible for a sensor beyond its edge, but not far beyond.
-      if (at == kNone && std::hypot(repaired[i].x - centroids[i].x, repaired[i].y - centroids[i].y) <= 3.0 * spacing) continue;
+      const bool placed = at == static_cast<int>(i) ||
+                          (at == kNone && std::hypot(repaired[i].x - centroids[i].x, repaired[i].y - centroids[i].y) <= 3.0 * spacing);
+      // Neighbouring sensors' weights differ by modest factors; a weight that ran off to its bound
+      // (e.g. 1e13 times its neighbours') is a divergence even where the position looks fine.
+      const bool weight_ok = neighbour_logw[i].empty() ||
+                             std::abs(std::log(repaired[i].weight) - median(neighbour_logw[i])) <= tolerance::kAuditMaxLogWeightJump;
+      if (placed && weight_ok) continue;
       ++escaped;
       repaired[i].x = centroids[i].x, repaired[i].y = centroids[i].y;
       if (!neighbour_logw[i].empty()) repaired[i].weight = std::exp(median(neighbour_logw[i]));

@@ -58,4 +58,9 @@ inline constexpr double kEstimateGaugePull = 1e-6;
 // poor start leaves unconstrained from running off (recognition/audit.cpp, phase 2 drops it).
 inline constexpr double kAuditLogWeightPrior = 3.0;
 
+// A refined sensor whose log weight differs from the median of its neighbours' by more than this
+// (a factor of 100) has diverged and is restarted (recognition/audit.cpp). Real neighbours differ
+// by a few dB; a factor of 100 is 70 dB at a path-loss exponent of 3.5.
+inline constexpr double kAuditMaxLogWeightJump = 4.6;
+
 }  // namespace covmap::recognition::tolerance
