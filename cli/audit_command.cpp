@@ -1,5 +1,6 @@
 #include "cli/audit_command.h"
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -70,6 +71,13 @@ void setup_audit(CLI::App& app, AuditCommandOptions& options) {
 
 int run_audit(const AuditCommandOptions& options) {
   return guarded([&]() {
+    const auto t0 = std::chrono::steady_clock::now();
+    auto say = [&](const std::string& what) {
+      if (options.quiet) return;
+      std::cerr << "covmap audit: " << what << " ("
+                << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s)\n";
+    };
+    say("reading the map");
     io::CoverageMapOptions mo;
     mo.sensor_property = options.sensor_property;
     mo.planar = options.planar;
@@ -83,21 +91,24 @@ int run_audit(const AuditCommandOptions& options) {
       for (const io::ReportedSensor& r : io::read_reported_sensors(options.sensors_path, so))
         reported.push_back({r.id, r.position, r.weight, r.tx_power_dbm, r.position_sigma_m, r.power_sigma_db});
     }
+    say("map read: " + std::to_string(map.cells.size()) + " cells, " + std::to_string(map.vertex_count) + " vertices");
     recognition::AuditOptions ao;
     ao.alpha = options.alpha;
     ao.cleaning.snap_distance = options.snap;
-    if (!options.quiet)
-      ao.progress = [](const std::string& stage, double f) {
-        std::cerr << "covmap audit: " << stage << " (" << static_cast<int>(100 * f) << " %)\n";
-      };
+    ao.progress = [&](const std::string& stage, double f) { say(stage + ", " + std::to_string(static_cast<int>(100 * f)) + " %"); };
     const recognition::AuditResult result = recognition::audit(map.cells, reported, ao);
     io::AuditReportContext context{result, map, options.map_path, options.sensors_path, options.alpha,
                                    options.command_line, &ao};
     std::ostringstream json, html, sensors, diagram;
+    say("writing report.json");
     io::write_audit_json(context, json);
+    say("writing report.html");
     io::write_audit_html(context, html);
+    say("writing sensors.geojson");
     io::write_sensors_geojson(context, sensors);
+    say("writing diagram.geojson");
     io::write_diagram_geojson(context, diagram);
+    say("moving the reports into place");
     write_directory(options.output_dir, {{"report.json", json.str()},
                                          {"report.html", html.str()},
                                          {"sensors.geojson", sensors.str()},

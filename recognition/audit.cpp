@@ -31,6 +31,8 @@ using voronoi::Site;
 constexpr std::size_t kMultiStartSensors = 300;
 // Maps up to this many sensors get one boundary sample per bin, larger ones one per two bins.
 constexpr std::size_t kDenseSamplingSensors = 3000;
+// Iterations of the second refinement phase (see refine below).
+constexpr int kPhase2Iterations = 60;
 
 // Signed area and area-weighted centroid of a ring (shoelace).
 void accumulate_ring(const Ring& ring, double& area, double& cx, double& cy) {
@@ -210,9 +212,11 @@ AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSen
   const double prior_position_sigma = 2.0 * spacing;
   // Phase 1 also holds every log weight loosely (±kAuditLogWeightPrior about its start): from a
   // poor start a weakly bounded weight can otherwise run off and take a whole neighbourhood with
-  // it. Such a prior also pins the weights' common factor, which the boundaries leave free, and
-  // would inflate every weight's σ by it; phase 2 therefore drops it and, started at phase 1's
-  // optimum, only polishes and measures (its gauge: one reference weight held).
+  // it, and with weights held this way Ceres' inner iterations (per-site block descent) may run,
+  // which cut its iterations several-fold. Phase 2 drops the weight priors and polishes from
+  // phase 1's optimum (its gauge: one reference weight held); on maps above
+  // kDenseSamplingSensors it is skipped for time — the uncertainties come from
+  // local_uncertainty.h either way, and the loose priors move no determined weight measurably.
   auto priors_for = [&](const std::vector<Site>& from, bool weights) {
     std::vector<fitting::SitePrior> priors;
     for (std::size_t i = 0; i < n; ++i)
@@ -239,11 +243,17 @@ AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSen
     fitting::RefineOptions first = quick;
     first.inner_iterations = true;  // phase 1 has weight priors, no held reference: allowed
     quick.nonmonotonic_steps = true;
+    // Phase 2 starts at phase 1's optimum and only releases the weights' priors: a few dozen
+    // iterations settle it; its long tail (cost changes of parts in 10⁵) is cut off.
+    quick.max_iterations = kPhase2Iterations;
     try {
       fitting::RefineResult phase1 = fitting::refine_sites(from, samples, priors_for(from, true), first);
       out.messages.push_back("refinement phase 1: " + phase1.summary.brief());
       separate(phase1.sites);
-      return fitting::refine_sites(phase1.sites, samples, priors_for(from, false), quick);
+      if (n > kDenseSamplingSensors) return phase1;  // large maps: time (docs/PERFORMANCE.md)
+      fitting::RefineResult phase2 = fitting::refine_sites(phase1.sites, samples, priors_for(from, false), quick);
+      out.messages.push_back("refinement phase 2: " + phase2.summary.brief());
+      return phase2;
     } catch (const std::exception& e) {
       // A refinement that cannot run leaves the starting values, said in the report.
       out.messages.push_back(std::string("refinement failed (") + e.what() + "); kept the starting values");
