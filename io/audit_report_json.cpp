@@ -57,6 +57,7 @@ json sensor_json(const recognition::SensorAudit& s, const CoverageMap& map) {
   }
   j["weight"] = rebuilt ? number_or_null(s.weight) : json();
   j["tx_power_dbm"] = rebuilt ? number_or_null(s.tx_power_dbm) : json();
+  j["relative_power_db"] = rebuilt ? number_or_null(s.relative_power_db) : json();
   const bool sigma = rebuilt && s.uncertainty_available;
   j["uncertainty_available"] = sigma;
   j["sigma_x_m"] = sigma ? number_or_null(s.sigma_x) : json();

@@ -362,6 +362,7 @@ AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSen
     s.position = {refined.sites[i].x, refined.sites[i].y};
     s.weight = refined.sites[i].weight;
     if (p0 && options.alpha) s.tx_power_dbm = *p0 + 10.0 * *options.alpha * std::log10(s.weight);
+    if (options.alpha) s.relative_power_db = 10.0 * *options.alpha * std::log10(s.weight);
     const LocalUncertainty& u = local[i];
     s.uncertainty_available = u.available;
     s.sigma_x = u.sigma_x, s.sigma_y = u.sigma_y, s.cov_xy = u.cov_xy, s.sigma_log_weight = u.sigma_log_weight;

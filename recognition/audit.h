@@ -60,7 +60,10 @@ struct SensorAudit {
   bool in_map = true;                 // false: reported, but no cell of the map names it
   voronoi::Point position;            // reconstructed (refined), map units
   double weight = 1.0;                // largest = 1
-  std::optional<double> tx_power_dbm; // reconstructed, when reported powers or alpha fix the scale
+  std::optional<double> tx_power_dbm; // reconstructed, when reported powers (and alpha) fix the scale
+  // With alpha: the power relative to the strongest sensor, 10·alpha·log10(weight) (≤ 0 dB); known
+  // even when no power was reported, since the map fixes weights up to one common factor.
+  std::optional<double> relative_power_db;
   double sigma_x = 0.0, sigma_y = 0.0, cov_xy = 0.0;
   double sigma_position_m = 0.0;      // 1-σ: sqrt of the larger eigenvalue of the 2×2 covariance
   double sigma_log_weight = 0.0;

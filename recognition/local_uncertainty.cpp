@@ -36,6 +36,16 @@ std::vector<LocalUncertainty> local_uncertainty(std::span<const voronoi::Site> s
     noise = 1.4826 * absolute[absolute.size() / 2];
   }
   std::vector<Eigen::Matrix3d> info(n, Eigen::Matrix3d::Zero());
+  // Boundaries with at least two different neighbours: along a single boundary the site can slide
+  // with its weight (Lemma 1 fixes only its mirror relation to that one neighbour), and the 3×3
+  // block is then nearly singular however many samples it holds.
+  std::vector<int> first_neighbour(n, -1);
+  std::vector<char> two_neighbours(n, 0);
+  for (const auto& s : samples)
+    for (auto [me, other] : {std::pair{s.site_a, s.site_b}, std::pair{s.site_b, s.site_a}}) {
+      if (first_neighbour[me] < 0) first_neighbour[me] = other;
+      else if (first_neighbour[me] != other) two_neighbours[me] = 1;
+    }
   const double c = loss_scale * noise;
   for (std::size_t k = 0; k < samples.size(); ++k) {
     if (!gradient[k].allFinite() || !std::isfinite(residual[k])) continue;
@@ -48,7 +58,9 @@ std::vector<LocalUncertainty> local_uncertainty(std::span<const voronoi::Site> s
   std::vector<LocalUncertainty> out(n);
   for (std::size_t i = 0; i < n; ++i) {
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(info[i]);
-    if (eig.info() != Eigen::Success || !(eig.eigenvalues()(0) > 1e-12 * eig.eigenvalues()(2)) || !(noise > 0)) continue;
+    if (!two_neighbours[i] || eig.info() != Eigen::Success || !(eig.eigenvalues()(0) > 1e-12 * eig.eigenvalues()(2)) ||
+        !(noise > 0))
+      continue;
     const Eigen::Matrix3d cov = noise * noise * info[i].inverse();
     out[i] = {std::sqrt(cov(0, 0)), std::sqrt(cov(1, 1)), cov(0, 1), std::sqrt(cov(2, 2)), true};
   }

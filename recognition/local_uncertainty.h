@@ -21,7 +21,7 @@ namespace covmap::recognition {
 
 struct LocalUncertainty {
   double sigma_x = 0.0, sigma_y = 0.0, cov_xy = 0.0, sigma_log_weight = 0.0;
-  bool available = false;  // false: too few samples to fix all three
+  bool available = false;  // false: fewer than two neighbours' boundaries, or too few samples
 };
 
 // loss_scale: where the Cauchy down-weighting starts, in units of the noise level.
