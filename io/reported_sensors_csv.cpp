@@ -82,16 +82,6 @@ std::string lower(std::string_view text) {
   return out;
 }
 
-// Ids end up in JSON reports, which need UTF-8; catching bad bytes here names the line.
-bool valid_utf8(const std::string& text) {
-  try {
-    (void)Json(text).dump();
-    return true;
-  } catch (const Json::type_error&) {
-    return false;
-  }
-}
-
 using ColumnIndex = std::array<std::size_t, kColumnCount>;
 
 ColumnIndex read_header(const std::vector<std::string>& fields, const std::string& file, int line) {

@@ -91,16 +91,6 @@ std::optional<double> parse_number(std::string_view field, std::string_view name
   return value;
 }
 
-// Ids end up in JSON and SVG, which need UTF-8; catching bad bytes here names the line.
-bool valid_utf8(const std::string& text) {
-  try {
-    (void)Json(text).dump();
-    return true;
-  } catch (const Json::type_error&) {
-    return false;
-  }
-}
-
 }  // namespace
 
 SiteTable parse_sites_csv(std::string_view text, const std::string& file) {

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "io/input_error.h"
+#include <nlohmann/json.hpp>
 
 namespace covmap::io::detail {
 
@@ -63,6 +64,15 @@ std::string_view trim(std::string_view text) {
   if (first == std::string_view::npos) return {};
   const auto last = text.find_last_not_of(kSpace);
   return text.substr(first, last - first + 1);
+}
+
+bool valid_utf8(const std::string& text) {
+  try {
+    (void)nlohmann::json(text).dump();
+    return true;
+  } catch (const nlohmann::json::type_error&) {
+    return false;
+  }
 }
 
 }  // namespace covmap::io::detail

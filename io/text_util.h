@@ -23,4 +23,8 @@ int line_of_offset(std::string_view text, std::size_t offset);
 // text without surrounding spaces, tabs and carriage returns.
 std::string_view trim(std::string_view text);
 
+// Whether text is valid UTF-8. Ids end up in JSON, SVG and HTML, which need it; readers check at
+// the line that holds the id, so the message can name it.
+bool valid_utf8(const std::string& text);
+
 }  // namespace covmap::io::detail
