@@ -1,6 +1,6 @@
 // covmap recognize GRAPH.json [-o RECONSTRUCTION.json] [--svg PIC.svg] [--no-voronoi-check]:
 // is the graph a weighted bisector graph / an MWVD, and which sites drew it?
-// Exit 0: bisector graph; 3: not a bisector graph; 2: bad input; 5: a kind of graph not handled yet.
+// Exit 0: bisector graph; 3: not a bisector graph; 2: bad input (5, not handled yet, is reserved).
 #pragma once
 
 #include <CLI/CLI.hpp>
