@@ -1,5 +1,7 @@
 #include "voronoi/faces.h"
 
+#include "voronoi/engine/parallel.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -156,8 +158,11 @@ void trace_faces(Diagram& d, FaceLabels labels) {
   auto label = [&](int h) { return by_sites ? info(d, h).site : 0; };
   const int halves = 2 * static_cast<int>(d.arcs.size());
   std::vector<ArcPathView> paths;
-  paths.reserve(d.arcs.size());
-  for (const Arc& a : d.arcs) paths.push_back(arc_path(a, d.nodes));
+  // Per-arc and per-half-arc geometry is independent work: both cores share it (engine/parallel.h).
+  paths.resize(d.arcs.size());
+  engine::parallel_chunks(d.arcs.size(), engine::worker_count(d.arcs.size()), [&](std::size_t b, std::size_t e, int) {
+    for (std::size_t a = b; a < e; ++a) paths[a] = arc_path(d.arcs[a], d.nodes);
+  });
   auto path_of = [&](int h) -> const ArcPathView& { return paths[h / 2]; };
   // Outgoing half-arcs per node, and half-arcs arriving from infinity per site.
   // Outgoing half-arcs per node in compressed rows (out_begin[v] .. out_begin[v+1]).
@@ -193,20 +198,23 @@ void trace_faces(Diagram& d, FaceLabels labels) {
   // Per half-arc: the angle of its direction of travel where it starts, and its curvature in that
   // direction (computed once; next_of compares them at every node).
   std::vector<double> depart_angle(halves, 0.0), depart_curvature(halves, 0.0);
-  for (int h = 0; h < halves; ++h) {
-    if (info(d, h).start == kNone) continue;
-    const Point t = travel_direction(path_of(h), h, 0);
-    depart_angle[h] = std::atan2(t.y, t.x);
-    depart_curvature[h] = path_of(h).curvature() * (h % 2 == 0 ? 1.0 : -1.0);
-  }
+  engine::parallel_chunks(static_cast<std::size_t>(halves), engine::worker_count(halves), [&](std::size_t b, std::size_t e, int) {
+    for (int h = static_cast<int>(b); h < static_cast<int>(e); ++h) {
+      if (info(d, h).start == kNone) continue;
+      const Point t = travel_direction(path_of(h), h, 0);
+      depart_angle[h] = std::atan2(t.y, t.x);
+      depart_curvature[h] = path_of(h).curvature() * (h % 2 == 0 ? 1.0 : -1.0);
+    }
+  });
   auto next_of = [&](int h) -> int {
     const HalfInfo hi = info(d, h);
     const Arc& arc = d.arcs[h / 2];
     if (hi.end == kNone) {
       if (hi.start == kNone && std::holds_alternative<Circle>(arc.curve)) return h;  // full circle
       // Around infinity, counter-clockwise, to the next arc of this site coming back.
-      const auto& list = from_infinity[label(h)];
-      if (list.empty()) return -1;
+      const auto found = from_infinity.find(label(h));  // read-only: next_of runs on several threads
+      if (found == from_infinity.end() || found->second.empty()) return -1;
+      const auto& list = found->second;
       const AtInfinity leave = infinity_key(d, h, true);
       for (int c : list)
         if (key_less(leave, infinity_key(d, c, false))) return c;
@@ -246,6 +254,12 @@ void trace_faces(Diagram& d, FaceLabels labels) {
     return best;
   };
 
+  // The continuation of every half-arc, computed once (in parallel; next_of only reads).
+  std::vector<int> next_half(halves, -1);
+  engine::parallel_chunks(static_cast<std::size_t>(halves), engine::worker_count(halves), [&](std::size_t b, std::size_t e, int) {
+    for (int h = static_cast<int>(b); h < static_cast<int>(e); ++h)
+      if (label(h) != kNone) next_half[h] = next_of(h);
+  });
   std::vector<char> seen(halves, 0);
   struct Cycle {
     int site;
@@ -273,7 +287,7 @@ void trace_faces(Diagram& d, FaceLabels labels) {
         const Node& b = d.nodes[hi.end];
         cyc.area2 += (a.x - o.x) * (b.y - o.y) - (b.x - o.x) * (a.y - o.y);
       }
-      const int nx = next_of(h);
+      const int nx = next_half[h];
       if (nx < 0) break;
       if (hi.end == kNone && std::holds_alternative<Line>(d.arcs[h / 2].curve))
         cyc.through_infinity = true;
