@@ -202,9 +202,7 @@ AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSen
   ro.loss_scale = 3.0;  // in sample σ: staircase noise is bounded by ±bin/2 ≈ 1.7 σ
   ro.threads = 2;
   ro.max_iterations = 500;
-  // The cost is a sum over thousands of staircase points whose noise is ±bin/2: a relative change
-  // below 1e-7 moves no site by a measurable fraction of a bin.
-  ro.function_tolerance = 1e-7;
+  ro.function_tolerance = tolerance::kAuditFunctionTolerance;
   // Weak priors keep sites that the map barely constrains (one short boundary, a sliver) from
   // drifting off while leaving every determined site to the data: a position prior of twice the
   // mean sensor spacing about the start. (No prior on weights: it would also fix their common

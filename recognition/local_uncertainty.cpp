@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "fitting/residuals.h"
+#include "recognition/tolerances.h"
 
 namespace covmap::recognition {
 
@@ -58,7 +59,7 @@ std::vector<LocalUncertainty> local_uncertainty(std::span<const voronoi::Site> s
   std::vector<LocalUncertainty> out(n);
   for (std::size_t i = 0; i < n; ++i) {
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(info[i]);
-    if (!two_neighbours[i] || eig.info() != Eigen::Success || !(eig.eigenvalues()(0) > 1e-12 * eig.eigenvalues()(2)) ||
+    if (!two_neighbours[i] || eig.info() != Eigen::Success || !(eig.eigenvalues()(0) > tolerance::kLocalInformationConditioning * eig.eigenvalues()(2)) ||
         !(noise > 0))
       continue;
     const Eigen::Matrix3d cov = noise * noise * info[i].inverse();

@@ -63,4 +63,15 @@ inline constexpr double kAuditLogWeightPrior = 3.0;
 // by a few dB; a factor of 100 is 70 dB at a path-loss exponent of 3.5.
 inline constexpr double kAuditMaxLogWeightJump = 4.6;
 
+// Gauss–Newton of a starting estimate stops when a step is below this fraction of the position's
+// magnitude (rounding level; the estimate only has to be a good start).
+inline constexpr double kEstimateStepStop = 1e-12;
+// A sensor's 3×3 information block (local_uncertainty.h) is singular when its smallest eigenvalue
+// is below this fraction of its largest: the sensor is then reported undetermined.
+inline constexpr double kLocalInformationConditioning = 1e-12;
+// The audit's refinement stops when an iteration lowers the cost by less than this fraction: the
+// cost sums thousands of staircase points whose noise is ±bin/2, and a smaller change moves no
+// sensor by a measurable fraction of a bin.
+inline constexpr double kAuditFunctionTolerance = 1e-7;
+
 }  // namespace covmap::recognition::tolerance

@@ -131,7 +131,7 @@ Complex gauss_newton(const std::vector<SiteConstraint>& cs, Complex p) {
     const Eigen::Vector2d step = jtj.ldlt().solve(jtr);
     if (!step.allFinite()) break;
     p -= Complex(step(0), step(1));
-    if (step.norm() <= 1e-12 * (std::abs(p) + 1.0)) break;
+    if (step.norm() <= tolerance::kEstimateStepStop * (std::abs(p) + 1.0)) break;
   }
   return p;
 }
