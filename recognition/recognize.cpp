@@ -2,6 +2,7 @@
 #include "recognition/recognize.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <deque>
 #include <sstream>
@@ -160,6 +161,14 @@ SiteRegion root_region(const Diagram& g, const std::vector<int>& face_of_half,
 
 Reconstruction recognize(const Diagram& input, const RecognitionOptions& options) {
   Reconstruction out;
+  using Clock = std::chrono::steady_clock;
+  Clock::time_point last = Clock::now();
+  auto lap = [&last] {  // seconds since the previous lap
+    const Clock::time_point now = Clock::now();
+    const double s = std::chrono::duration<double>(now - last).count();
+    last = now;
+    return s;
+  };
   out.graph = input;
   Diagram& g = out.graph;
   g.sites.clear();
@@ -171,6 +180,7 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
     a.left_site = a.right_site = kNone;
   }
   voronoi::trace_faces(g, voronoi::FaceLabels::kGeometry);
+  out.timings.faces = lap();
   const int faces = static_cast<int>(g.faces.size());
   std::vector<int> face_of_half(2 * g.arcs.size(), kNone);
   for (int f = 0; f < faces; ++f)
@@ -505,6 +515,7 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
     out.failure = fail;
     return out;
   }
+  out.timings.start = lap();
   // Propagate each candidate breadth first and verify every arc.
   std::vector<Reconstruction> solutions;
   std::optional<RecognitionFailure> last_failure;
@@ -566,8 +577,10 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
     }
     if (failure) {
       last_failure = failure;
+      out.timings.propagate += lap();
       continue;
     }
+    out.timings.propagate += lap();
     // Weights equal up to rounding are made equal (see RecognitionOptions::weight_snap).
     {
       std::vector<int> order;
@@ -610,6 +623,7 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
       r.face_site[f] = found;
     }
     solutions.push_back(std::move(r));
+    out.timings.sites += lap();
   }
   if (solutions.empty()) {
     out.bisector_graph = false;
@@ -643,6 +657,7 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
       out.voronoi = "no";
       out.voronoi_differences.push_back({DifferenceKind::NodeOnlyInA, kNone, 0, 0, e.what()});
     }
+    out.timings.voronoi_check = lap();
   }
   return out;
 }

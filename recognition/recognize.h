@@ -66,6 +66,15 @@ struct SiteRegion {
   double margin = 0.0;
 };
 
+// Wall-clock seconds of recognize()'s stages, for benchmarks and progress reports.
+struct RecognitionTimings {
+  double faces = 0.0;        // copying the input and tracing its faces by geometry
+  double start = 0.0;        // node constraints of the start face and its candidates
+  double propagate = 0.0;    // breadth-first propagation and verification of every candidate
+  double sites = 0.0;        // weight snapping and merging of coinciding sites
+  double voronoi_check = 0.0;
+};
+
 struct Reconstruction {
   bool bisector_graph = false;
   bool supported = true;  // false: the input needs a part of the method not implemented yet
@@ -81,6 +90,7 @@ struct Reconstruction {
   std::string voronoi = "unknown";
   std::vector<Difference> voronoi_differences;
   voronoi::Diagram graph;  // the input with its faces traced (face_site refers to these)
+  RecognitionTimings timings;
 };
 
 Reconstruction recognize(const voronoi::Diagram& graph, const RecognitionOptions& options = {});

@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
+#include <optional>
 #include <span>
 #include <unordered_map>
 
@@ -34,25 +36,6 @@ HalfInfo info(const Diagram& d, int id) {
   const Arc& a = d.arcs[id / 2];
   const bool fwd = id % 2 == 0;
   return {fwd ? a.left_site : a.right_site, fwd ? a.from : a.to, fwd ? a.to : a.from};
-}
-
-// Direction of travel of a half-arc at its start (at = 0) or end (at = 1).
-Point travel_direction(const ArcPathView& p, int id, int at) {
-  const bool fwd = id % 2 == 0;
-  const bool at_path_start = (at == 0) == fwd;
-  Point t = p.tangent(at_path_start ? p.s0 : p.s1);
-  if (!p.circle && !std::isfinite(at_path_start ? p.s0 : p.s1)) t = p.tangent(0);
-  if (!fwd) t = {-t.x, -t.y};
-  return t;
-}
-
-// Twice the signed area between a half-arc and its chord (positive when the half-arc bulges to the
-// right of its direction, i.e. when it runs counter-clockwise around its circle).
-double segment_area2(const ArcPathView& p, int id) {
-  if (!p.circle) return 0.0;
-  const double sweep = p.s1 - p.s0;
-  const double travel_sense = id % 2 == 0 ? p.sense : -p.sense;
-  return travel_sense * p.r * p.r * (sweep - std::sin(sweep));
 }
 
 // A point at infinity: the direction angle, and the offset that orders parallel arcs.
@@ -150,6 +133,174 @@ bool cycle_contains(const Diagram& d, const std::vector<HalfArc>& cycle, Point p
   });
 }
 
+namespace {
+
+// A monotone stand-in for atan2 (the "diamond angle"), in [0, 4): enough to decide whether a
+// direction lies within an arc's sweep without trigonometry.
+double pseudo_angle(double x, double y) {
+  const double s = std::abs(x) + std::abs(y);
+  if (s == 0) return 0.0;
+  const double t = y / s;  // in [-1, 1]
+  if (x >= 0) return t >= 0 ? t : 4.0 + t;
+  return 2.0 - t;
+}
+
+using Box = std::array<double, 4>;  // xmin, ymin, xmax, ymax
+constexpr Box kEmptyBox = {INFINITY, INFINITY, -INFINITY, -INFINITY};
+constexpr Box kWholePlane = {-INFINITY, -INFINITY, INFINITY, INFINITY};
+
+void grow(Box& b, double x, double y) {
+  b = {std::min(b[0], x), std::min(b[1], y), std::max(b[2], x), std::max(b[3], y)};
+}
+
+// The bounding box of one arc: its ends and the circle's axis-extreme points within its sweep
+// (the whole plane for an unbounded line arc). A box only preselects arcs for exact tests; it is
+// widened by a few units in the last place so that rounding cannot make it miss its arc.
+Box arc_box(const Arc& arc, const std::vector<Node>& nodes) {
+  Box b = kEmptyBox;
+  if (const Circle* c = std::get_if<Circle>(&arc.curve)) {
+    if (arc.from == kNone || arc.from == arc.to) {
+      b = {c->cx - c->r, c->cy - c->r, c->cx + c->r, c->cy + c->r};
+    } else {
+      const Node& a = nodes[arc.from];
+      const Node& e = nodes[arc.to];
+      grow(b, a.x, a.y);
+      grow(b, e.x, e.y);
+      // Counter-clockwise from the start direction to the end direction (reversed for clockwise
+      // arcs: then the sweep runs from the end to the start).
+      const double pa = pseudo_angle(a.x - c->cx, a.y - c->cy), pe = pseudo_angle(e.x - c->cx, e.y - c->cy);
+      const double lo = arc.ccw ? pa : pe, hi = arc.ccw ? pe : pa;
+      double span = hi - lo;
+      if (span <= 0) span += 4.0;
+      const double extreme[4][2] = {{c->cx + c->r, c->cy}, {c->cx, c->cy + c->r}, {c->cx - c->r, c->cy}, {c->cx, c->cy - c->r}};
+      for (int k = 0; k < 4; ++k) {
+        double at = k - lo;  // pseudo-angles of the axis directions are 0, 1, 2, 3
+        if (at < 0) at += 4.0;
+        if (at <= span) grow(b, extreme[k][0], extreme[k][1]);
+      }
+    }
+  } else {
+    if (arc.from == kNone || arc.to == kNone) return kWholePlane;
+    grow(b, nodes[arc.from].x, nodes[arc.from].y);
+    grow(b, nodes[arc.to].x, nodes[arc.to].y);
+  }
+  const double pad = 4 * std::numeric_limits<double>::epsilon() *
+                     std::max({std::abs(b[0]), std::abs(b[1]), std::abs(b[2]), std::abs(b[3])});
+  return {b[0] - pad, b[1] - pad, b[2] + pad, b[3] + pad};
+}
+
+bool is_finite(const Box& b) { return std::isfinite(b[0]) && std::isfinite(b[2]); }
+
+// Per half-arc geometry at the node where it starts: the angle of its direction of travel and its
+// curvature in that direction (next_of compares them at every node); per arc, twice the signed
+// area between the forward half-arc and its chord (positive when it bulges to the right).
+struct TracingGeometry {
+  std::vector<double> depart_angle, depart_curvature, segment_area2;
+};
+
+TracingGeometry tracing_geometry(const Diagram& d) {
+  const std::size_t arcs = d.arcs.size();
+  TracingGeometry g;
+  g.depart_angle.assign(2 * arcs, 0.0);
+  g.depart_curvature.assign(2 * arcs, 0.0);
+  g.segment_area2.assign(arcs, 0.0);
+  // Independent per arc: both cores share it (engine/parallel.h).
+  engine::parallel_chunks(arcs, engine::worker_count(arcs), [&](std::size_t b, std::size_t e, int) {
+    for (std::size_t a = b; a < e; ++a) {
+      const Arc& arc = d.arcs[a];
+      if (const Circle* c = std::get_if<Circle>(&arc.curve)) {
+        const double sense = arc.ccw ? 1.0 : -1.0;
+        double sweep = kTwoPi;
+        if (arc.from != kNone) {
+          const double ax = d.nodes[arc.from].x - c->cx, ay = d.nodes[arc.from].y - c->cy;
+          const double ex = d.nodes[arc.to].x - c->cx, ey = d.nodes[arc.to].y - c->cy;
+          // Forward travel at the start: the radius turned by +90° (counter-clockwise arcs);
+          // backward travel at the end: the reverse of forward travel there.
+          g.depart_angle[2 * a] = std::atan2(sense * ax, -sense * ay);
+          g.depart_angle[2 * a + 1] = std::atan2(-sense * ex, sense * ey);
+          g.depart_curvature[2 * a] = sense / c->r;
+          g.depart_curvature[2 * a + 1] = -sense / c->r;
+          if (arc.from != arc.to) {
+            sweep = sense * std::atan2(ax * ey - ay * ex, ax * ex + ay * ey);
+            if (sweep <= 0) sweep += kTwoPi;
+          }
+        }
+        g.segment_area2[a] = sense * c->r * c->r * (sweep - std::sin(sweep));
+      } else {
+        const Line& l = std::get<Line>(arc.curve);
+        if (arc.from != kNone) g.depart_angle[2 * a] = std::atan2(l.dy, l.dx);
+        if (arc.to != kNone) g.depart_angle[2 * a + 1] = std::atan2(-l.dy, -l.dx);
+      }
+    }
+  });
+  return g;
+}
+
+// Boxes in a uniform grid of cells, stored in compressed rows (cell_begin[c] .. cell_begin[c+1]
+// index into items). Items with an unbounded box are kept apart in `always`.
+struct BoxGrid {
+  double x0 = 0, y0 = 0, cw = 1, ch = 1;
+  int nx = 0, ny = 0;
+  std::vector<int> cell_begin, items, always;
+
+  int column(double x) const { return std::clamp(static_cast<int>(std::floor((x - x0) / cw)), 0, nx - 1); }
+  int row(double y) const { return std::clamp(static_cast<int>(std::floor((y - y0) / ch)), 0, ny - 1); }
+  std::span<const int> cell(int i, int j) const {
+    const std::size_t c = static_cast<std::size_t>(j) * nx + i;
+    return {items.data() + cell_begin[c], items.data() + cell_begin[c + 1]};
+  }
+};
+
+// A grid of about `target` cells over `area` (boxes reaching outside it land in the border cells).
+BoxGrid make_grid(const std::vector<Box>& boxes, Box area, std::size_t target) {
+  BoxGrid g;
+  const int side = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(target))), 1, 2048);
+  if (!is_finite(area)) {
+    for (std::size_t k = 0; k < boxes.size(); ++k) g.always.push_back(static_cast<int>(k));
+    return g;
+  }
+  g.nx = g.ny = side;
+  g.x0 = area[0], g.y0 = area[1];
+  g.cw = std::max((area[2] - area[0]) / side, 1e-300);
+  g.ch = std::max((area[3] - area[1]) / side, 1e-300);
+  const std::size_t cells = static_cast<std::size_t>(side) * side;
+  g.cell_begin.assign(cells + 1, 0);
+  auto for_cells = [&](const Box& b, auto&& f) {
+    const int i0 = g.column(b[0]), i1 = g.column(b[2]), j0 = g.row(b[1]), j1 = g.row(b[3]);
+    for (int j = j0; j <= j1; ++j)
+      for (int i = i0; i <= i1; ++i) f(static_cast<std::size_t>(j) * side + i);
+  };
+  for (const Box& b : boxes)
+    if (is_finite(b)) for_cells(b, [&](std::size_t c) { ++g.cell_begin[c + 1]; });
+  for (std::size_t c = 0; c < cells; ++c) g.cell_begin[c + 1] += g.cell_begin[c];
+  g.items.resize(g.cell_begin.back());
+  std::vector<int> fill(g.cell_begin.begin(), g.cell_begin.end() - 1);
+  for (std::size_t k = 0; k < boxes.size(); ++k) {
+    if (is_finite(boxes[k])) for_cells(boxes[k], [&](std::size_t c) { g.items[fill[c]++] = static_cast<int>(k); });
+    else if (boxes[k][0] <= boxes[k][2]) g.always.push_back(static_cast<int>(k));
+  }
+  return g;
+}
+
+// The box holding the central 98 % of the nodes in each coordinate: far arcs of nearly tangent
+// bisectors would otherwise stretch a grid's cells over the whole diagram.
+Box central_box(const std::vector<Node>& nodes) {
+  std::vector<double> xs, ys;
+  xs.reserve(nodes.size());
+  ys.reserve(nodes.size());
+  for (const Node& n : nodes)
+    if (std::isfinite(n.x) && std::isfinite(n.y)) xs.push_back(n.x), ys.push_back(n.y);
+  if (xs.empty()) return kEmptyBox;
+  const std::size_t cut = xs.size() >= 100 ? xs.size() / 100 : 0;
+  auto at = [](std::vector<double>& v, std::size_t k) {
+    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
+    return v[k];
+  };
+  return {at(xs, cut), at(ys, cut), at(xs, xs.size() - 1 - cut), at(ys, ys.size() - 1 - cut)};
+}
+
+}  // namespace
+
 void trace_faces(Diagram& d, FaceLabels labels) {
   d.faces.clear();
   const bool by_sites = labels == FaceLabels::kSites;
@@ -157,15 +308,9 @@ void trace_faces(Diagram& d, FaceLabels labels) {
   // continuation at a node is chosen by angle.
   auto label = [&](int h) { return by_sites ? info(d, h).site : 0; };
   const int halves = 2 * static_cast<int>(d.arcs.size());
-  std::vector<ArcPathView> paths;
-  // Per-arc and per-half-arc geometry is independent work: both cores share it (engine/parallel.h).
-  paths.resize(d.arcs.size());
-  engine::parallel_chunks(d.arcs.size(), engine::worker_count(d.arcs.size()), [&](std::size_t b, std::size_t e, int) {
-    for (std::size_t a = b; a < e; ++a) paths[a] = arc_path(d.arcs[a], d.nodes);
-  });
-  auto path_of = [&](int h) -> const ArcPathView& { return paths[h / 2]; };
-  // Outgoing half-arcs per node, and half-arcs arriving from infinity per site.
-  // Outgoing half-arcs per node in compressed rows (out_begin[v] .. out_begin[v+1]).
+  const TracingGeometry geometry = tracing_geometry(d);
+  // Outgoing half-arcs per node in compressed rows (out_begin[v] .. out_begin[v+1]), and
+  // half-arcs arriving from infinity per site.
   std::vector<int> out_begin(d.nodes.size() + 1, 0), out_list;
   std::map<int, std::vector<int>> from_infinity;
   for (int h = 0; h < halves; ++h) {
@@ -195,17 +340,6 @@ void trace_faces(Diagram& d, FaceLabels labels) {
       return key_less(infinity_key(d, a, false), infinity_key(d, b, false));
     });
 
-  // Per half-arc: the angle of its direction of travel where it starts, and its curvature in that
-  // direction (computed once; next_of compares them at every node).
-  std::vector<double> depart_angle(halves, 0.0), depart_curvature(halves, 0.0);
-  engine::parallel_chunks(static_cast<std::size_t>(halves), engine::worker_count(halves), [&](std::size_t b, std::size_t e, int) {
-    for (int h = static_cast<int>(b); h < static_cast<int>(e); ++h) {
-      if (info(d, h).start == kNone) continue;
-      const Point t = travel_direction(path_of(h), h, 0);
-      depart_angle[h] = std::atan2(t.y, t.x);
-      depart_curvature[h] = path_of(h).curvature() * (h % 2 == 0 ? 1.0 : -1.0);
-    }
-  });
   auto next_of = [&](int h) -> int {
     const HalfInfo hi = info(d, h);
     const Arc& arc = d.arcs[h / 2];
@@ -233,15 +367,18 @@ void trace_faces(Diagram& d, FaceLabels labels) {
     // of arcs leaving in the same direction, the one bending more to the left lies at larger
     // angles next to the node, so the clockwise sweep from the back direction meets it first.
     // The reversed incoming direction is the departure of the twin half-arc h ^ 1.
-    const double back_angle = depart_angle[h ^ 1];
-    const double back_curvature = depart_curvature[h ^ 1];
+    const double back_angle = geometry.depart_angle[h ^ 1];
+    const double back_curvature = geometry.depart_curvature[h ^ 1];
     double best_angle = 1e9, best_curvature = 0.0;
+    best = -1;
     for (int c : outgoing(hi.end)) {
       if (label(c) != label(h) || c == (h ^ 1)) continue;
-      // Clockwise angle from the back direction to c's departure, in (0, 2π].
-      double cw = std::fmod(back_angle - depart_angle[c], kTwoPi);
+      // Clockwise angle from the back direction to c's departure, in (0, 2π] (both angles are
+      // atan2 values, so their difference lies in [-2π, 2π]).
+      double cw = back_angle - geometry.depart_angle[c];
       if (cw <= 0) cw += kTwoPi;
-      const double k = depart_curvature[c];
+      if (cw <= 0) cw += kTwoPi;
+      const double k = geometry.depart_curvature[c];
       // Leaving along the way we came: right of the returning arc (bending less left) comes first
       // in the sweep, left of it last.
       if (cw < tolerance::kParallelAngle || cw > kTwoPi - tolerance::kParallelAngle)
@@ -260,17 +397,25 @@ void trace_faces(Diagram& d, FaceLabels labels) {
     for (int h = static_cast<int>(b); h < static_cast<int>(e); ++h)
       if (label(h) != kNone) next_half[h] = next_of(h);
   });
-  std::vector<char> seen(halves, 0);
+
+  // Closed cycles, stored one after the other in `cycle_halves` (no vector per cycle: a graph of
+  // 10^6 faces would spend more time allocating than tracing).
   struct Cycle {
-    int site;
-    std::vector<HalfArc> arcs;
+    int site = kNone;
+    int begin = 0, end = 0;  // range in cycle_halves
     bool through_infinity = false;
     double area2 = 0.0;  // twice the signed area (closed cycles)
   };
   std::vector<Cycle> cycles;
+  std::vector<int> cycle_halves;
+  cycle_halves.reserve(halves);
+  std::vector<int> cycle_of_half(halves, -1);
+  std::vector<char> seen(halves, 0);
   for (int h0 = 0; h0 < halves; ++h0) {
     if (seen[h0] || label(h0) == kNone) continue;
-    Cycle cyc{label(h0), {}, false, 0.0};
+    Cycle cyc;
+    cyc.site = label(h0);
+    cyc.begin = static_cast<int>(cycle_halves.size());
     int h = h0;
     bool closed = false;
     // Orientation by signed area: chords (shoelace about the first node, against cancellation
@@ -279,9 +424,9 @@ void trace_faces(Diagram& d, FaceLabels labels) {
     const Point o = origin_node == kNone ? Point{0, 0} : Point{d.nodes[origin_node].x, d.nodes[origin_node].y};
     for (int guard = 0; guard <= halves; ++guard) {
       seen[h] = 1;
-      cyc.arcs.push_back(half_of(h));
+      cycle_halves.push_back(h);
       const HalfInfo hi = info(d, h);
-      cyc.area2 += segment_area2(path_of(h), h);
+      cyc.area2 += (h % 2 == 0 ? 1.0 : -1.0) * geometry.segment_area2[h / 2];
       if (hi.start != kNone && hi.end != kNone) {
         const Node& a = d.nodes[hi.start];
         const Node& b = d.nodes[hi.end];
@@ -298,32 +443,53 @@ void trace_faces(Diagram& d, FaceLabels labels) {
       if (seen[nx]) break;
       h = nx;
     }
-    if (closed) cycles.push_back(std::move(cyc));
+    if (!closed) {
+      cycle_halves.resize(cyc.begin);
+      continue;
+    }
+    cyc.end = static_cast<int>(cycle_halves.size());
+    for (int k = cyc.begin; k < cyc.end; ++k) cycle_of_half[cycle_halves[k]] = static_cast<int>(cycles.size());
+    cycles.push_back(cyc);
   }
+  auto halves_of = [&](const Cycle& c) {
+    return std::span<const int>(cycle_halves.data() + c.begin, static_cast<std::size_t>(c.end - c.begin));
+  };
+  auto half_arcs_of = [&](const Cycle& c) {
+    std::vector<HalfArc> out;
+    out.reserve(static_cast<std::size_t>(c.end - c.begin));
+    for (int h : halves_of(c)) out.push_back(half_of(h));
+    return out;
+  };
   // Outer cycles make faces; clockwise cycles are holes of the face of their site containing them.
   std::unordered_map<int, std::vector<int>> faces_of_site;
-  std::vector<const Cycle*> holes;
-  std::vector<double> outer_area;  // per face: |area| of its outer cycle (∞ when unbounded)
-  for (const Cycle& c : cycles) {
-    if (c.through_infinity || c.area2 > 0) {
-      outer_area.push_back(c.through_infinity ? INFINITY : c.area2);
-      Face f;
-      f.site = by_sites ? c.site : kNone;
-      f.bounded = !c.through_infinity;
-      f.boundaries.push_back(c.arcs);
-      faces_of_site[c.site].push_back(static_cast<int>(d.faces.size()));
-      d.faces.push_back(std::move(f));
+  std::vector<int> holes;                  // cycle indices
+  std::vector<int> face_of_cycle(cycles.size(), -1), hole_of_cycle(cycles.size(), -1);
+  std::vector<double> outer_area;          // per face: |area| of its outer cycle (∞ when unbounded)
+  for (std::size_t c = 0; c < cycles.size(); ++c) {
+    const Cycle& cyc = cycles[c];
+    if (cyc.through_infinity || cyc.area2 > 0) {
+      outer_area.push_back(cyc.through_infinity ? INFINITY : cyc.area2);
+      face_of_cycle[c] = static_cast<int>(d.faces.size());
+      faces_of_site[cyc.site].push_back(static_cast<int>(d.faces.size()));
+      d.faces.push_back(Face{by_sites ? cyc.site : kNone, !cyc.through_infinity, false, {}});
     } else {
-      holes.push_back(&c);
+      hole_of_cycle[c] = static_cast<int>(holes.size());
+      holes.push_back(static_cast<int>(c));
     }
   }
+  // Each face's outer cycle as half-arcs (independent per face: both cores share the allocations).
+  {
+    std::vector<int> outer_cycle(d.faces.size());
+    for (std::size_t c = 0; c < cycles.size(); ++c)
+      if (face_of_cycle[c] >= 0) outer_cycle[face_of_cycle[c]] = static_cast<int>(c);
+    engine::parallel_chunks(d.faces.size(), engine::worker_count(d.faces.size()), [&](std::size_t b, std::size_t e, int) {
+      for (std::size_t f = b; f < e; ++f) d.faces[f].boundaries.push_back(half_arcs_of(cycles[outer_cycle[f]]));
+    });
+  }
   const std::vector<char> has_outer(d.faces.size(), 1);
-  // The face whose outer cycle runs along each half-arc: the face across a hole's own arcs is the
-  // one on the hole's other side, never the face containing it (the test point lies on that arc).
-  std::vector<int> outer_face_of_half(halves, -1);
-  for (std::size_t f = 0; f < d.faces.size(); ++f)
-    for (const HalfArc& h : d.faces[f].boundaries.front())
-      outer_face_of_half[half_id(h.arc, h.forward)] = static_cast<int>(f);
+  // The face whose outer cycle runs along each half-arc (-1 on holes): the face across a hole's own
+  // arcs is the one on the hole's other side, never the face containing it.
+  auto outer_face_of_half = [&](int h) { return cycle_of_half[h] < 0 ? -1 : face_of_cycle[cycle_of_half[h]]; };
   std::map<int, int> implicit_face;  // site -> its unbounded face without outer cycle
   // The unbounded component of a site without lines has no outer cycle, only holes: one face per
   // site (per graph when tracing by geometry), made on first use.
@@ -339,83 +505,30 @@ void trace_faces(Diagram& d, FaceLabels labels) {
     }
     return it->second;
   };
-  // Candidate outer cycles for a point, through a uniform grid over their bounding boxes. Cycles
-  // through infinity are always
-  // candidates. Without it, tracing by geometry (one label for all faces) would test every hole
-  // against every face.
-  struct BoxGrid {
-    double x0 = 0, y0 = 0, cell = 1;
-    int nx = 1, ny = 1;
-    std::vector<std::vector<int>> cells;
-    std::vector<int> always;
-  } grid;
-  // Built on first use: most graphs have no hole that needs a containment test.
-  bool grid_built = false;
-  auto build_grid = [&]() {
-    grid_built = true;
-    std::vector<std::array<double, 4>> boxes(outer_area.size());
-    double gx0 = INFINITY, gy0 = INFINITY, gx1 = -INFINITY, gy1 = -INFINITY;
-    for (std::size_t f = 0; f < outer_area.size(); ++f) {
-      std::array<double, 4> b = {INFINITY, INFINITY, -INFINITY, -INFINITY};
-      for (const HalfArc& h : d.faces[f].boundaries.front()) {
-        const ArcPathView& p = paths[h.arc];
-        if (p.circle) {
-          // The arc's own box: its ends and the circle's extreme points within its sweep.
-          auto grow = [&](Point q) {
-            b = {std::min(b[0], q.x), std::min(b[1], q.y), std::max(b[2], q.x), std::max(b[3], q.y)};
-          };
-          grow(p.at(p.s0));
-          grow(p.at(p.s1));
-          for (int k = 0; k < 4; ++k) {
-            double t = p.sense * (k * 0.5 * kPi - p.start_angle);
-            t = std::fmod(t, kTwoPi);
-            if (t < 0) t += kTwoPi;
-            if (t >= p.s0 && t <= p.s1) grow(p.at(t));
-          }
-        } else {
-          for (double t : {p.s0, p.s1}) {
-            const Point q = std::isfinite(t) ? p.at(t) : Point{INFINITY, INFINITY};
-            if (!std::isfinite(q.x)) b = {-INFINITY, -INFINITY, INFINITY, INFINITY};
-            else b = {std::min(b[0], q.x), std::min(b[1], q.y), std::max(b[2], q.x), std::max(b[3], q.y)};
-          }
-        }
-      }
-      boxes[f] = b;
-      if (std::isfinite(b[0]) && std::isfinite(b[2])) {
-        gx0 = std::min(gx0, b[0]), gy0 = std::min(gy0, b[1]);
-        gx1 = std::max(gx1, b[2]), gy1 = std::max(gy1, b[3]);
-      }
-    }
-    if (std::isfinite(gx0)) {
-      const double extent = std::max(gx1 - gx0, gy1 - gy0);
-      const int side = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(outer_area.size()))), 1, 2048);
-      grid.x0 = gx0, grid.y0 = gy0, grid.cell = std::max(extent / side, 1e-300);
-      grid.nx = std::clamp(static_cast<int>((gx1 - gx0) / grid.cell) + 1, 1, 4096);
-      grid.ny = std::clamp(static_cast<int>((gy1 - gy0) / grid.cell) + 1, 1, 4096);
-      grid.cells.resize(static_cast<std::size_t>(grid.nx) * grid.ny);
-    }
-    for (std::size_t f = 0; f < outer_area.size(); ++f) {
-      const auto& b = boxes[f];
-      if (!std::isfinite(b[0]) || !std::isfinite(b[2]) || grid.cells.empty()) {
-        grid.always.push_back(static_cast<int>(f));
-        continue;
-      }
-      const int i0 = std::clamp(static_cast<int>((b[0] - grid.x0) / grid.cell), 0, grid.nx - 1);
-      const int i1 = std::clamp(static_cast<int>((b[2] - grid.x0) / grid.cell), 0, grid.nx - 1);
-      const int j0 = std::clamp(static_cast<int>((b[1] - grid.y0) / grid.cell), 0, grid.ny - 1);
-      const int j1 = std::clamp(static_cast<int>((b[3] - grid.y0) / grid.cell), 0, grid.ny - 1);
-      for (int i = i0; i <= i1; ++i)
-        for (int j = j0; j <= j1; ++j) grid.cells[static_cast<std::size_t>(i) * grid.ny + j].push_back(static_cast<int>(f));
-    }
-  };
+  auto path_of_arc = [&](int arc) { return arc_path(d.arcs[arc], d.nodes); };
+  // Candidate outer cycles for a point, through a grid over their bounding boxes (built on first
+  // use: most graphs have no hole that needs a containment test). Without it, tracing by geometry
+  // (one label for all faces) would test every hole against every face.
+  std::optional<BoxGrid> face_grid;
   auto candidate_faces = [&](Point p) {
-    if (!grid_built) build_grid();
-    std::vector<int> out = grid.always;
-    if (!grid.cells.empty()) {
-      const int i = static_cast<int>(std::floor((p.x - grid.x0) / grid.cell));
-      const int j = static_cast<int>(std::floor((p.y - grid.y0) / grid.cell));
-      if (i >= 0 && i < grid.nx && j >= 0 && j < grid.ny) {
-        const auto& c = grid.cells[static_cast<std::size_t>(i) * grid.ny + j];
+    if (!face_grid) {
+      std::vector<Box> boxes(outer_area.size(), kEmptyBox);
+      Box area = kEmptyBox;
+      for (std::size_t f = 0; f < outer_area.size(); ++f) {
+        for (const HalfArc& h : d.faces[f].boundaries.front()) {
+          const Box b = arc_box(d.arcs[h.arc], d.nodes);
+          boxes[f] = {std::min(boxes[f][0], b[0]), std::min(boxes[f][1], b[1]), std::max(boxes[f][2], b[2]),
+                      std::max(boxes[f][3], b[3])};
+        }
+        if (is_finite(boxes[f])) grow(area, boxes[f][0], boxes[f][1]), grow(area, boxes[f][2], boxes[f][3]);
+      }
+      face_grid = make_grid(boxes, area, outer_area.size());
+    }
+    std::vector<int> out = face_grid->always;
+    if (face_grid->nx > 0) {
+      const double i = std::floor((p.x - face_grid->x0) / face_grid->cw), j = std::floor((p.y - face_grid->y0) / face_grid->ch);
+      if (i >= 0 && i < face_grid->nx && j >= 0 && j < face_grid->ny) {
+        const auto c = face_grid->cell(static_cast<int>(i), static_cast<int>(j));
         out.insert(out.end(), c.begin(), c.end());
       }
     }
@@ -428,78 +541,25 @@ void trace_faces(Diagram& d, FaceLabels labels) {
   // node (ambiguous), fall back to containment tests.
   std::vector<int> ray_face(holes.size(), -2);  // face, -1 unbounded, -2 undecided
   if (!by_sites && !holes.empty()) {
-    // Which cycle each half-arc belongs to: outer cycles by face, holes by index.
-    std::vector<int> outer_of_half(halves, -1), hole_of_half(halves, -1);
-    for (std::size_t f = 0; f < d.faces.size(); ++f)
-      for (const HalfArc& h : d.faces[f].boundaries.front()) outer_of_half[half_id(h.arc, h.forward)] = static_cast<int>(f);
-    for (std::size_t k = 0; k < holes.size(); ++k)
-      for (const HalfArc& h : holes[k]->arcs) hole_of_half[half_id(h.arc, h.forward)] = static_cast<int>(k);
-    // Arc boxes in a uniform grid (rows by y, for horizontal rays).
     // A few holes (the usual case: the outer boundary of a weighted diagram) are cheaper to test
-    // against every arc than to grid all arcs for.
+    // against every arc's box than to grid all arcs for.
     const bool scan_all = holes.size() <= 16;
-    std::vector<std::array<double, 4>> box(scan_all ? 0 : d.arcs.size());
-    double bx0 = INFINITY, by0 = INFINITY, bx1 = -INFINITY, by1 = -INFINITY;
+    std::vector<Box> box(d.arcs.size());
+    engine::parallel_chunks(d.arcs.size(), engine::worker_count(d.arcs.size()), [&](std::size_t b, std::size_t e, int) {
+      for (std::size_t a = b; a < e; ++a) box[a] = arc_box(d.arcs[a], d.nodes);
+    });
     std::vector<int> unbounded_arcs;
-    std::vector<char> is_unbounded(d.arcs.size(), 0);
-    for (std::size_t a = 0; a < d.arcs.size(); ++a) {
-      const ArcPathView& p = paths[a];
-      if (!p.circle && (!std::isfinite(p.s0) || !std::isfinite(p.s1))) {
-        unbounded_arcs.push_back(static_cast<int>(a));
-        is_unbounded[a] = 1;
-        continue;
-      }
-      if (scan_all) continue;
-      std::array<double, 4> b = {INFINITY, INFINITY, -INFINITY, -INFINITY};
-      auto grow = [&](Point q) {
-        b = {std::min(b[0], q.x), std::min(b[1], q.y), std::max(b[2], q.x), std::max(b[3], q.y)};
-      };
-      if (p.circle) {
-        grow(p.at(p.s0));
-        grow(p.at(p.s1));
-        for (int k = 0; k < 4; ++k) {
-          double t = std::fmod(p.sense * (k * 0.5 * kPi - p.start_angle), kTwoPi);
-          if (t < 0) t += kTwoPi;
-          if (t >= p.s0 && t <= p.s1) grow(p.at(t));
-        }
-      } else {
-        grow(p.at(p.s0));
-        grow(p.at(p.s1));
-      }
-      box[a] = b;
-      bx0 = std::min(bx0, b[0]), by0 = std::min(by0, b[1]), bx1 = std::max(bx1, b[2]), by1 = std::max(by1, b[3]);
-    }
-    // Grid bounds from the central 98% of node coordinates: far arcs of nearly tangent bisectors
-    // would otherwise stretch the cells over the whole diagram (they land in the border cells).
-    if (!scan_all && d.nodes.size() >= 100) {
-      std::vector<double> nx, ny;
-      for (const Node& n : d.nodes)
-        if (std::isfinite(n.x) && std::isfinite(n.y)) nx.push_back(n.x), ny.push_back(n.y);
-      if (nx.size() >= 100) {
-        std::sort(nx.begin(), nx.end());
-        std::sort(ny.begin(), ny.end());
-        const std::size_t cut = nx.size() / 100;
-        bx0 = nx[cut], bx1 = nx[nx.size() - 1 - cut], by0 = ny[cut], by1 = ny[ny.size() - 1 - cut];
-      }
-    }
-    const int side = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(d.arcs.size()))), 1, 2048);
-    const double cw = std::max((bx1 - bx0) / side, 1e-300), ch = std::max((by1 - by0) / side, 1e-300);
-    std::vector<std::vector<int>> cell(scan_all ? 0 : static_cast<std::size_t>(side) * side);
-    if (!scan_all && std::isfinite(bx0))
-      for (std::size_t a = 0; a < d.arcs.size(); ++a) {
-        if (is_unbounded[a]) continue;
-        const auto& b = box[a];
-        const int i0 = std::clamp(static_cast<int>((b[0] - bx0) / cw), 0, side - 1);
-        const int i1 = std::clamp(static_cast<int>((b[2] - bx0) / cw), 0, side - 1);
-        const int j0 = std::clamp(static_cast<int>((b[1] - by0) / ch), 0, side - 1);
-        const int j1 = std::clamp(static_cast<int>((b[3] - by0) / ch), 0, side - 1);
-        for (int i = i0; i <= i1; ++i)
-          for (int j = j0; j <= j1; ++j) cell[static_cast<std::size_t>(j) * side + i].push_back(static_cast<int>(a));
-      }
+    for (std::size_t a = 0; a < d.arcs.size(); ++a)
+      if (!is_finite(box[a])) unbounded_arcs.push_back(static_cast<int>(a));
+    const Box nodes_box = central_box(d.nodes);
+    BoxGrid arc_grid;
+    if (!scan_all) arc_grid = make_grid(box, nodes_box, d.arcs.size());
     // Crossings of the horizontal line y with an arc: (x, tangent y-component) pairs.
-    auto crossings = [&](int a, double y, std::vector<std::pair<double, double>>& out) {
-      const ArcPathView& p = paths[a];
-      out.clear();
+    std::vector<std::pair<double, double>> xs;
+    auto crossings = [&](int a, double y) {
+      xs.clear();
+      if (!(box[a][1] <= y && y <= box[a][3])) return;
+      const ArcPathView p = path_of_arc(a);
       if (p.circle) {
         const double dy = y - p.cy;
         const double h2 = p.r * p.r - dy * dy;
@@ -511,25 +571,22 @@ void trace_faces(Diagram& d, FaceLabels labels) {
           // A full circle has no end where the ray could pass through a node: its start angle
           // is an ordinary point (concentric circles are hit exactly there).
           const bool full = d.arcs[a].from == kNone;
-          if ((s > p.s0 && s < p.s1) || full) out.emplace_back(x, p.tangent(s).y);
+          if ((s > p.s0 && s < p.s1) || full) xs.emplace_back(x, p.tangent(s).y);
         }
       } else if (p.uy != 0) {
         const double s = (y - p.oy) / p.uy;
-        if (s > p.s0 && s < p.s1) out.emplace_back(p.ox + s * p.ux, p.uy);
+        if (s > p.s0 && s < p.s1) xs.emplace_back(p.ox + s * p.ux, p.uy);
       }
     };
-    std::vector<std::pair<double, double>> xs;
     std::vector<int> stamp(d.arcs.size(), -1);
-    if (scan_all)  // the extent for eps_x from the nodes (no arc boxes were made)
-      for (const Node& n : d.nodes)
-        if (std::isfinite(n.x) && std::isfinite(n.y))
-          bx0 = std::min(bx0, n.x), bx1 = std::max(bx1, n.x), by0 = std::min(by0, n.y), by1 = std::max(by1, n.y);
-    const double eps_x = std::isfinite(bx0) ? 1e-12 * std::max(bx1 - bx0, by1 - by0) : 0.0;
+    const double eps_x = is_finite(nodes_box)
+                             ? tolerance::kRayTie * std::max(nodes_box[2] - nodes_box[0], nodes_box[3] - nodes_box[1])
+                             : 0.0;
     for (std::size_t k = 0; k < holes.size(); ++k) {
       // Rightmost point of the hole.
       Point right{-INFINITY, 0};
-      for (const HalfArc& h : holes[k]->arcs) {
-        const ArcPathView& p = paths[h.arc];
+      for (int hh : halves_of(cycles[holes[k]])) {
+        const ArcPathView p = path_of_arc(hh / 2);
         auto consider = [&](Point q) {
           if (q.x > right.x) right = q;
         };
@@ -541,40 +598,47 @@ void trace_faces(Diagram& d, FaceLabels labels) {
           if (t >= p.s0 && t <= p.s1) consider(p.at(t));
         }
       }
-      if (!std::isfinite(right.x) || (!scan_all && !std::isfinite(bx0))) continue;
+      if (!std::isfinite(right.x)) continue;
       double best_x = INFINITY, best_ty = 0;
       int best_arc = -1;
       bool ambiguous = false;
       auto test_arc = [&](int a) {
-        crossings(a, right.y, xs);
+        if (box[a][2] <= right.x) return;  // wholly left of the ray's origin
+        crossings(a, right.y);
         for (auto [x, ty] : xs) {
           if (x <= right.x + eps_x) continue;
           if (std::abs(x - best_x) <= eps_x) ambiguous = true;
           if (x < best_x) best_x = x, best_ty = ty, best_arc = a, ambiguous = false;
         }
       };
+      if (!scan_all && arc_grid.nx == 0) continue;  // no finite extent to grid: containment tests
       for (int a : unbounded_arcs) test_arc(a);
-      if (scan_all)
+      if (scan_all) {
         for (std::size_t a = 0; a < d.arcs.size(); ++a)
-          if (!is_unbounded[a]) test_arc(static_cast<int>(a));
-      const int j = scan_all ? 0 : std::clamp(static_cast<int>((right.y - by0) / ch), 0, side - 1);
-      for (int i = scan_all ? side : std::clamp(static_cast<int>((right.x - bx0) / cw), 0, side - 1); i < side; ++i) {
-        if (i > 0 && best_x < bx0 + i * cw) break;  // the nearest hit is left of this cell
-        for (int a : cell[static_cast<std::size_t>(j) * side + i]) {
-          if (stamp[a] == static_cast<int>(k)) continue;  // an arc spans several cells
-          stamp[a] = static_cast<int>(k);
-          test_arc(a);
+          if (is_finite(box[a])) test_arc(static_cast<int>(a));
+      } else if (arc_grid.nx > 0) {
+        const int j = arc_grid.row(right.y);
+        for (int i = arc_grid.column(right.x); i < arc_grid.nx; ++i) {
+          if (i > 0 && best_x < arc_grid.x0 + i * arc_grid.cw) break;  // the nearest hit is left of this cell
+          for (int a : arc_grid.cell(i, j)) {
+            if (stamp[a] == static_cast<int>(k)) continue;  // an arc spans several cells
+            stamp[a] = static_cast<int>(k);
+            test_arc(a);
+          }
         }
       }
       if (best_arc < 0) {
         ray_face[k] = unbounded_arcs.empty() ? -1 : -2;
         continue;
       }
-      if (ambiguous || std::abs(best_ty) < 1e-12) continue;  // through a node, or tangent: fall back
+      // Through a node, or tangent to the hit arc: fall back to containment tests.
+      if (ambiguous || std::abs(best_ty) < tolerance::kRayTangent) continue;
       // The half-arc facing -x (the ray's origin) on its left: tangent pointing up.
       const int hit = half_id(best_arc, best_ty > 0);
-      if (outer_of_half[hit] >= 0) ray_face[k] = outer_of_half[hit];
-      else if (hole_of_half[hit] >= 0 && hole_of_half[hit] != static_cast<int>(k)) ray_face[k] = -3 - hole_of_half[hit];
+      const int hit_cycle = cycle_of_half[hit];
+      if (hit_cycle < 0) continue;
+      if (face_of_cycle[hit_cycle] >= 0) ray_face[k] = face_of_cycle[hit_cycle];
+      else if (hole_of_cycle[hit_cycle] != static_cast<int>(k)) ray_face[k] = -3 - hole_of_cycle[hit_cycle];
     }
     // Resolve chains of holes (-3 - other) to faces.
     for (std::size_t k = 0; k < holes.size(); ++k) {
@@ -584,14 +648,14 @@ void trace_faces(Diagram& d, FaceLabels labels) {
     }
   }
   for (std::size_t hk = 0; hk < holes.size(); ++hk) {
-    const Cycle* hole = holes[hk];
+    const Cycle& hole = cycles[holes[hk]];
     if (ray_face[hk] != -2) {
       int target = ray_face[hk];
-      if (target < 0) target = implicit_face_of(hole->site);
-      d.faces[target].boundaries.push_back(hole->arcs);
+      if (target < 0) target = implicit_face_of(hole.site);
+      d.faces[target].boundaries.push_back(half_arcs_of(hole));
       continue;
     }
-    const HalfArc first = hole->arcs.front();
+    const HalfArc first = half_of(cycle_halves[hole.begin]);
     const ArcPathView path = arc_path(d.arcs[first.arc], d.nodes);
     const double mid = std::isfinite(path.s0) && std::isfinite(path.s1) ? 0.5 * (path.s0 + path.s1)
                        : std::isfinite(path.s0)                          ? path.s0 + 1.0
@@ -600,21 +664,19 @@ void trace_faces(Diagram& d, FaceLabels labels) {
     const Point p = path.at(mid);
     int target = -1;
     std::vector<int> across;
-    for (const HalfArc& h : hole->arcs) across.push_back(outer_face_of_half[half_id(h.arc, !h.forward)]);
+    for (int h : halves_of(hole)) across.push_back(outer_face_of_half(h ^ 1));
     for (int f : candidate_faces(p)) {
-      if (d.faces[f].site != (by_sites ? hole->site : kNone)) continue;
+      if (d.faces[f].site != (by_sites ? hole.site : kNone)) continue;
       if (f >= static_cast<int>(outer_area.size())) continue;  // hole-only faces have no outer
       if (std::find(across.begin(), across.end(), f) != across.end()) continue;
       // Innermost containing outer cycle (smallest area) wins.
-      if (contains_with(d, d.faces[f].boundaries.front(), p,
-                        [&](int arc) -> const ArcPathView& { return paths[arc]; }) &&
-          (target < 0 || outer_area[f] < outer_area[target]))
+      if (cycle_contains(d, d.faces[f].boundaries.front(), p) && (target < 0 || outer_area[f] < outer_area[target]))
         target = f;
     }
     if (target < 0) {
-      target = implicit_face_of(hole->site);
+      target = implicit_face_of(hole.site);
     }
-    d.faces[target].boundaries.push_back(hole->arcs);
+    d.faces[target].boundaries.push_back(half_arcs_of(hole));
   }
   if (!by_sites) {
     if (d.faces.empty()) d.faces.push_back(Face{kNone, false, false, {}});  // no arcs: the plane

@@ -15,6 +15,14 @@ namespace covmap::voronoi::tolerance {
 // offset) order is the true order whenever the angle difference is this small.
 inline constexpr double kParallelAngle = 1e-8;
 
+// Face tracing by geometry, placing holes: a hole's containing face is read off the first arc hit
+// by a ray to +x from the hole's rightmost point. Two hits closer than kRayTie times the extent of
+// the nodes are one point (the ray passes through a node: ambiguous), and a hit where the arc's
+// tangent has a y-component below kRayTangent grazes it; both fall back to containment tests,
+// which are slower but decide by area, so these only need to exceed rounding.
+inline constexpr double kRayTie = 1e-12;
+inline constexpr double kRayTangent = 1e-12;
+
 // Clipping: a crossing of an arc with the clip boundary closer than this fraction of the clip
 // polygon's diameter to a polygon vertex is snapped onto that vertex, so an arc through a corner
 // is not split into a piece of zero length.
