@@ -21,4 +21,34 @@ WeightedPoint partner_across(const GeneralizedCircle& bisector, const WeightedPo
   return out;
 }
 
+ArcBisector arc_bisector(const voronoi::Arc& arc, const std::vector<voronoi::Node>& nodes) {
+  ArcBisector b;
+  const int at = arc.from != voronoi::kNone ? arc.from : arc.to;
+  if (const auto* c = std::get_if<voronoi::Circle>(&arc.curve)) {
+    const Complex centre(c->cx, c->cy);
+    b.v = at != voronoi::kNone ? Complex(nodes[at].x, nodes[at].y) : centre + c->r;
+    b.gamma = centre - b.v;
+    return b;
+  }
+  const auto& l = std::get<voronoi::Line>(arc.curve);
+  b.line = true;
+  b.v = at != voronoi::kNone ? Complex(nodes[at].x, nodes[at].y) : Complex(l.x, l.y);
+  b.gamma = Complex(l.dx, l.dy) / std::hypot(l.dx, l.dy);
+  return b;
+}
+
+WeightedPoint partner_across(const ArcBisector& b, const WeightedPoint& site) {
+  const Complex delta = site.position - b.v;
+  if (b.line) return {b.v + b.gamma * b.gamma * std::conj(delta), site.weight};
+  const Complex away = delta - b.gamma;  // p - c
+  const double away2 = std::norm(away);  // γ conj(δ) / conj(away) = γ conj(δ) away / |away|²
+  return {b.v + b.gamma * std::conj(delta) * away / away2, site.weight * std::sqrt(std::norm(b.gamma) / away2)};
+}
+
+bool strictly_inside(const ArcBisector& b, Complex p) {
+  const Complex delta = p - b.v;
+  if (b.line) return std::imag(std::conj(b.gamma) * delta) > 0;
+  return std::norm(delta) < 2.0 * std::real(std::conj(b.gamma) * delta);
+}
+
 }  // namespace covmap::recognition

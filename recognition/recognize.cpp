@@ -4,9 +4,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <deque>
 #include <sstream>
-#include <unordered_map>
 
 #include "recognition/bisector_relation.h"
 #include "recognition/extent.h"
@@ -14,6 +15,7 @@
 #include "recognition/mobius.h"
 #include "recognition/node_frame.h"
 #include "voronoi/clip.h"
+#include "voronoi/engine/parallel.h"
 #include "voronoi/engine.h"
 #include "voronoi/faces.h"
 
@@ -118,6 +120,144 @@ struct FaceSite {
   double weight = 1.0;
 };
 
+RecognitionFailure arc_failure(int arc, int face, Complex where, double amount, std::string message) {
+  RecognitionFailure f;
+  f.arc = arc;
+  f.face = face;
+  f.x = where.real();
+  f.y = where.imag();
+  f.amount = amount;
+  f.message = std::move(message);
+  return f;
+}
+
+// The first arc end (in arc order) farther than `tol` plus rounding from its arc's curve.
+struct EndOffCurve {
+  int arc = kNone;
+  int node = kNone;
+  double distance = 0.0;
+};
+std::optional<EndOffCurve> first_end_off_curve(const Diagram& g, double tol) {
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  for (std::size_t a = 0; a < g.arcs.size(); ++a) {
+    const Arc& arc = g.arcs[a];
+    for (int v : {arc.from, arc.to}) {
+      if (v == kNone) continue;
+      const double x = g.nodes[v].x, y = g.nodes[v].y;
+      double off = 0.0, rounding = 0.0;
+      if (const auto* c = std::get_if<voronoi::Circle>(&arc.curve)) {
+        off = std::abs(std::sqrt((x - c->cx) * (x - c->cx) + (y - c->cy) * (y - c->cy)) - c->r);
+        rounding = std::abs(c->cx) + std::abs(c->cy) + c->r;
+      } else {
+        const auto& l = std::get<voronoi::Line>(arc.curve);
+        off = std::abs((x - l.x) * l.dy - (y - l.y) * l.dx) / std::sqrt(l.dx * l.dx + l.dy * l.dy);
+        rounding = std::abs(l.x) + std::abs(l.y);
+      }
+      rounding = tolerance::kArcEndRoundingUlps * eps * (rounding + std::abs(x) + std::abs(y));
+      if (!(off <= tol + rounding)) return EndOffCurve{static_cast<int>(a), v, off};
+    }
+  }
+  return std::nullopt;
+}
+
+// Nodes whose sites' combinatorics rounding decides (tolerances.h, kTangentNodeSine): degree other
+// than three, or two arcs leaving tangentially. Their faces' propagated sites are re-anchored on
+// the nodes' solution circles, so that the recomputed diagram reproduces the degenerate node.
+std::vector<char> degenerate_nodes(const Diagram& g) {
+  const std::size_t n = g.nodes.size();
+  std::vector<int> begin(n + 1, 0);
+  for (const Arc& a : g.arcs)
+    for (int v : {a.from, a.to})
+      if (v != kNone) ++begin[v + 1];
+  for (std::size_t v = 0; v < n; ++v) begin[v + 1] += begin[v];
+  // The unit normal of every arc at each of its nodes (the radius direction, or the line's normal).
+  std::vector<Complex> normal(begin.back());
+  {
+    std::vector<int> fill(begin.begin(), begin.end() - 1);
+    for (const Arc& a : g.arcs)
+      for (int v : {a.from, a.to}) {
+        if (v == kNone) continue;
+        Complex nv;
+        if (const auto* c = std::get_if<voronoi::Circle>(&a.curve)) nv = Complex(g.nodes[v].x - c->cx, g.nodes[v].y - c->cy);
+        else nv = Complex(-std::get<voronoi::Line>(a.curve).dy, std::get<voronoi::Line>(a.curve).dx);
+        normal[fill[v]++] = nv / std::abs(nv);
+      }
+  }
+  std::vector<char> out(n, 0);
+  for (std::size_t v = 0; v < n; ++v) {
+    const int b = begin[v], e = begin[v + 1];
+    if (e - b != 3) {
+      out[v] = 1;
+      continue;
+    }
+    for (int i = b; i < e && !out[v]; ++i)
+      for (int j = i + 1; j < e; ++j)
+        if (std::abs(std::imag(std::conj(normal[i]) * normal[j])) < tolerance::kTangentNodeSine) out[v] = 1;
+  }
+  return out;
+}
+
+// The reconstruction from one site per face: weights equal up to rounding are made equal (see
+// RecognitionOptions::weight_snap), faces whose sites coincide within `tol` (orphans) share one
+// site, and weights are normalised to a largest of 1. Sites are numbered by their first face.
+Reconstruction collect_sites(const std::vector<FaceSite>& site, double tol, double weight_snap) {
+  const int faces = static_cast<int>(site.size());
+  std::vector<double> weight(faces, 0.0);
+  {
+    std::vector<std::pair<double, int>> order;
+    order.reserve(faces);
+    for (int f = 0; f < faces; ++f)
+      if (site[f].assigned) order.emplace_back(site[f].weight, f);
+    std::sort(order.begin(), order.end());
+    for (std::size_t k = 0; k < order.size(); ++k) {
+      if (k > 0 && order[k].first - order[k - 1].first <= weight_snap * order[k].first) order[k].first = order[k - 1].first;
+      weight[order[k].second] = order[k].first;
+    }
+  }
+  // Coinciding sites through a sweep in x: each face joins the first earlier face (in face order)
+  // whose site lies within tol; a union over a window of width tol.
+  std::vector<int> by_x;
+  by_x.reserve(faces);
+  for (int f = 0; f < faces; ++f)
+    if (site[f].assigned) by_x.push_back(f);
+  std::sort(by_x.begin(), by_x.end(), [&](int a, int b) {
+    return site[a].position.real() < site[b].position.real() || (site[a].position.real() == site[b].position.real() && a < b);
+  });
+  std::vector<int> same_as(faces, kNone);  // the earliest face with the same site
+  const double tol2 = tol * tol;
+  for (std::size_t k = 0; k < by_x.size(); ++k) {
+    const int f = by_x[k];
+    const Complex p = site[f].position;
+    int earliest = f;
+    for (std::size_t j = k; j-- > 0;) {
+      const int e = by_x[j];
+      if (p.real() - site[e].position.real() > tol) break;
+      if (std::norm(site[e].position - p) <= tol2) earliest = std::min(earliest, same_as[e] == kNone ? e : same_as[e]);
+    }
+    for (std::size_t j = k + 1; j < by_x.size(); ++j) {
+      const int e = by_x[j];
+      if (site[e].position.real() - p.real() > tol) break;
+      if (e < earliest && std::norm(site[e].position - p) <= tol2) earliest = e;
+    }
+    same_as[f] = earliest;
+  }
+  double wmax = 0;
+  for (int f = 0; f < faces; ++f) wmax = std::max(wmax, weight[f]);
+  Reconstruction r;
+  r.face_site.assign(faces, kNone);
+  for (int f = 0; f < faces; ++f) {
+    if (!site[f].assigned) continue;
+    const int first = same_as[f];
+    if (first != f && r.face_site[first] != kNone) {
+      r.face_site[f] = r.face_site[first];
+      continue;
+    }
+    r.face_site[f] = static_cast<int>(r.sites.size());
+    r.sites.push_back({"s" + std::to_string(r.sites.size()), site[f].position.real(), site[f].position.imag(), weight[f] / wmax});
+  }
+  return r;
+}
+
 // Paper 5 §3: when no node constrains a site, the sites are fixed by one root site through the
 // inversions along a spanning tree of the faces, and each arc asks for its two sites to lie on its
 // two sides. Pulled back to the root by the composed (anti-)Möbius map, each such demand is a
@@ -179,6 +319,27 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
     clipped = clipped || a.frame;
     a.left_site = a.right_site = kNone;
   }
+  const Extent extent = graph_extent(g);
+  const double scale = std::max(extent.diagonal(), 1e-300);
+  const double tol = options.relative_tolerance * scale;
+  // Arcs whose ends are not on their curves: malformed, and invisible to the inversions below,
+  // which take each arc through its node (bisector_relation.h).
+  if (const auto off = first_end_off_curve(g, tol)) {
+    RecognitionFailure fail;
+    fail.arc = off->arc;
+    fail.node = off->node;
+    fail.x = g.nodes[off->node].x;
+    fail.y = g.nodes[off->node].y;
+    fail.amount = off->distance;
+    std::ostringstream msg;
+    msg << "arc " << off->arc << ": its end node " << off->node << " is " << off->distance
+        << " off the arc's curve (tolerance " << tol << ")";
+    fail.message = msg.str();
+    out.bisector_graph = false;
+    out.reason = fail.message;
+    out.failure = fail;
+    return out;
+  }
   voronoi::trace_faces(g, voronoi::FaceLabels::kGeometry);
   out.timings.faces = lap();
   const int faces = static_cast<int>(g.faces.size());
@@ -186,10 +347,6 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
   for (int f = 0; f < faces; ++f)
     for (const auto& cycle : g.faces[f].boundaries)
       for (const HalfArc& h : cycle) face_of_half[half_id(h)] = f;
-
-  const Extent extent = graph_extent(g);
-  const double scale = std::max(extent.diagonal(), 1e-300);
-  const double tol = options.relative_tolerance * scale;
 
   // Nodes on the frame are where the map was cut, not where sites meet: they give no solution
   // circle.
@@ -470,8 +627,8 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
   };
   if (!family)
     for (Complex& p : candidates) p = polish(p, constraints);
-  // The constraints of every face, for re-anchoring propagated sites (errors would otherwise grow
-  // along long chains of inversions).
+  // The solution circles of the nodes of face f (at most four), for re-anchoring the sites of faces
+  // at degenerate nodes (degenerate_nodes above).
   auto face_constraints = [&](int f) {
     std::vector<Constraint> cs;
     std::vector<int> seen_nodes;
@@ -487,6 +644,16 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
       }
     return cs;
   };
+  std::vector<char> at_degenerate_node(faces, 0);
+  {
+    const std::vector<char> degenerate = degenerate_nodes(g);
+    for (int f = 0; f < faces; ++f)
+      for (const auto& cycle : g.faces[f].boundaries)
+        for (const HalfArc& hh : cycle) {
+          const int v = hh.forward ? g.arcs[hh.arc].from : g.arcs[hh.arc].to;
+          if (v != kNone && degenerate[v]) at_degenerate_node[f] = 1;
+        }
+  }
   if (candidates.empty()) {
     out.bisector_graph = false;
     RecognitionFailure fail;
@@ -516,59 +683,61 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
     return out;
   }
   out.timings.start = lap();
+  // Every arc's bisector relative to a point on it (bisector_relation.h: the partner of a site is
+  // then exact to a few ulps however large the circle, so propagation needs no re-anchoring).
+  std::vector<ArcBisector> bisector(g.arcs.size());
+  voronoi::engine::parallel_chunks(g.arcs.size(), voronoi::engine::worker_count(g.arcs.size()),
+                                   [&](std::size_t b, std::size_t e, int) {
+                                     for (std::size_t a = b; a < e; ++a) bisector[a] = arc_bisector(g.arcs[a], g.nodes);
+                                   });
+  const double tol2 = tol * tol;
   // Propagate each candidate breadth first and verify every arc.
   std::vector<Reconstruction> solutions;
   std::optional<RecognitionFailure> last_failure;
+  std::vector<FaceSite> site(faces);
+  std::vector<int> queue;
+  queue.reserve(faces);
   for (const Complex& p : candidates) {
-    std::vector<FaceSite> site(faces);
+    std::fill(site.begin(), site.end(), FaceSite{});
     site[start] = {true, p, 1.0};
-    std::deque<int> queue{start};
+    queue.assign(1, start);
     std::optional<RecognitionFailure> failure;
-    while (!queue.empty() && !failure) {
-      const int f = queue.front();
-      queue.pop_front();
+    for (std::size_t head = 0; head < queue.size() && !failure; ++head) {
+      const int f = queue[head];
+      const FaceSite here = site[f];
       for (const auto& cycle : g.faces[f].boundaries) {
         for (const HalfArc& h : cycle) {
           const Arc& arc = g.arcs[h.arc];
           const int other = face_of_half[half_id({h.arc, !h.forward})];
           if (other == kNone || arc.frame) continue;
-          const GeneralizedCircle c = curve_of(arc);
+          const ArcBisector& bis = bisector[h.arc];
           // The face on the left of h must hold its site on that side: inside the disk when h
           // runs counter-clockwise, on the left of a line.
-          const bool f_left_is_inside = std::holds_alternative<voronoi::Line>(arc.curve)
-                                            ? h.forward
-                                            : (h.forward == arc.ccw);
-          const double side = c.value(site[f].position);
-          if ((side < 0) != f_left_is_inside && distance_to(c, site[f].position) > tol) {
-            failure = RecognitionFailure{};
-            failure->arc = h.arc;
-            failure->face = f;
-            failure->x = site[f].position.real();
-            failure->y = site[f].position.imag();
-            failure->amount = distance_to(c, site[f].position);
-            std::ostringstream msg;
-            msg << "arc " << h.arc << ": the site of face " << f << " lies on the wrong side of it";
-            failure->message = msg.str();
-            break;
+          const bool f_left_is_inside = bis.line ? h.forward : (h.forward == arc.ccw);
+          if (strictly_inside(bis, here.position) != f_left_is_inside) {
+            const GeneralizedCircle c = curve_of(arc);
+            const double off = distance_to(c, here.position);
+            if (off > tol) {
+              std::ostringstream msg;
+              msg << "arc " << h.arc << ": the site of face " << f << " lies on the wrong side of it";
+              failure = arc_failure(h.arc, f, here.position, off, msg.str());
+              break;
+            }
           }
-          const WeightedPoint partner = partner_across(c, {site[f].position, site[f].weight});
+          const WeightedPoint partner = partner_across(bis, {here.position, here.weight});
           if (!site[other].assigned) {
-            site[other] = {true, polish(partner.position, face_constraints(other)), partner.weight};
+            const Complex at = at_degenerate_node[other] ? polish(partner.position, face_constraints(other)) : partner.position;
+            site[other] = {true, at, partner.weight};
             queue.push_back(other);
             continue;
           }
-          const double off = std::abs(site[other].position - partner.position);
-          if (!(off <= tol)) {
-            failure = RecognitionFailure{};
-            failure->arc = h.arc;
-            failure->face = other;
-            failure->x = partner.position.real();
-            failure->y = partner.position.imag();
-            failure->amount = off;
+          const double off2 = std::norm(site[other].position - partner.position);
+          if (!(off2 <= tol2)) {
+            const double off = std::sqrt(off2);
             std::ostringstream msg;
             msg << "arc " << h.arc << ": the sites of faces " << f << " and " << other
                 << " are not mirror images in it (off by " << off << ")";
-            failure->message = msg.str();
+            failure = arc_failure(h.arc, other, partner.position, off, msg.str());
             break;
           }
         }
@@ -581,48 +750,7 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
       continue;
     }
     out.timings.propagate += lap();
-    // Weights equal up to rounding are made equal (see RecognitionOptions::weight_snap).
-    {
-      std::vector<int> order;
-      for (int f = 0; f < faces; ++f)
-        if (site[f].assigned) order.push_back(f);
-      std::sort(order.begin(), order.end(), [&](int x, int y) { return site[x].weight < site[y].weight; });
-      for (std::size_t k = 1; k < order.size(); ++k) {
-        const double prev = site[order[k - 1]].weight;
-        double& w = site[order[k]].weight;
-        if (w - prev <= options.weight_snap * w) w = prev;
-      }
-    }
-    // Faces sharing one site (orphans) become one site; weights normalised to a largest of 1.
-    Reconstruction r;
-    double wmax = 0;
-    for (const FaceSite& s : site) wmax = std::max(wmax, s.weight);
-    r.face_site.assign(faces, kNone);
-    // Sites of several faces (orphans) coincide: found through a hash of tol-sized cells.
-    std::unordered_map<long long, std::vector<int>> cells;
-    auto cell_key = [&](double x, double y) {
-      return static_cast<long long>(std::floor(x / tol)) * 1000003LL ^ static_cast<long long>(std::floor(y / tol));
-    };
-    for (int f = 0; f < faces; ++f) {
-      if (!site[f].assigned) continue;
-      int found = kNone;
-      const double px = site[f].position.real(), py = site[f].position.imag();
-      for (int dx = -1; dx <= 1 && found == kNone; ++dx)
-        for (int dy = -1; dy <= 1 && found == kNone; ++dy) {
-          auto it = cells.find(cell_key(px + dx * tol, py + dy * tol));
-          if (it == cells.end()) continue;
-          for (int k : it->second)
-            if (std::hypot(r.sites[k].x - px, r.sites[k].y - py) <= tol) found = k;
-        }
-      if (found == kNone) cells[cell_key(px, py)].push_back(static_cast<int>(r.sites.size()));
-      if (found == kNone) {
-        found = static_cast<int>(r.sites.size());
-        r.sites.push_back({"s" + std::to_string(found), site[f].position.real(),
-                           site[f].position.imag(), site[f].weight / wmax});
-      }
-      r.face_site[f] = found;
-    }
-    solutions.push_back(std::move(r));
+    solutions.push_back(collect_sites(site, tol, options.weight_snap));
     out.timings.sites += lap();
   }
   if (solutions.empty()) {

@@ -12,6 +12,17 @@ namespace covmap::recognition::tolerance {
 // comes out of rounding as ±1e-16 of them.
 inline constexpr double kTangentDiscriminant = 1e-12;
 
+// An arc's end node may be off its curve by the recognition tolerance plus this many units of
+// rounding (machine epsilon times |c| + r + |v| for a circle with centre c and radius r, |v| + |p|
+// for a line through p): the three numbers are each rounded once, and huge circles (nearly equal
+// weights) carry absolute errors ~ε·r that no tolerance relative to the graph's extent absorbs.
+inline constexpr double kArcEndRoundingUlps = 16.0;
+
+// A node is degenerate (its sites' combinatorics are decided by rounding) when its degree is not
+// three or two of its arcs leave it tangentially: the sine of the angle between their normals is
+// below this. A tangency is a double root, known to ~√ε ≈ 1e-8 relative.
+inline constexpr double kTangentNodeSine = 1e-7;
+
 // Gauss-Newton polishing stops when the solution circles' normal equations are this close to
 // singular (all circles nearly parallel at the point): a step would then be noise.
 inline constexpr double kSingularNormalEquations = 1e-12;
