@@ -48,7 +48,7 @@ int run_recognize(const RecognizeOptions& options) {
     recognition::RecognitionOptions ro;
     ro.voronoi_check = !options.no_voronoi_check;
     ro.relative_tolerance = options.tolerance;
-    const recognition::Reconstruction r = recognition::recognize(graph, ro);
+    const recognition::Reconstruction r = recognition::recognize(std::move(graph), ro);
     std::ostringstream json, svg;
     if (!options.output_path.empty()) io::write_reconstruction_json(r, json);
     if (!options.svg_path.empty() && r.bisector_graph)

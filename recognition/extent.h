@@ -17,9 +17,22 @@ struct Extent {
   double diagonal() const { return std::hypot(xmax - xmin, ymax - ymin); }
 };
 
-inline Extent robust_extent(const std::vector<voronoi::Node>& nodes) {
+// The central 98 % of a set of coordinates (all of them below 100): order statistics by selection,
+// linear in the number of points.
+inline Extent central_extent(std::vector<double> xs, std::vector<double> ys) {
   Extent e;
-  if (nodes.empty()) return e;
+  if (xs.empty()) return e;
+  const std::size_t cut = xs.size() < 100 ? 0 : xs.size() / 100;
+  auto at = [](std::vector<double>& v, std::size_t k) {
+    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
+    return v[k];
+  };
+  e.xmin = at(xs, cut), e.xmax = at(xs, xs.size() - 1 - cut);
+  e.ymin = at(ys, cut), e.ymax = at(ys, ys.size() - 1 - cut);
+  return e;
+}
+
+inline Extent robust_extent(const std::vector<voronoi::Node>& nodes) {
   std::vector<double> xs, ys;
   xs.reserve(nodes.size());
   ys.reserve(nodes.size());
@@ -28,30 +41,30 @@ inline Extent robust_extent(const std::vector<voronoi::Node>& nodes) {
     xs.push_back(n.x);
     ys.push_back(n.y);
   }
-  if (xs.empty()) return e;
-  std::sort(xs.begin(), xs.end());
-  std::sort(ys.begin(), ys.end());
-  const std::size_t cut = xs.size() < 100 ? 0 : xs.size() / 100;
-  e.xmin = xs[cut], e.xmax = xs[xs.size() - 1 - cut];
-  e.ymin = ys[cut], e.ymax = ys[ys.size() - 1 - cut];
-  return e;
+  return central_extent(std::move(xs), std::move(ys));
 }
 
 // The extent of a whole graph: its nodes, and for graphs with few or no nodes (disjoint circles and
 // lines, paper 5 §3) also the boxes of its full circles and the anchor points of its whole lines.
 inline Extent graph_extent(const voronoi::Diagram& g) {
-  std::vector<voronoi::Node> points = g.nodes;
+  std::vector<double> xs, ys;
+  xs.reserve(g.nodes.size());
+  ys.reserve(g.nodes.size());
+  auto add = [&](double x, double y) {
+    if (std::isfinite(x) && std::isfinite(y)) xs.push_back(x), ys.push_back(y);
+  };
+  for (const auto& n : g.nodes) add(n.x, n.y);
   for (const auto& a : g.arcs) {
     if (a.from != voronoi::kNone || a.to != voronoi::kNone) continue;
     if (const auto* c = std::get_if<voronoi::Circle>(&a.curve)) {
-      points.push_back({c->cx - c->r, c->cy - c->r});
-      points.push_back({c->cx + c->r, c->cy + c->r});
+      add(c->cx - c->r, c->cy - c->r);
+      add(c->cx + c->r, c->cy + c->r);
     } else {
       const auto& l = std::get<voronoi::Line>(a.curve);
-      points.push_back({l.x, l.y});
+      add(l.x, l.y);
     }
   }
-  return robust_extent(points);
+  return central_extent(std::move(xs), std::move(ys));
 }
 
 }  // namespace covmap::recognition

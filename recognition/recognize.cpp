@@ -160,40 +160,40 @@ std::optional<EndOffCurve> first_end_off_curve(const Diagram& g, double tol) {
   return std::nullopt;
 }
 
+// The unit normal of an arc at its end node v: the radius direction, or the line's normal.
+Complex normal_at(const Arc& a, const voronoi::Node& v) {
+  Complex n;
+  if (const auto* c = std::get_if<voronoi::Circle>(&a.curve)) n = Complex(v.x - c->cx, v.y - c->cy);
+  else n = Complex(-std::get<voronoi::Line>(a.curve).dy, std::get<voronoi::Line>(a.curve).dx);
+  return n / std::abs(n);
+}
+
 // Nodes whose sites' combinatorics rounding decides (tolerances.h, kTangentNodeSine): degree other
-// than three, or two arcs leaving tangentially. Their faces' propagated sites are re-anchored on
-// the nodes' solution circles, so that the recomputed diagram reproduces the degenerate node.
-std::vector<char> degenerate_nodes(const Diagram& g) {
-  const std::size_t n = g.nodes.size();
-  std::vector<int> begin(n + 1, 0);
-  for (const Arc& a : g.arcs)
-    for (int v : {a.from, a.to})
-      if (v != kNone) ++begin[v + 1];
-  for (std::size_t v = 0; v < n; ++v) begin[v + 1] += begin[v];
-  // The unit normal of every arc at each of its nodes (the radius direction, or the line's normal).
-  std::vector<Complex> normal(begin.back());
+// than three, or two arcs leaving tangentially. At a node of degree three every pair of arcs is
+// consecutive in some face's boundary, so the pairs (h, next_half[h]) cover them all.
+std::vector<char> degenerate_nodes(const Diagram& g, const std::vector<int>& next_half) {
+  std::vector<char> out(g.nodes.size(), 0);
   {
-    std::vector<int> fill(begin.begin(), begin.end() - 1);
+    std::vector<int> degree(g.nodes.size(), 0);
     for (const Arc& a : g.arcs)
-      for (int v : {a.from, a.to}) {
-        if (v == kNone) continue;
-        Complex nv;
-        if (const auto* c = std::get_if<voronoi::Circle>(&a.curve)) nv = Complex(g.nodes[v].x - c->cx, g.nodes[v].y - c->cy);
-        else nv = Complex(-std::get<voronoi::Line>(a.curve).dy, std::get<voronoi::Line>(a.curve).dx);
-        normal[fill[v]++] = nv / std::abs(nv);
-      }
+      for (int v : {a.from, a.to})
+        if (v != kNone) ++degree[v];
+    for (std::size_t v = 0; v < g.nodes.size(); ++v) out[v] = degree[v] != 3;
   }
-  std::vector<char> out(n, 0);
-  for (std::size_t v = 0; v < n; ++v) {
-    const int b = begin[v], e = begin[v + 1];
-    if (e - b != 3) {
-      out[v] = 1;
-      continue;
+  const std::size_t halves = next_half.size();
+  std::vector<char> tangent_turn(halves, 0);
+  voronoi::engine::parallel_chunks(halves, voronoi::engine::worker_count(halves), [&](std::size_t b, std::size_t e, int) {
+    for (std::size_t h = b; h < e; ++h) {
+      const int nx = next_half[h];
+      const Arc& a = g.arcs[h / 2];
+      const int v = h % 2 == 0 ? a.to : a.from;  // where h ends and nx starts
+      if (nx == kNone || v == kNone) continue;
+      const Complex n0 = normal_at(a, g.nodes[v]), n1 = normal_at(g.arcs[nx / 2], g.nodes[v]);
+      tangent_turn[h] = std::abs(std::imag(std::conj(n0) * n1)) < tolerance::kTangentNodeSine;
     }
-    for (int i = b; i < e && !out[v]; ++i)
-      for (int j = i + 1; j < e; ++j)
-        if (std::abs(std::imag(std::conj(normal[i]) * normal[j])) < tolerance::kTangentNodeSine) out[v] = 1;
-  }
+  });
+  for (std::size_t h = 0; h < halves; ++h)
+    if (tangent_turn[h]) out[h % 2 == 0 ? g.arcs[h / 2].to : g.arcs[h / 2].from] = 1;
   return out;
 }
 
@@ -299,7 +299,7 @@ SiteRegion root_region(const Diagram& g, const std::vector<int>& face_of_half,
 
 }  // namespace
 
-Reconstruction recognize(const Diagram& input, const RecognitionOptions& options) {
+Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
   Reconstruction out;
   using Clock = std::chrono::steady_clock;
   Clock::time_point last = Clock::now();
@@ -309,7 +309,7 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
     last = now;
     return s;
   };
-  out.graph = input;
+  out.graph = std::move(input);
   Diagram& g = out.graph;
   g.sites.clear();
   g.faces.clear();
@@ -340,13 +340,13 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
     out.failure = fail;
     return out;
   }
-  voronoi::trace_faces(g, voronoi::FaceLabels::kGeometry);
+  voronoi::FaceIndex face_index;
+  voronoi::trace_faces(g, voronoi::FaceLabels::kGeometry, &face_index);
   out.timings.faces = lap();
   const int faces = static_cast<int>(g.faces.size());
-  std::vector<int> face_of_half(2 * g.arcs.size(), kNone);
-  for (int f = 0; f < faces; ++f)
-    for (const auto& cycle : g.faces[f].boundaries)
-      for (const HalfArc& h : cycle) face_of_half[half_id(h)] = f;
+  // Per half-arc: its face, and the half-arc after it in the face's boundary cycle.
+  const std::vector<int>& face_of_half = face_index.face_of_half;
+  const std::vector<int>& next_half = face_index.next_half;
 
   // Nodes on the frame are where the map was cut, not where sites meet: they give no solution
   // circle.
@@ -360,12 +360,6 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
   for (std::size_t a = 0; a < g.arcs.size(); ++a)
     if (g.arcs[a].frame && face_of_half[2 * a + 1] != kNone) outside[face_of_half[2 * a + 1]] = 1;
 
-  // The half-arc following each half-arc in its face's boundary cycle.
-  std::vector<int> next_half(2 * g.arcs.size(), kNone);
-  for (const auto& face : g.faces)
-    for (const auto& cycle : face.boundaries)
-      for (std::size_t k = 0; k < cycle.size(); ++k)
-        next_half[half_id(cycle[k])] = half_id(cycle[(k + 1) % cycle.size()]);
 
   // Lemmas 5 and §4.4: going once around node v from face f, across every arc at v and back, maps
   // f's site to itself. The composition of the inversions is an anti-Möbius map for an odd number
@@ -644,15 +638,16 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
       }
     return cs;
   };
+  // Faces at a degenerate node: those on either side of an arc ending there.
   std::vector<char> at_degenerate_node(faces, 0);
   {
-    const std::vector<char> degenerate = degenerate_nodes(g);
-    for (int f = 0; f < faces; ++f)
-      for (const auto& cycle : g.faces[f].boundaries)
-        for (const HalfArc& hh : cycle) {
-          const int v = hh.forward ? g.arcs[hh.arc].from : g.arcs[hh.arc].to;
-          if (v != kNone && degenerate[v]) at_degenerate_node[f] = 1;
-        }
+    const std::vector<char> degenerate = degenerate_nodes(g, next_half);
+    for (std::size_t a = 0; a < g.arcs.size(); ++a) {
+      const Arc& arc = g.arcs[a];
+      if (!((arc.from != kNone && degenerate[arc.from]) || (arc.to != kNone && degenerate[arc.to]))) continue;
+      for (int h : {static_cast<int>(2 * a), static_cast<int>(2 * a + 1)})
+        if (face_of_half[h] != kNone) at_degenerate_node[face_of_half[h]] = 1;
+    }
   }
   if (candidates.empty()) {
     out.bisector_graph = false;
@@ -683,67 +678,72 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
     return out;
   }
   out.timings.start = lap();
-  // Every arc's bisector relative to a point on it (bisector_relation.h: the partner of a site is
-  // then exact to a few ulps however large the circle, so propagation needs no re-anchoring).
-  std::vector<ArcBisector> bisector(g.arcs.size());
-  voronoi::engine::parallel_chunks(g.arcs.size(), voronoi::engine::worker_count(g.arcs.size()),
-                                   [&](std::size_t b, std::size_t e, int) {
-                                     for (std::size_t a = b; a < e; ++a) bisector[a] = arc_bisector(g.arcs[a], g.nodes);
-                                   });
   const double tol2 = tol * tol;
-  // Propagate each candidate breadth first and verify every arc.
+  // Each candidate is propagated breadth first along a spanning tree of the faces (Lemma 1 across
+  // each tree arc, bisector_relation.h: exact to a few ulps however large the circle, so no
+  // re-anchoring except at degenerate nodes); then every arc is verified, independently and on
+  // both cores: each of its sites on its own side, and the two sites mirror images in it.
   std::vector<Reconstruction> solutions;
   std::optional<RecognitionFailure> last_failure;
   std::vector<FaceSite> site(faces);
   std::vector<int> queue;
   queue.reserve(faces);
+  // The first failure of arcs [b, e) (in arc order), if any.
+  auto verify_arcs = [&](std::size_t b, std::size_t e) -> std::optional<RecognitionFailure> {
+    for (std::size_t a = b; a < e; ++a) {
+      const Arc& arc = g.arcs[a];
+      const int left = face_of_half[2 * a], right = face_of_half[2 * a + 1];
+      if (arc.frame || left == kNone || right == kNone || !site[left].assigned || !site[right].assigned) continue;
+      const ArcBisector bis = arc_bisector(arc, g.nodes);
+      // The face on the left must hold its site on that side: inside the disk when the arc runs
+      // counter-clockwise, on the left of a line; the face on the right the other side.
+      const bool left_is_inside = bis.line || arc.ccw;
+      for (const int f : {left, right}) {
+        const Complex p = site[f].position;
+        if (strictly_inside(bis, p) == (left_is_inside == (f == left))) continue;
+        const double off = distance_to(curve_of(arc), p);
+        if (off > tol) {
+          std::ostringstream msg;
+          msg << "arc " << a << ": the site of face " << f << " lies on the wrong side of it";
+          return arc_failure(static_cast<int>(a), f, p, off, msg.str());
+        }
+      }
+      const WeightedPoint partner = partner_across(bis, {site[left].position, site[left].weight});
+      const double off2 = std::norm(site[right].position - partner.position);
+      if (!(off2 <= tol2)) {
+        const double off = std::sqrt(off2);
+        std::ostringstream msg;
+        msg << "arc " << a << ": the sites of faces " << left << " and " << right
+            << " are not mirror images in it (off by " << off << ")";
+        return arc_failure(static_cast<int>(a), right, partner.position, off, msg.str());
+      }
+    }
+    return std::nullopt;
+  };
   for (const Complex& p : candidates) {
     std::fill(site.begin(), site.end(), FaceSite{});
     site[start] = {true, p, 1.0};
     queue.assign(1, start);
-    std::optional<RecognitionFailure> failure;
-    for (std::size_t head = 0; head < queue.size() && !failure; ++head) {
+    for (std::size_t head = 0; head < queue.size(); ++head) {
       const int f = queue[head];
       const FaceSite here = site[f];
-      for (const auto& cycle : g.faces[f].boundaries) {
+      for (const auto& cycle : g.faces[f].boundaries)
         for (const HalfArc& h : cycle) {
-          const Arc& arc = g.arcs[h.arc];
           const int other = face_of_half[half_id({h.arc, !h.forward})];
-          if (other == kNone || arc.frame) continue;
-          const ArcBisector& bis = bisector[h.arc];
-          // The face on the left of h must hold its site on that side: inside the disk when h
-          // runs counter-clockwise, on the left of a line.
-          const bool f_left_is_inside = bis.line ? h.forward : (h.forward == arc.ccw);
-          if (strictly_inside(bis, here.position) != f_left_is_inside) {
-            const GeneralizedCircle c = curve_of(arc);
-            const double off = distance_to(c, here.position);
-            if (off > tol) {
-              std::ostringstream msg;
-              msg << "arc " << h.arc << ": the site of face " << f << " lies on the wrong side of it";
-              failure = arc_failure(h.arc, f, here.position, off, msg.str());
-              break;
-            }
-          }
-          const WeightedPoint partner = partner_across(bis, {here.position, here.weight});
-          if (!site[other].assigned) {
-            const Complex at = at_degenerate_node[other] ? polish(partner.position, face_constraints(other)) : partner.position;
-            site[other] = {true, at, partner.weight};
-            queue.push_back(other);
-            continue;
-          }
-          const double off2 = std::norm(site[other].position - partner.position);
-          if (!(off2 <= tol2)) {
-            const double off = std::sqrt(off2);
-            std::ostringstream msg;
-            msg << "arc " << h.arc << ": the sites of faces " << f << " and " << other
-                << " are not mirror images in it (off by " << off << ")";
-            failure = arc_failure(h.arc, other, partner.position, off, msg.str());
-            break;
-          }
+          if (other == kNone || site[other].assigned || g.arcs[h.arc].frame) continue;
+          const WeightedPoint partner = partner_across(arc_bisector(g.arcs[h.arc], g.nodes), {here.position, here.weight});
+          const Complex at = at_degenerate_node[other] ? polish(partner.position, face_constraints(other)) : partner.position;
+          site[other] = {true, at, partner.weight};
+          queue.push_back(other);
         }
-        if (failure) break;
-      }
     }
+    const int workers = voronoi::engine::worker_count(g.arcs.size());
+    std::vector<std::optional<RecognitionFailure>> found(workers);
+    voronoi::engine::parallel_chunks(g.arcs.size(), workers,
+                                     [&](std::size_t b, std::size_t e, int w) { found[w] = verify_arcs(b, e); });
+    std::optional<RecognitionFailure> failure;
+    for (auto& f : found)
+      if (f && !failure) failure = std::move(f);
     if (failure) {
       last_failure = failure;
       out.timings.propagate += lap();
@@ -775,10 +775,10 @@ Reconstruction recognize(const Diagram& input, const RecognitionOptions& options
     // The sites must be distinct for a Voronoi diagram; coinciding sites already answer "no".
     try {
       voronoi::Diagram recomputed = voronoi::build_diagram(out.sites);
-      if (clipped) recomputed = voronoi::clip_diagram(recomputed, frame_polygon(input));
+      if (clipped) recomputed = voronoi::clip_diagram(recomputed, frame_polygon(g));
       CompareOptions co;
       co.relative_tolerance = options.relative_tolerance;
-      const Comparison c = compare_graphs(input, recomputed, co);
+      const Comparison c = compare_graphs(g, recomputed, co);
       out.voronoi = c.equal() ? "yes" : "no";
       out.voronoi_differences = c.differences;
     } catch (const voronoi::InvalidSites& e) {

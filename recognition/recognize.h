@@ -93,6 +93,7 @@ struct Reconstruction {
   RecognitionTimings timings;
 };
 
-Reconstruction recognize(const voronoi::Diagram& graph, const RecognitionOptions& options = {});
+// Takes the graph by value: callers done with theirs move it in (a graph of 10^6 faces is ~200 MB).
+Reconstruction recognize(voronoi::Diagram graph, const RecognitionOptions& options = {});
 
 }  // namespace covmap::recognition

@@ -301,7 +301,7 @@ Box central_box(const std::vector<Node>& nodes) {
 
 }  // namespace
 
-void trace_faces(Diagram& d, FaceLabels labels) {
+void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
   d.faces.clear();
   const bool by_sites = labels == FaceLabels::kSites;
   // The region a half-arc bounds: its site, or (by geometry) one common label, so that every
@@ -489,7 +489,10 @@ void trace_faces(Diagram& d, FaceLabels labels) {
   const std::vector<char> has_outer(d.faces.size(), 1);
   // The face whose outer cycle runs along each half-arc (-1 on holes): the face across a hole's own
   // arcs is the one on the hole's other side, never the face containing it.
-  auto outer_face_of_half = [&](int h) { return cycle_of_half[h] < 0 ? -1 : face_of_cycle[cycle_of_half[h]]; };
+  auto outer_face_of_half = [&](int h) {
+    const int c = cycle_of_half[h];
+    return c < 0 || hole_of_cycle[c] >= 0 ? -1 : face_of_cycle[c];
+  };
   std::map<int, int> implicit_face;  // site -> its unbounded face without outer cycle
   // The unbounded component of a site without lines has no outer cycle, only holes: one face per
   // site (per graph when tracing by geometry), made on first use.
@@ -653,6 +656,7 @@ void trace_faces(Diagram& d, FaceLabels labels) {
       int target = ray_face[hk];
       if (target < 0) target = implicit_face_of(hole.site);
       d.faces[target].boundaries.push_back(half_arcs_of(hole));
+      face_of_cycle[holes[hk]] = target;
       continue;
     }
     const HalfArc first = half_of(cycle_halves[hole.begin]);
@@ -677,6 +681,15 @@ void trace_faces(Diagram& d, FaceLabels labels) {
       target = implicit_face_of(hole.site);
     }
     d.faces[target].boundaries.push_back(half_arcs_of(hole));
+    face_of_cycle[holes[hk]] = target;
+  }
+  if (index) {
+    index->face_of_half.assign(halves, kNone);
+    index->next_half = std::move(next_half);
+    for (int h = 0; h < halves; ++h) {
+      if (cycle_of_half[h] < 0) index->next_half[h] = kNone;
+      else index->face_of_half[h] = face_of_cycle[cycle_of_half[h]];
+    }
   }
   if (!by_sites) {
     if (d.faces.empty()) d.faces.push_back(Face{kNone, false, false, {}});  // no arcs: the plane

@@ -20,7 +20,16 @@ enum class FaceLabels {
               // faces get site kNone; nesting is decided by containment
 };
 
-void trace_faces(Diagram& d, FaceLabels labels = FaceLabels::kSites);
+// Per half-arc (2·arc for the arc's direction, 2·arc + 1 against it): the face it bounds and the
+// half-arc following it in that face's boundary cycle; kNone for half-arcs on no closed cycle.
+struct FaceIndex {
+  std::vector<int> face_of_half;
+  std::vector<int> next_half;
+};
+
+// When `index` is given it is filled too (what the tracing knows anyway; rebuilding it from the
+// faces costs a pass of random writes over every half-arc).
+void trace_faces(Diagram& d, FaceLabels labels = FaceLabels::kSites, FaceIndex* index = nullptr);
 
 // True when p lies inside the region enclosed by `cycle` (half-arcs with the region on their left;
 // a cycle may pass through infinity). Used for containment of holes and sites.
