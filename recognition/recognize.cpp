@@ -16,11 +16,14 @@
 #include "recognition/node_frame.h"
 #include "voronoi/clip.h"
 #include "voronoi/engine/parallel.h"
+#include "voronoi/large_buffer.h"
 #include "voronoi/engine.h"
 #include "voronoi/faces.h"
 
 namespace covmap::recognition {
 namespace {
+
+using voronoi::LargeVector;
 
 using voronoi::Arc;
 using voronoi::Diagram;
@@ -171,17 +174,17 @@ Complex normal_at(const Arc& a, const voronoi::Node& v) {
 // Nodes whose sites' combinatorics rounding decides (tolerances.h, kTangentNodeSine): degree other
 // than three, or two arcs leaving tangentially. At a node of degree three every pair of arcs is
 // consecutive in some face's boundary, so the pairs (h, next_half[h]) cover them all.
-std::vector<char> degenerate_nodes(const Diagram& g, const std::vector<int>& next_half) {
-  std::vector<char> out(g.nodes.size(), 0);
+LargeVector<char> degenerate_nodes(const Diagram& g, const LargeVector<int>& next_half) {
+  LargeVector<char> out(g.nodes.size(), 0);
   {
-    std::vector<int> degree(g.nodes.size(), 0);
+    LargeVector<int> degree(g.nodes.size(), 0);
     for (const Arc& a : g.arcs)
       for (int v : {a.from, a.to})
         if (v != kNone) ++degree[v];
     for (std::size_t v = 0; v < g.nodes.size(); ++v) out[v] = degree[v] != 3;
   }
   const std::size_t halves = next_half.size();
-  std::vector<char> tangent_turn(halves, 0);
+  LargeVector<char> tangent_turn(halves, 0);
   voronoi::engine::parallel_chunks(halves, voronoi::engine::worker_count(halves), [&](std::size_t b, std::size_t e, int) {
     for (std::size_t h = b; h < e; ++h) {
       const int nx = next_half[h];
@@ -200,11 +203,11 @@ std::vector<char> degenerate_nodes(const Diagram& g, const std::vector<int>& nex
 // The reconstruction from one site per face: weights equal up to rounding are made equal (see
 // RecognitionOptions::weight_snap), faces whose sites coincide within `tol` (orphans) share one
 // site, and weights are normalised to a largest of 1. Sites are numbered by their first face.
-Reconstruction collect_sites(const std::vector<FaceSite>& site, double tol, double weight_snap) {
+Reconstruction collect_sites(const LargeVector<FaceSite>& site, double tol, double weight_snap) {
   const int faces = static_cast<int>(site.size());
-  std::vector<double> weight(faces, 0.0);
+  LargeVector<double> weight(faces, 0.0);
   {
-    std::vector<std::pair<double, int>> order;
+    LargeVector<std::pair<double, int>> order;
     order.reserve(faces);
     for (int f = 0; f < faces; ++f)
       if (site[f].assigned) order.emplace_back(site[f].weight, f);
@@ -216,14 +219,14 @@ Reconstruction collect_sites(const std::vector<FaceSite>& site, double tol, doub
   }
   // Coinciding sites through a sweep in x: each face joins the first earlier face (in face order)
   // whose site lies within tol; a union over a window of width tol.
-  std::vector<int> by_x;
+  LargeVector<int> by_x;
   by_x.reserve(faces);
   for (int f = 0; f < faces; ++f)
     if (site[f].assigned) by_x.push_back(f);
   std::sort(by_x.begin(), by_x.end(), [&](int a, int b) {
     return site[a].position.real() < site[b].position.real() || (site[a].position.real() == site[b].position.real() && a < b);
   });
-  std::vector<int> same_as(faces, kNone);  // the earliest face with the same site
+  LargeVector<int> same_as(faces, kNone);  // the earliest face with the same site
   const double tol2 = tol * tol;
   for (std::size_t k = 0; k < by_x.size(); ++k) {
     const int f = by_x[k];
@@ -262,8 +265,8 @@ Reconstruction collect_sites(const std::vector<FaceSite>& site, double tol, doub
 // inversions along a spanning tree of the faces, and each arc asks for its two sites to lie on its
 // two sides. Pulled back to the root by the composed (anti-)Möbius map, each such demand is a
 // generalized disk for the root's site. The root is an unbounded face when there is one.
-SiteRegion root_region(const Diagram& g, const std::vector<int>& face_of_half,
-                       const std::vector<char>& outside) {
+SiteRegion root_region(const Diagram& g, const LargeVector<int>& face_of_half,
+                       const LargeVector<char>& outside) {
   SiteRegion region;
   const int faces = static_cast<int>(g.faces.size());
   for (int f = 0; f < faces && region.face == kNone; ++f)
@@ -271,8 +274,8 @@ SiteRegion root_region(const Diagram& g, const std::vector<int>& face_of_half,
   for (int f = 0; f < faces && region.face == kNone; ++f)
     if (!outside[f]) region.face = f;
   if (region.face == kNone) return region;
-  std::vector<Mobius> to_face(faces);
-  std::vector<char> reached(faces, 0), arc_used(g.arcs.size(), 0);
+  LargeVector<Mobius> to_face(faces);
+  LargeVector<char> reached(faces, 0), arc_used(g.arcs.size(), 0);
   std::deque<int> queue{region.face};
   reached[region.face] = 1;
   while (!queue.empty()) {
@@ -345,18 +348,18 @@ Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
   out.timings.faces = lap();
   const int faces = static_cast<int>(g.faces.size());
   // Per half-arc: its face, and the half-arc after it in the face's boundary cycle.
-  const std::vector<int>& face_of_half = face_index.face_of_half;
-  const std::vector<int>& next_half = face_index.next_half;
+  const LargeVector<int>& face_of_half = face_index.face_of_half;
+  const LargeVector<int>& next_half = face_index.next_half;
 
   // Nodes on the frame are where the map was cut, not where sites meet: they give no solution
   // circle.
-  std::vector<char> on_frame(g.nodes.size(), 0);
+  LargeVector<char> on_frame(g.nodes.size(), 0);
   for (const Arc& a : g.arcs)
     if (a.frame)
       for (int v : {a.from, a.to})
         if (v != kNone) on_frame[v] = 1;
   // The face outside the frame (on the right of frame arcs) has no site.
-  std::vector<char> outside(faces, 0);
+  LargeVector<char> outside(faces, 0);
   for (std::size_t a = 0; a < g.arcs.size(); ++a)
     if (g.arcs[a].frame && face_of_half[2 * a + 1] != kNone) outside[face_of_half[2 * a + 1]] = 1;
 
@@ -639,9 +642,9 @@ Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
     return cs;
   };
   // Faces at a degenerate node: those on either side of an arc ending there.
-  std::vector<char> at_degenerate_node(faces, 0);
+  LargeVector<char> at_degenerate_node(faces, 0);
   {
-    const std::vector<char> degenerate = degenerate_nodes(g, next_half);
+    const LargeVector<char> degenerate = degenerate_nodes(g, next_half);
     for (std::size_t a = 0; a < g.arcs.size(); ++a) {
       const Arc& arc = g.arcs[a];
       if (!((arc.from != kNone && degenerate[arc.from]) || (arc.to != kNone && degenerate[arc.to]))) continue;
@@ -685,8 +688,8 @@ Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
   // both cores: each of its sites on its own side, and the two sites mirror images in it.
   std::vector<Reconstruction> solutions;
   std::optional<RecognitionFailure> last_failure;
-  std::vector<FaceSite> site(faces);
-  std::vector<int> queue;
+  LargeVector<FaceSite> site(faces);
+  LargeVector<int> queue;
   queue.reserve(faces);
   // The first failure of arcs [b, e) (in arc order), if any.
   auto verify_arcs = [&](std::size_t b, std::size_t e) -> std::optional<RecognitionFailure> {

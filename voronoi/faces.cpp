@@ -12,6 +12,7 @@
 #include <unordered_map>
 
 #include "voronoi/arc_path.h"
+#include "voronoi/large_buffer.h"
 #include "voronoi/tolerances.h"
 
 namespace covmap::voronoi {
@@ -195,7 +196,7 @@ bool is_finite(const Box& b) { return std::isfinite(b[0]) && std::isfinite(b[2])
 // curvature in that direction (next_of compares them at every node); per arc, twice the signed
 // area between the forward half-arc and its chord (positive when it bulges to the right).
 struct TracingGeometry {
-  std::vector<double> depart_angle, depart_curvature, segment_area2;
+  LargeVector<double> depart_angle, depart_curvature, segment_area2;
 };
 
 TracingGeometry tracing_geometry(const Diagram& d) {
@@ -241,7 +242,7 @@ TracingGeometry tracing_geometry(const Diagram& d) {
 struct BoxGrid {
   double x0 = 0, y0 = 0, cw = 1, ch = 1;
   int nx = 0, ny = 0;
-  std::vector<int> cell_begin, items, always;
+  LargeVector<int> cell_begin, items, always;
 
   int column(double x) const { return std::clamp(static_cast<int>(std::floor((x - x0) / cw)), 0, nx - 1); }
   int row(double y) const { return std::clamp(static_cast<int>(std::floor((y - y0) / ch)), 0, ny - 1); }
@@ -252,7 +253,7 @@ struct BoxGrid {
 };
 
 // A grid of about `target` cells over `area` (boxes reaching outside it land in the border cells).
-BoxGrid make_grid(const std::vector<Box>& boxes, Box area, std::size_t target) {
+BoxGrid make_grid(const LargeVector<Box>& boxes, Box area, std::size_t target) {
   BoxGrid g;
   const int side = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(target))), 1, 2048);
   if (!is_finite(area)) {
@@ -274,7 +275,7 @@ BoxGrid make_grid(const std::vector<Box>& boxes, Box area, std::size_t target) {
     if (is_finite(b)) for_cells(b, [&](std::size_t c) { ++g.cell_begin[c + 1]; });
   for (std::size_t c = 0; c < cells; ++c) g.cell_begin[c + 1] += g.cell_begin[c];
   g.items.resize(g.cell_begin.back());
-  std::vector<int> fill(g.cell_begin.begin(), g.cell_begin.end() - 1);
+  LargeVector<int> fill(g.cell_begin.begin(), g.cell_begin.end() - 1);
   for (std::size_t k = 0; k < boxes.size(); ++k) {
     if (is_finite(boxes[k])) for_cells(boxes[k], [&](std::size_t c) { g.items[fill[c]++] = static_cast<int>(k); });
     else if (boxes[k][0] <= boxes[k][2]) g.always.push_back(static_cast<int>(k));
@@ -285,14 +286,14 @@ BoxGrid make_grid(const std::vector<Box>& boxes, Box area, std::size_t target) {
 // The box holding the central 98 % of the nodes in each coordinate: far arcs of nearly tangent
 // bisectors would otherwise stretch a grid's cells over the whole diagram.
 Box central_box(const std::vector<Node>& nodes) {
-  std::vector<double> xs, ys;
+  LargeVector<double> xs, ys;
   xs.reserve(nodes.size());
   ys.reserve(nodes.size());
   for (const Node& n : nodes)
     if (std::isfinite(n.x) && std::isfinite(n.y)) xs.push_back(n.x), ys.push_back(n.y);
   if (xs.empty()) return kEmptyBox;
   const std::size_t cut = xs.size() >= 100 ? xs.size() / 100 : 0;
-  auto at = [](std::vector<double>& v, std::size_t k) {
+  auto at = [](LargeVector<double>& v, std::size_t k) {
     std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
     return v[k];
   };
@@ -311,7 +312,7 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
   const TracingGeometry geometry = tracing_geometry(d);
   // Outgoing half-arcs per node in compressed rows (out_begin[v] .. out_begin[v+1]), and
   // half-arcs arriving from infinity per site.
-  std::vector<int> out_begin(d.nodes.size() + 1, 0), out_list;
+  LargeVector<int> out_begin(d.nodes.size() + 1, 0), out_list;
   std::map<int, std::vector<int>> from_infinity;
   for (int h = 0; h < halves; ++h) {
     const HalfInfo hi = info(d, h);
@@ -326,7 +327,7 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
   for (std::size_t v = 0; v < d.nodes.size(); ++v) out_begin[v + 1] += out_begin[v];
   out_list.resize(out_begin.back());
   {
-    std::vector<int> fill(out_begin.begin(), out_begin.end() - 1);
+    LargeVector<int> fill(out_begin.begin(), out_begin.end() - 1);
     for (int h = 0; h < halves; ++h) {
       const HalfInfo hi = info(d, h);
       if (label(h) != kNone && hi.start != kNone) out_list[fill[hi.start]++] = h;
@@ -392,7 +393,7 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
   };
 
   // The continuation of every half-arc, computed once (in parallel; next_of only reads).
-  std::vector<int> next_half(halves, -1);
+  LargeVector<int> next_half(halves, -1);
   engine::parallel_chunks(static_cast<std::size_t>(halves), engine::worker_count(halves), [&](std::size_t b, std::size_t e, int) {
     for (int h = static_cast<int>(b); h < static_cast<int>(e); ++h)
       if (label(h) != kNone) next_half[h] = next_of(h);
@@ -406,11 +407,11 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
     bool through_infinity = false;
     double area2 = 0.0;  // twice the signed area (closed cycles)
   };
-  std::vector<Cycle> cycles;
-  std::vector<int> cycle_halves;
+  LargeVector<Cycle> cycles;
+  LargeVector<int> cycle_halves;
   cycle_halves.reserve(halves);
-  std::vector<int> cycle_of_half(halves, -1);
-  std::vector<char> seen(halves, 0);
+  LargeVector<int> cycle_of_half(halves, -1);
+  LargeVector<char> seen(halves, 0);
   for (int h0 = 0; h0 < halves; ++h0) {
     if (seen[h0] || label(h0) == kNone) continue;
     Cycle cyc;
@@ -461,10 +462,10 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
     return out;
   };
   // Outer cycles make faces; clockwise cycles are holes of the face of their site containing them.
-  std::unordered_map<int, std::vector<int>> faces_of_site;
+  std::unordered_map<int, LargeVector<int>> faces_of_site;
   std::vector<int> holes;                  // cycle indices
-  std::vector<int> face_of_cycle(cycles.size(), -1), hole_of_cycle(cycles.size(), -1);
-  std::vector<double> outer_area;          // per face: |area| of its outer cycle (∞ when unbounded)
+  LargeVector<int> face_of_cycle(cycles.size(), -1), hole_of_cycle(cycles.size(), -1);
+  LargeVector<double> outer_area;          // per face: |area| of its outer cycle (∞ when unbounded)
   for (std::size_t c = 0; c < cycles.size(); ++c) {
     const Cycle& cyc = cycles[c];
     if (cyc.through_infinity || cyc.area2 > 0) {
@@ -479,14 +480,14 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
   }
   // Each face's outer cycle as half-arcs (independent per face: both cores share the allocations).
   {
-    std::vector<int> outer_cycle(d.faces.size());
+    LargeVector<int> outer_cycle(d.faces.size());
     for (std::size_t c = 0; c < cycles.size(); ++c)
       if (face_of_cycle[c] >= 0) outer_cycle[face_of_cycle[c]] = static_cast<int>(c);
     engine::parallel_chunks(d.faces.size(), engine::worker_count(d.faces.size()), [&](std::size_t b, std::size_t e, int) {
       for (std::size_t f = b; f < e; ++f) d.faces[f].boundaries.push_back(half_arcs_of(cycles[outer_cycle[f]]));
     });
   }
-  const std::vector<char> has_outer(d.faces.size(), 1);
+  const LargeVector<char> has_outer(d.faces.size(), 1);
   // The face whose outer cycle runs along each half-arc (-1 on holes): the face across a hole's own
   // arcs is the one on the hole's other side, never the face containing it.
   auto outer_face_of_half = [&](int h) {
@@ -515,7 +516,7 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
   std::optional<BoxGrid> face_grid;
   auto candidate_faces = [&](Point p) {
     if (!face_grid) {
-      std::vector<Box> boxes(outer_area.size(), kEmptyBox);
+      LargeVector<Box> boxes(outer_area.size(), kEmptyBox);
       Box area = kEmptyBox;
       for (std::size_t f = 0; f < outer_area.size(); ++f) {
         for (const HalfArc& h : d.faces[f].boundaries.front()) {
@@ -527,7 +528,7 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
       }
       face_grid = make_grid(boxes, area, outer_area.size());
     }
-    std::vector<int> out = face_grid->always;
+    std::vector<int> out(face_grid->always.begin(), face_grid->always.end());
     if (face_grid->nx > 0) {
       const double i = std::floor((p.x - face_grid->x0) / face_grid->cw), j = std::floor((p.y - face_grid->y0) / face_grid->ch);
       if (i >= 0 && i < face_grid->nx && j >= 0 && j < face_grid->ny) {
@@ -547,7 +548,7 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
     // A few holes (the usual case: the outer boundary of a weighted diagram) are cheaper to test
     // against every arc's box than to grid all arcs for.
     const bool scan_all = holes.size() <= 16;
-    std::vector<Box> box(d.arcs.size());
+    LargeVector<Box> box(d.arcs.size());
     engine::parallel_chunks(d.arcs.size(), engine::worker_count(d.arcs.size()), [&](std::size_t b, std::size_t e, int) {
       for (std::size_t a = b; a < e; ++a) box[a] = arc_box(d.arcs[a], d.nodes);
     });
@@ -581,7 +582,7 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
         if (s > p.s0 && s < p.s1) xs.emplace_back(p.ox + s * p.ux, p.uy);
       }
     };
-    std::vector<int> stamp(d.arcs.size(), -1);
+    LargeVector<int> stamp(d.arcs.size(), -1);
     const double eps_x = is_finite(nodes_box)
                              ? tolerance::kRayTie * std::max(nodes_box[2] - nodes_box[0], nodes_box[3] - nodes_box[1])
                              : 0.0;

@@ -11,6 +11,7 @@
 #pragma once
 
 #include "voronoi/diagram.h"
+#include "voronoi/large_buffer.h"
 
 namespace covmap::voronoi {
 
@@ -23,8 +24,8 @@ enum class FaceLabels {
 // Per half-arc (2·arc for the arc's direction, 2·arc + 1 against it): the face it bounds and the
 // half-arc following it in that face's boundary cycle; kNone for half-arcs on no closed cycle.
 struct FaceIndex {
-  std::vector<int> face_of_half;
-  std::vector<int> next_half;
+  LargeVector<int> face_of_half;
+  LargeVector<int> next_half;
 };
 
 // When `index` is given it is filled too (what the tracing knows anyway; rebuilding it from the
