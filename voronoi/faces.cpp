@@ -196,14 +196,18 @@ bool is_finite(const Box& b) { return std::isfinite(b[0]) && std::isfinite(b[2])
 // curvature in that direction (next_of compares them at every node); per arc, twice the signed
 // area between the forward half-arc and its chord (positive when it bulges to the right).
 struct TracingGeometry {
-  LargeVector<double> depart_angle, depart_curvature, segment_area2;
+  struct Departure {
+    double angle = 0.0;
+    double curvature = 0.0;
+  };
+  LargeVector<Departure> depart;  // per half-arc, angle and curvature side by side (read together)
+  LargeVector<double> segment_area2;
 };
 
 TracingGeometry tracing_geometry(const Diagram& d) {
   const std::size_t arcs = d.arcs.size();
   TracingGeometry g;
-  g.depart_angle.assign(2 * arcs, 0.0);
-  g.depart_curvature.assign(2 * arcs, 0.0);
+  g.depart.assign(2 * arcs, {});
   g.segment_area2.assign(arcs, 0.0);
   // Independent per arc: both cores share it (engine/parallel.h).
   engine::parallel_chunks(arcs, engine::worker_count(arcs), [&](std::size_t b, std::size_t e, int) {
@@ -217,10 +221,8 @@ TracingGeometry tracing_geometry(const Diagram& d) {
           const double ex = d.nodes[arc.to].x - c->cx, ey = d.nodes[arc.to].y - c->cy;
           // Forward travel at the start: the radius turned by +90° (counter-clockwise arcs);
           // backward travel at the end: the reverse of forward travel there.
-          g.depart_angle[2 * a] = std::atan2(sense * ax, -sense * ay);
-          g.depart_angle[2 * a + 1] = std::atan2(-sense * ex, sense * ey);
-          g.depart_curvature[2 * a] = sense / c->r;
-          g.depart_curvature[2 * a + 1] = -sense / c->r;
+          g.depart[2 * a] = {std::atan2(sense * ax, -sense * ay), sense / c->r};
+          g.depart[2 * a + 1] = {std::atan2(-sense * ex, sense * ey), -sense / c->r};
           if (arc.from != arc.to) {
             sweep = sense * std::atan2(ax * ey - ay * ex, ax * ex + ay * ey);
             if (sweep <= 0) sweep += kTwoPi;
@@ -229,8 +231,8 @@ TracingGeometry tracing_geometry(const Diagram& d) {
         g.segment_area2[a] = sense * c->r * c->r * (sweep - std::sin(sweep));
       } else {
         const Line& l = std::get<Line>(arc.curve);
-        if (arc.from != kNone) g.depart_angle[2 * a] = std::atan2(l.dy, l.dx);
-        if (arc.to != kNone) g.depart_angle[2 * a + 1] = std::atan2(-l.dy, -l.dx);
+        if (arc.from != kNone) g.depart[2 * a].angle = std::atan2(l.dy, l.dx);
+        if (arc.to != kNone) g.depart[2 * a + 1].angle = std::atan2(-l.dy, -l.dx);
       }
     }
   });
@@ -341,6 +343,34 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
       return key_less(infinity_key(d, a, false), infinity_key(d, b, false));
     });
 
+  // The continuation of half-arc h at the node where it ends, among the outgoing half-arcs
+  // `out` there that `eligible` admits. The region touches this node more than once (or faces are
+  // traced by geometry): take the first outgoing arc clockwise from the reversed incoming
+  // direction (the face is on the left); of arcs leaving in the same direction, the one bending
+  // more to the left lies at larger angles next to the node, so the clockwise sweep from the back
+  // direction meets it first. The reversed incoming direction is the departure of the twin h ^ 1.
+  auto turn_at = [&](std::span<const int> out, int h, auto&& eligible) {
+    const auto& back = geometry.depart[h ^ 1];
+    int best = -1;
+    double best_angle = 1e9, best_curvature = 0.0;
+    for (int c : out) {
+      if (c == (h ^ 1) || !eligible(c)) continue;
+      const auto& dc = geometry.depart[c];
+      // Clockwise angle from the back direction to c's departure, in (0, 2π] (both angles are
+      // atan2 values, so their difference lies in [-2π, 2π]).
+      double cw = back.angle - dc.angle;
+      if (cw <= 0) cw += kTwoPi;
+      if (cw <= 0) cw += kTwoPi;
+      // Leaving along the way we came: right of the returning arc (bending less left) comes first
+      // in the sweep, left of it last.
+      if (cw < tolerance::kParallelAngle || cw > kTwoPi - tolerance::kParallelAngle)
+        cw = dc.curvature < back.curvature ? 0.0 : kTwoPi;
+      if (best < 0 || cw < best_angle - tolerance::kParallelAngle ||
+          (cw <= best_angle + tolerance::kParallelAngle && dc.curvature > best_curvature))
+        best_angle = cw, best_curvature = dc.curvature, best = c;
+    }
+    return best < 0 ? h ^ 1 : best;  // none: a dangling end, come back along the same arc
+  };
   auto next_of = [&](int h) -> int {
     const HalfInfo hi = info(d, h);
     const Arc& arc = d.arcs[h / 2];
@@ -363,41 +393,31 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
         best = c;
       }
     if (count <= 1) return best;
-    // The region touches this node more than once (or faces are traced by geometry): take the
-    // first outgoing arc clockwise from the reversed incoming direction (the face is on the left);
-    // of arcs leaving in the same direction, the one bending more to the left lies at larger
-    // angles next to the node, so the clockwise sweep from the back direction meets it first.
-    // The reversed incoming direction is the departure of the twin half-arc h ^ 1.
-    const double back_angle = geometry.depart_angle[h ^ 1];
-    const double back_curvature = geometry.depart_curvature[h ^ 1];
-    double best_angle = 1e9, best_curvature = 0.0;
-    best = -1;
-    for (int c : outgoing(hi.end)) {
-      if (label(c) != label(h) || c == (h ^ 1)) continue;
-      // Clockwise angle from the back direction to c's departure, in (0, 2π] (both angles are
-      // atan2 values, so their difference lies in [-2π, 2π]).
-      double cw = back_angle - geometry.depart_angle[c];
-      if (cw <= 0) cw += kTwoPi;
-      if (cw <= 0) cw += kTwoPi;
-      const double k = geometry.depart_curvature[c];
-      // Leaving along the way we came: right of the returning arc (bending less left) comes first
-      // in the sweep, left of it last.
-      if (cw < tolerance::kParallelAngle || cw > kTwoPi - tolerance::kParallelAngle)
-        cw = k < back_curvature ? 0.0 : kTwoPi;
-      if (best < 0 || cw < best_angle - tolerance::kParallelAngle ||
-          (cw <= best_angle + tolerance::kParallelAngle && k > best_curvature))
-        best_angle = cw, best_curvature = k, best = c;
-    }
-    if (best < 0) best = h ^ 1;  // a dangling end: come back along the same arc
-    return best;
+    return turn_at(outgoing(hi.end), h, [&](int c) { return label(c) == label(h); });
   };
 
   // The continuation of every half-arc, computed once (in parallel; next_of only reads).
   LargeVector<int> next_half(halves, -1);
-  engine::parallel_chunks(static_cast<std::size_t>(halves), engine::worker_count(halves), [&](std::size_t b, std::size_t e, int) {
-    for (int h = static_cast<int>(b); h < static_cast<int>(e); ++h)
-      if (label(h) != kNone) next_half[h] = next_of(h);
-  });
+  if (by_sites) {
+    engine::parallel_chunks(static_cast<std::size_t>(halves), engine::worker_count(halves), [&](std::size_t b, std::size_t e, int) {
+      for (int h = static_cast<int>(b); h < static_cast<int>(e); ++h)
+        if (label(h) != kNone) next_half[h] = next_of(h);
+    });
+  } else {
+    // By geometry every arc at a node is eligible, so the continuations are settled node by node:
+    // each half-arc arriving at v is the twin of one leaving it, and all the data is v's own.
+    const std::size_t nodes = d.nodes.size();
+    engine::parallel_chunks(nodes, engine::worker_count(nodes), [&](std::size_t b, std::size_t e, int) {
+      for (std::size_t v = b; v < e; ++v) {
+        const auto out = outgoing(static_cast<int>(v));
+        for (int c : out) next_half[c ^ 1] = turn_at(out, c ^ 1, [](int) { return true; });
+      }
+    });
+    engine::parallel_chunks(static_cast<std::size_t>(halves), engine::worker_count(halves), [&](std::size_t b, std::size_t e, int) {
+      for (int h = static_cast<int>(b); h < static_cast<int>(e); ++h)
+        if (info(d, h).end == kNone) next_half[h] = next_of(h);
+    });
+  }
 
   // Closed cycles, stored one after the other in `cycle_halves` (no vector per cycle: a graph of
   // 10^6 faces would spend more time allocating than tracing).
@@ -412,6 +432,8 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
   cycle_halves.reserve(halves);
   LargeVector<int> cycle_of_half(halves, -1);
   LargeVector<char> seen(halves, 0);
+  // The walk only follows next_half (memory latency bound, one core); orientation and the rest
+  // are computed per cycle afterwards, on both.
   for (int h0 = 0; h0 < halves; ++h0) {
     if (seen[h0] || label(h0) == kNone) continue;
     Cycle cyc;
@@ -419,24 +441,11 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
     cyc.begin = static_cast<int>(cycle_halves.size());
     int h = h0;
     bool closed = false;
-    // Orientation by signed area: chords (shoelace about the first node, against cancellation
-    // far from the origin) plus the circular segments between chords and arcs.
-    const int origin_node = info(d, h0).start;
-    const Point o = origin_node == kNone ? Point{0, 0} : Point{d.nodes[origin_node].x, d.nodes[origin_node].y};
     for (int guard = 0; guard <= halves; ++guard) {
       seen[h] = 1;
       cycle_halves.push_back(h);
-      const HalfInfo hi = info(d, h);
-      cyc.area2 += (h % 2 == 0 ? 1.0 : -1.0) * geometry.segment_area2[h / 2];
-      if (hi.start != kNone && hi.end != kNone) {
-        const Node& a = d.nodes[hi.start];
-        const Node& b = d.nodes[hi.end];
-        cyc.area2 += (a.x - o.x) * (b.y - o.y) - (b.x - o.x) * (a.y - o.y);
-      }
       const int nx = next_half[h];
       if (nx < 0) break;
-      if (hi.end == kNone && std::holds_alternative<Line>(d.arcs[h / 2].curve))
-        cyc.through_infinity = true;
       if (nx == h0) {
         closed = true;
         break;
@@ -449,9 +458,29 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
       continue;
     }
     cyc.end = static_cast<int>(cycle_halves.size());
-    for (int k = cyc.begin; k < cyc.end; ++k) cycle_of_half[cycle_halves[k]] = static_cast<int>(cycles.size());
     cycles.push_back(cyc);
   }
+  engine::parallel_chunks(cycles.size(), engine::worker_count(cycles.size()), [&](std::size_t b, std::size_t e, int) {
+    for (std::size_t c = b; c < e; ++c) {
+      Cycle& cyc = cycles[c];
+      // Orientation by signed area: chords (shoelace about the first node, against cancellation
+      // far from the origin) plus the circular segments between chords and arcs.
+      const int origin_node = info(d, cycle_halves[cyc.begin]).start;
+      const Point o = origin_node == kNone ? Point{0, 0} : Point{d.nodes[origin_node].x, d.nodes[origin_node].y};
+      for (int k = cyc.begin; k < cyc.end; ++k) {
+        const int h = cycle_halves[k];
+        cycle_of_half[h] = static_cast<int>(c);
+        const HalfInfo hi = info(d, h);
+        cyc.area2 += (h % 2 == 0 ? 1.0 : -1.0) * geometry.segment_area2[h / 2];
+        if (hi.start != kNone && hi.end != kNone) {
+          const Node& a = d.nodes[hi.start];
+          const Node& b = d.nodes[hi.end];
+          cyc.area2 += (a.x - o.x) * (b.y - o.y) - (b.x - o.x) * (a.y - o.y);
+        }
+        if (hi.end == kNone && std::holds_alternative<Line>(d.arcs[h / 2].curve)) cyc.through_infinity = true;
+      }
+    }
+  });
   auto halves_of = [&](const Cycle& c) {
     return std::span<const int>(cycle_halves.data() + c.begin, static_cast<std::size_t>(c.end - c.begin));
   };
@@ -466,6 +495,8 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
   std::vector<int> holes;                  // cycle indices
   LargeVector<int> face_of_cycle(cycles.size(), -1), hole_of_cycle(cycles.size(), -1);
   LargeVector<double> outer_area;          // per face: |area| of its outer cycle (∞ when unbounded)
+  d.faces.reserve(static_cast<std::size_t>(
+      std::count_if(cycles.begin(), cycles.end(), [](const Cycle& c) { return c.through_infinity || c.area2 > 0; })));
   for (std::size_t c = 0; c < cycles.size(); ++c) {
     const Cycle& cyc = cycles[c];
     if (cyc.through_infinity || cyc.area2 > 0) {
