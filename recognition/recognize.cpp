@@ -142,33 +142,41 @@ struct EndOffCurve {
 };
 std::optional<EndOffCurve> first_end_off_curve(const Diagram& g, double tol) {
   constexpr double eps = std::numeric_limits<double>::epsilon();
-  for (std::size_t a = 0; a < g.arcs.size(); ++a) {
-    const Arc& arc = g.arcs[a];
-    for (int v : {arc.from, arc.to}) {
-      if (v == kNone) continue;
-      const double x = g.nodes[v].x, y = g.nodes[v].y;
-      double off = 0.0, rounding = 0.0;
-      if (const auto* c = std::get_if<voronoi::Circle>(&arc.curve)) {
-        off = std::abs(std::sqrt((x - c->cx) * (x - c->cx) + (y - c->cy) * (y - c->cy)) - c->r);
-        rounding = std::abs(c->cx) + std::abs(c->cy) + c->r;
-      } else {
-        const auto& l = std::get<voronoi::Line>(arc.curve);
-        off = std::abs((x - l.x) * l.dy - (y - l.y) * l.dx) / std::sqrt(l.dx * l.dx + l.dy * l.dy);
-        rounding = std::abs(l.x) + std::abs(l.y);
+  auto scan = [&](std::size_t begin, std::size_t end) -> std::optional<EndOffCurve> {
+    for (std::size_t a = begin; a < end; ++a) {
+      const Arc& arc = g.arcs[a];
+      for (int v : {arc.from, arc.to}) {
+        if (v == kNone) continue;
+        const double x = g.nodes[v].x, y = g.nodes[v].y;
+        double off = 0.0, rounding = 0.0;
+        if (const auto* c = std::get_if<voronoi::Circle>(&arc.curve)) {
+          off = std::abs(std::sqrt((x - c->cx) * (x - c->cx) + (y - c->cy) * (y - c->cy)) - c->r);
+          rounding = std::abs(c->cx) + std::abs(c->cy) + c->r;
+        } else {
+          const auto& l = std::get<voronoi::Line>(arc.curve);
+          off = std::abs((x - l.x) * l.dy - (y - l.y) * l.dx) / std::sqrt(l.dx * l.dx + l.dy * l.dy);
+          rounding = std::abs(l.x) + std::abs(l.y);
+        }
+        rounding = tolerance::kArcEndRoundingUlps * eps * (rounding + std::abs(x) + std::abs(y));
+        if (!(off <= tol + rounding)) return EndOffCurve{static_cast<int>(a), v, off};
       }
-      rounding = tolerance::kArcEndRoundingUlps * eps * (rounding + std::abs(x) + std::abs(y));
-      if (!(off <= tol + rounding)) return EndOffCurve{static_cast<int>(a), v, off};
     }
-  }
+    return std::nullopt;
+  };
+  const int workers = voronoi::engine::worker_count(g.arcs.size());
+  std::vector<std::optional<EndOffCurve>> found(workers);
+  voronoi::engine::parallel_chunks(g.arcs.size(), workers, [&](std::size_t b, std::size_t e, int w) { found[w] = scan(b, e); });
+  for (const auto& f : found)
+    if (f) return f;  // chunks are in arc order: the first found is the first arc
   return std::nullopt;
 }
 
-// The unit normal of an arc at its end node v: the radius direction, or the line's normal.
+// The normal of an arc at its end node v (not normalised): the radius direction, or the line's
+// normal.
 Complex normal_at(const Arc& a, const voronoi::Node& v) {
-  Complex n;
-  if (const auto* c = std::get_if<voronoi::Circle>(&a.curve)) n = Complex(v.x - c->cx, v.y - c->cy);
-  else n = Complex(-std::get<voronoi::Line>(a.curve).dy, std::get<voronoi::Line>(a.curve).dx);
-  return n / std::abs(n);
+  if (const auto* c = std::get_if<voronoi::Circle>(&a.curve)) return {v.x - c->cx, v.y - c->cy};
+  const auto& l = std::get<voronoi::Line>(a.curve);
+  return {-l.dy, l.dx};
 }
 
 // Nodes whose sites' combinatorics rounding decides (tolerances.h, kTangentNodeSine): degree other
@@ -192,7 +200,8 @@ LargeVector<char> degenerate_nodes(const Diagram& g, const LargeVector<int>& nex
       const int v = h % 2 == 0 ? a.to : a.from;  // where h ends and nx starts
       if (nx == kNone || v == kNone) continue;
       const Complex n0 = normal_at(a, g.nodes[v]), n1 = normal_at(g.arcs[nx / 2], g.nodes[v]);
-      tangent_turn[h] = std::abs(std::imag(std::conj(n0) * n1)) < tolerance::kTangentNodeSine;
+      // |sin| of the angle between the normals, below the threshold.
+      tangent_turn[h] = std::abs(std::imag(std::conj(n0) * n1)) < tolerance::kTangentNodeSine * std::sqrt(std::norm(n0) * std::norm(n1));
     }
   });
   for (std::size_t h = 0; h < halves; ++h)
@@ -220,12 +229,15 @@ Reconstruction collect_sites(const LargeVector<FaceSite>& site, double tol, doub
   // Coinciding sites through a sweep in x: each face joins the first earlier face (in face order)
   // whose site lies within tol; a union over a window of width tol.
   LargeVector<int> by_x;
-  by_x.reserve(faces);
-  for (int f = 0; f < faces; ++f)
-    if (site[f].assigned) by_x.push_back(f);
-  std::sort(by_x.begin(), by_x.end(), [&](int a, int b) {
-    return site[a].position.real() < site[b].position.real() || (site[a].position.real() == site[b].position.real() && a < b);
-  });
+  {
+    LargeVector<std::pair<double, int>> keyed;
+    keyed.reserve(faces);
+    for (int f = 0; f < faces; ++f)
+      if (site[f].assigned) keyed.emplace_back(site[f].position.real(), f);
+    std::sort(keyed.begin(), keyed.end());
+    by_x.reserve(keyed.size());
+    for (const auto& [x, f] : keyed) by_x.push_back(f);
+  }
   LargeVector<int> same_as(faces, kNone);  // the earliest face with the same site
   const double tol2 = tol * tol;
   for (std::size_t k = 0; k < by_x.size(); ++k) {
@@ -764,10 +776,10 @@ Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
   }
   out.bisector_graph = true;
   out.unique = !family;
-  out.sites = solutions.front().sites;
-  out.face_site = solutions.front().face_site;
   if (solutions.size() > 1 && !family)
     for (const auto& s : solutions) out.candidates.push_back(s.sites);
+  out.sites = std::move(solutions.front().sites);
+  out.face_site = std::move(solutions.front().face_site);
   out.region = free_root;
   out.reason = free_root ? "every arc separates mirror-image sites; no node fixes the sites: the site of face " +
                                std::to_string(free_root->face) + " may lie anywhere in a region (see region), this is one choice"
