@@ -267,32 +267,51 @@ BoxGrid make_grid(const LargeVector<Box>& boxes, Box area, std::size_t target) {
   g.cw = std::max((area[2] - area[0]) / side, 1e-300);
   g.ch = std::max((area[3] - area[1]) / side, 1e-300);
   const std::size_t cells = static_cast<std::size_t>(side) * side;
-  g.cell_begin.assign(cells + 1, 0);
   auto for_cells = [&](const Box& b, auto&& f) {
     const int i0 = g.column(b[0]), i1 = g.column(b[2]), j0 = g.row(b[1]), j1 = g.row(b[3]);
     for (int j = j0; j <= j1; ++j)
       for (int i = i0; i <= i1; ++i) f(static_cast<std::size_t>(j) * side + i);
   };
-  for (const Box& b : boxes)
-    if (is_finite(b)) for_cells(b, [&](std::size_t c) { ++g.cell_begin[c + 1]; });
-  for (std::size_t c = 0; c < cells; ++c) g.cell_begin[c + 1] += g.cell_begin[c];
-  g.items.resize(g.cell_begin.back());
-  LargeVector<int> fill(g.cell_begin.begin(), g.cell_begin.end() - 1);
-  for (std::size_t k = 0; k < boxes.size(); ++k) {
-    if (is_finite(boxes[k])) for_cells(boxes[k], [&](std::size_t c) { g.items[fill[c]++] = static_cast<int>(k); });
-    else if (boxes[k][0] <= boxes[k][2]) g.always.push_back(static_cast<int>(k));
+  // Counted and filled on both cores, each over its own contiguous range of boxes; within a cell
+  // the first range's items come first, so the rows are in box order as a sequential fill makes them.
+  const int workers = engine::worker_count(boxes.size());
+  std::vector<LargeVector<int>> count(workers);
+  engine::parallel_chunks(boxes.size(), workers, [&](std::size_t b, std::size_t e, int w) {
+    count[w].assign(cells, 0);
+    for (std::size_t k = b; k < e; ++k)
+      if (is_finite(boxes[k])) for_cells(boxes[k], [&](std::size_t c) { ++count[w][c]; });
+  });
+  g.cell_begin.assign(cells + 1, 0);
+  for (std::size_t c = 0; c < cells; ++c) {
+    int total = 0;
+    for (int w = 0; w < workers; ++w) {
+      const int n = count[w][c];
+      count[w][c] = g.cell_begin[c] + total;  // where worker w starts writing in cell c
+      total += n;
+    }
+    g.cell_begin[c + 1] = g.cell_begin[c] + total;
   }
+  g.items.resize(g.cell_begin.back());
+  engine::parallel_chunks(boxes.size(), workers, [&](std::size_t b, std::size_t e, int w) {
+    for (std::size_t k = b; k < e; ++k)
+      if (is_finite(boxes[k])) for_cells(boxes[k], [&](std::size_t c) { g.items[count[w][c]++] = static_cast<int>(k); });
+  });
+  for (std::size_t k = 0; k < boxes.size(); ++k)
+    if (!is_finite(boxes[k]) && boxes[k][0] <= boxes[k][2]) g.always.push_back(static_cast<int>(k));
   return g;
 }
 
 // The box holding the central 98 % of the nodes in each coordinate: far arcs of nearly tangent
 // bisectors would otherwise stretch a grid's cells over the whole diagram.
+// Only grid bounds depend on it (boxes outside land in the border cells), so a regular sample of at
+// most 2^16 nodes stands in for all of them.
 Box central_box(const std::vector<Node>& nodes) {
   LargeVector<double> xs, ys;
-  xs.reserve(nodes.size());
-  ys.reserve(nodes.size());
-  for (const Node& n : nodes)
+  const std::size_t stride = std::max<std::size_t>(1, nodes.size() >> 16);
+  for (std::size_t k = 0; k < nodes.size(); k += stride) {
+    const Node& n = nodes[k];
     if (std::isfinite(n.x) && std::isfinite(n.y)) xs.push_back(n.x), ys.push_back(n.y);
+  }
   if (xs.empty()) return kEmptyBox;
   const std::size_t cut = xs.size() >= 100 ? xs.size() / 100 : 0;
   auto at = [](LargeVector<double>& v, std::size_t k) {
@@ -588,7 +607,9 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
       if (!is_finite(box[a])) unbounded_arcs.push_back(static_cast<int>(a));
     const Box nodes_box = central_box(d.nodes);
     BoxGrid arc_grid;
-    if (!scan_all) arc_grid = make_grid(box, nodes_box, d.arcs.size());
+    // About four arcs per cell: a ray crosses few cells before its first hit, and a coarser grid
+    // is cheaper to fill.
+    if (!scan_all) arc_grid = make_grid(box, nodes_box, d.arcs.size() / 4);
     // Crossings of the horizontal line y with an arc: (x, tangent y-component) pairs.
     std::vector<std::pair<double, double>> xs;
     auto crossings = [&](int a, double y) {

@@ -12,6 +12,8 @@
 #include <cstddef>
 #include <cstdlib>
 #include <new>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace covmap::voronoi {
@@ -22,6 +24,9 @@ inline constexpr std::size_t kLargeBlock = std::size_t{4} << 20;
 // Aligned to kHugePage and advised as huge pages when `bytes` >= kLargeBlock; released by std::free.
 void* allocate_large(std::size_t bytes);
 
+// Note: vectors sized without a value (v(n), resize(n)) are default-initialised, not zeroed, like
+// new T[n]: the zero fill would be the first touch of every page, on one core, right before the
+// parallel loop that writes the values anyway.
 template <class T>
 struct LargeAllocator {
   using value_type = T;
@@ -33,6 +38,14 @@ struct LargeAllocator {
     return static_cast<T*>(allocate_large(n * sizeof(T)));
   }
   void deallocate(T* p, std::size_t) noexcept { std::free(p); }
+  template <class U>
+  void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
   template <class U>
   bool operator==(const LargeAllocator<U>&) const noexcept {
     return true;
