@@ -171,43 +171,6 @@ std::optional<EndOffCurve> first_end_off_curve(const Diagram& g, double tol) {
   return std::nullopt;
 }
 
-// The normal of an arc at its end node v (not normalised): the radius direction, or the line's
-// normal.
-Complex normal_at(const Arc& a, const voronoi::Node& v) {
-  if (const auto* c = std::get_if<voronoi::Circle>(&a.curve)) return {v.x - c->cx, v.y - c->cy};
-  const auto& l = std::get<voronoi::Line>(a.curve);
-  return {-l.dy, l.dx};
-}
-
-// Nodes whose sites' combinatorics rounding decides (tolerances.h, kTangentNodeSine): degree other
-// than three, or two arcs leaving tangentially. At a node of degree three every pair of arcs is
-// consecutive in some face's boundary, so the pairs (h, next_half[h]) cover them all.
-LargeVector<char> degenerate_nodes(const Diagram& g, const LargeVector<int>& next_half) {
-  LargeVector<char> out(g.nodes.size(), 0);
-  {
-    LargeVector<int> degree(g.nodes.size(), 0);
-    for (const Arc& a : g.arcs)
-      for (int v : {a.from, a.to})
-        if (v != kNone) ++degree[v];
-    for (std::size_t v = 0; v < g.nodes.size(); ++v) out[v] = degree[v] != 3;
-  }
-  const std::size_t halves = next_half.size();
-  LargeVector<char> tangent_turn(halves, 0);
-  voronoi::engine::parallel_chunks(halves, voronoi::engine::worker_count(halves), [&](std::size_t b, std::size_t e, int) {
-    for (std::size_t h = b; h < e; ++h) {
-      const int nx = next_half[h];
-      const Arc& a = g.arcs[h / 2];
-      const int v = h % 2 == 0 ? a.to : a.from;  // where h ends and nx starts
-      if (nx == kNone || v == kNone) continue;
-      const Complex n0 = normal_at(a, g.nodes[v]), n1 = normal_at(g.arcs[nx / 2], g.nodes[v]);
-      // |sin| of the angle between the normals, below the threshold.
-      tangent_turn[h] = std::abs(std::imag(std::conj(n0) * n1)) < tolerance::kTangentNodeSine * std::sqrt(std::norm(n0) * std::norm(n1));
-    }
-  });
-  for (std::size_t h = 0; h < halves; ++h)
-    if (tangent_turn[h]) out[h % 2 == 0 ? g.arcs[h / 2].to : g.arcs[h / 2].from] = 1;
-  return out;
-}
 
 // The reconstruction from one site per face: weights equal up to rounding are made equal (see
 // RecognitionOptions::weight_snap), faces whose sites coincide within `tol` (orphans) share one
@@ -220,7 +183,7 @@ Reconstruction collect_sites(const LargeVector<FaceSite>& site, double tol, doub
     order.reserve(faces);
     for (int f = 0; f < faces; ++f)
       if (site[f].assigned) order.emplace_back(site[f].weight, f);
-    std::sort(order.begin(), order.end());
+    voronoi::engine::parallel_sort(order.begin(), order.end());  // (weight, face): no ties
     for (std::size_t k = 0; k < order.size(); ++k) {
       if (k > 0 && order[k].first - order[k - 1].first <= weight_snap * order[k].first) order[k].first = order[k - 1].first;
       weight[order[k].second] = order[k].first;
@@ -234,7 +197,7 @@ Reconstruction collect_sites(const LargeVector<FaceSite>& site, double tol, doub
     keyed.reserve(faces);
     for (int f = 0; f < faces; ++f)
       if (site[f].assigned) keyed.emplace_back(site[f].position.real(), f);
-    std::sort(keyed.begin(), keyed.end());
+    voronoi::engine::parallel_sort(keyed.begin(), keyed.end());  // (x, face): no ties
     by_x.reserve(keyed.size());
     for (const auto& [x, f] : keyed) by_x.push_back(f);
   }
@@ -637,7 +600,9 @@ Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
   if (!family)
     for (Complex& p : candidates) p = polish(p, constraints);
   // The solution circles of the nodes of face f (at most four), for re-anchoring the sites of faces
-  // at degenerate nodes (degenerate_nodes above).
+  // at degenerate nodes (FaceIndex::degenerate_node: rounding of the sites decides their
+  // combinatorics, and re-anchoring on the nodes' solution circles lets the recomputed diagram
+  // reproduce them).
   auto face_constraints = [&](int f) {
     std::vector<Constraint> cs;
     std::vector<int> seen_nodes;
@@ -656,7 +621,7 @@ Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
   // Faces at a degenerate node: those on either side of an arc ending there.
   LargeVector<char> at_degenerate_node(faces, 0);
   {
-    const LargeVector<char> degenerate = degenerate_nodes(g, next_half);
+    const LargeVector<char>& degenerate = face_index.degenerate_node;
     for (std::size_t a = 0; a < g.arcs.size(); ++a) {
       const Arc& arc = g.arcs[a];
       if (!((arc.from != kNone && degenerate[arc.from]) || (arc.to != kNone && degenerate[arc.to]))) continue;

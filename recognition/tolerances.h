@@ -18,11 +18,6 @@ inline constexpr double kTangentDiscriminant = 1e-12;
 // weights) carry absolute errors ~ε·r that no tolerance relative to the graph's extent absorbs.
 inline constexpr double kArcEndRoundingUlps = 16.0;
 
-// A node is degenerate (its sites' combinatorics are decided by rounding) when its degree is not
-// three or two of its arcs leave it tangentially: the sine of the angle between their normals is
-// below this. A tangency is a double root, known to ~√ε ≈ 1e-8 relative.
-inline constexpr double kTangentNodeSine = 1e-7;
-
 // Gauss-Newton polishing stops when the solution circles' normal equations are this close to
 // singular (all circles nearly parallel at the point): a step would then be noise.
 inline constexpr double kSingularNormalEquations = 1e-12;

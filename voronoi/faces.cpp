@@ -426,10 +426,21 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
     // By geometry every arc at a node is eligible, so the continuations are settled node by node:
     // each half-arc arriving at v is the twin of one leaving it, and all the data is v's own.
     const std::size_t nodes = d.nodes.size();
+    if (index) index->degenerate_node.resize(nodes);
     engine::parallel_chunks(nodes, engine::worker_count(nodes), [&](std::size_t b, std::size_t e, int) {
       for (std::size_t v = b; v < e; ++v) {
         const auto out = outgoing(static_cast<int>(v));
         for (int c : out) next_half[c ^ 1] = turn_at(out, c ^ 1, [](int) { return true; });
+        if (!index) continue;
+        bool degenerate = out.size() != 3;
+        for (std::size_t i = 0; i < out.size() && !degenerate; ++i)
+          for (std::size_t j = i + 1; j < out.size(); ++j) {
+            // Tangent curves: directions equal or opposite (atan2 values differ by 0, π or 2π).
+            const double diff = std::abs(geometry.depart[out[i]].angle - geometry.depart[out[j]].angle);
+            const double off = std::min({diff, std::abs(diff - kPi), std::abs(diff - kTwoPi)});
+            if (off < tolerance::kParallelAngle) degenerate = true;
+          }
+        index->degenerate_node[v] = degenerate;
       }
     });
     engine::parallel_chunks(static_cast<std::size_t>(halves), engine::worker_count(halves), [&](std::size_t b, std::size_t e, int) {

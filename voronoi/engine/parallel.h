@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <functional>
 #include <thread>
 #include <vector>
 
@@ -28,6 +29,22 @@ void parallel_chunks(std::size_t n, int workers, F&& f) {
     threads.emplace_back([&f, begin, end, w] { f(begin, end, w); });
   }
   for (auto& t : threads) t.join();
+}
+
+// Sorts [first, last) on two cores: the halves concurrently, then one merge. Same result as
+// std::sort for keys without ties (both orders are then the unique sorted one).
+template <class It, class Less = std::less<>>
+void parallel_sort(It first, It last, Less less = {}) {
+  const auto n = static_cast<std::size_t>(last - first);
+  if (worker_count(n) <= 1) {
+    std::sort(first, last, less);
+    return;
+  }
+  const It mid = first + static_cast<std::ptrdiff_t>(n / 2);
+  std::thread left([&] { std::sort(first, mid, less); });
+  std::sort(mid, last, less);
+  left.join();
+  std::inplace_merge(first, mid, last, less);
 }
 
 }  // namespace covmap::voronoi::engine
