@@ -666,6 +666,7 @@ Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
   std::vector<Reconstruction> solutions;
   std::optional<RecognitionFailure> last_failure;
   LargeVector<FaceSite> site(faces);
+  LargeVector<char> reached(faces);
   LargeVector<int> queue;
   queue.reserve(faces);
   // The first failure of arcs [b, e) (in arc order), if any.
@@ -702,7 +703,10 @@ Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
   };
   for (const Complex& p : candidates) {
     std::fill(site.begin(), site.end(), FaceSite{});
+    // A byte per face (1 MB at 10^6 faces, cache-resident) for the test every half-arc makes.
+    std::fill(reached.begin(), reached.end(), 0);
     site[start] = {true, p, 1.0};
+    reached[start] = 1;
     queue.assign(1, start);
     for (std::size_t head = 0; head < queue.size(); ++head) {
       const int f = queue[head];
@@ -710,7 +714,8 @@ Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
       for (const auto& cycle : g.faces[f].boundaries)
         for (const HalfArc& h : cycle) {
           const int other = face_of_half[half_id({h.arc, !h.forward})];
-          if (other == kNone || site[other].assigned || g.arcs[h.arc].frame) continue;
+          if (other == kNone || reached[other] || g.arcs[h.arc].frame) continue;
+          reached[other] = 1;
           const WeightedPoint partner = partner_across(arc_bisector(g.arcs[h.arc], g.nodes), {here.position, here.weight});
           const Complex at = at_degenerate_node[other] ? polish(partner.position, face_constraints(other)) : partner.position;
           site[other] = {true, at, partner.weight};
