@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "voronoi/diagram.h"
+#include "voronoi/large_buffer.h"
 
 namespace covmap::recognition {
 
@@ -19,11 +20,11 @@ struct Extent {
 
 // The central 98 % of a set of coordinates (all of them below 100): order statistics by selection,
 // linear in the number of points.
-inline Extent central_extent(std::vector<double> xs, std::vector<double> ys) {
+inline Extent central_extent(voronoi::LargeVector<double> xs, voronoi::LargeVector<double> ys) {
   Extent e;
   if (xs.empty()) return e;
   const std::size_t cut = xs.size() < 100 ? 0 : xs.size() / 100;
-  auto at = [](std::vector<double>& v, std::size_t k) {
+  auto at = [](voronoi::LargeVector<double>& v, std::size_t k) {
     std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
     return v[k];
   };
@@ -33,7 +34,7 @@ inline Extent central_extent(std::vector<double> xs, std::vector<double> ys) {
 }
 
 inline Extent robust_extent(const std::vector<voronoi::Node>& nodes) {
-  std::vector<double> xs, ys;
+  voronoi::LargeVector<double> xs, ys;
   xs.reserve(nodes.size());
   ys.reserve(nodes.size());
   for (const auto& n : nodes) {
@@ -47,7 +48,7 @@ inline Extent robust_extent(const std::vector<voronoi::Node>& nodes) {
 // The extent of a whole graph: its nodes, and for graphs with few or no nodes (disjoint circles and
 // lines, paper 5 §3) also the boxes of its full circles and the anchor points of its whole lines.
 inline Extent graph_extent(const voronoi::Diagram& g) {
-  std::vector<double> xs, ys;
+  voronoi::LargeVector<double> xs, ys;
   xs.reserve(g.nodes.size());
   ys.reserve(g.nodes.size());
   auto add = [&](double x, double y) {

@@ -222,6 +222,7 @@ Reconstruction collect_sites(const LargeVector<FaceSite>& site, double tol, doub
   double wmax = 0;
   for (int f = 0; f < faces; ++f) wmax = std::max(wmax, weight[f]);
   Reconstruction r;
+  r.sites.reserve(by_x.size());  // at most one site per assigned face
   r.face_site.assign(faces, kNone);
   for (int f = 0; f < faces; ++f) {
     if (!site[f].assigned) continue;
@@ -293,10 +294,14 @@ Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
   g.faces.clear();
   // Frame arcs (a clipped map's boundary) are no bisectors: they bound faces but constrain no site.
   bool clipped = false;
-  for (Arc& a : g.arcs) {
-    clipped = clipped || a.frame;
-    a.left_site = a.right_site = kNone;
-  }
+  for (const Arc& a : g.arcs)
+    if (a.frame) {
+      clipped = true;
+      break;
+    }
+  voronoi::engine::parallel_chunks(g.arcs.size(), voronoi::engine::worker_count(g.arcs.size()), [&](std::size_t b, std::size_t e, int) {
+    for (std::size_t a = b; a < e; ++a) g.arcs[a].left_site = g.arcs[a].right_site = kNone;
+  });
   const Extent extent = graph_extent(g);
   const double scale = std::max(extent.diagonal(), 1e-300);
   const double tol = options.relative_tolerance * scale;

@@ -255,11 +255,14 @@ struct BoxGrid {
 };
 
 // A grid of about `target` cells over `area` (boxes reaching outside it land in the border cells).
-BoxGrid make_grid(const LargeVector<Box>& boxes, Box area, std::size_t target) {
+// `box_of(k)` gives the box of item k < n; it is called twice per item (count, then fill), so the
+// boxes need no storage of their own.
+template <class BoxOf>
+BoxGrid make_grid(std::size_t n, BoxOf&& box_of, Box area, std::size_t target) {
   BoxGrid g;
   const int side = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(target))), 1, 2048);
   if (!is_finite(area)) {
-    for (std::size_t k = 0; k < boxes.size(); ++k) g.always.push_back(static_cast<int>(k));
+    for (std::size_t k = 0; k < n; ++k) g.always.push_back(static_cast<int>(k));
     return g;
   }
   g.nx = g.ny = side;
@@ -272,32 +275,36 @@ BoxGrid make_grid(const LargeVector<Box>& boxes, Box area, std::size_t target) {
     for (int j = j0; j <= j1; ++j)
       for (int i = i0; i <= i1; ++i) f(static_cast<std::size_t>(j) * side + i);
   };
-  // Counted and filled on both cores, each over its own contiguous range of boxes; within a cell
-  // the first range's items come first, so the rows are in box order as a sequential fill makes them.
-  const int workers = engine::worker_count(boxes.size());
+  // Counted and filled on both cores, each worker over its own contiguous range of items; within
+  // a cell the first range's items come first, so rows are in item order as a sequential fill
+  // makes them. Unbounded boxes go to `always`, also in item order.
+  const int workers = engine::worker_count(n);
   std::vector<LargeVector<int>> count(workers);
-  engine::parallel_chunks(boxes.size(), workers, [&](std::size_t b, std::size_t e, int w) {
+  std::vector<std::vector<int>> unbounded(workers);
+  engine::parallel_chunks(n, workers, [&](std::size_t b, std::size_t e, int w) {
     count[w].assign(cells, 0);
-    for (std::size_t k = b; k < e; ++k)
-      if (is_finite(boxes[k])) for_cells(boxes[k], [&](std::size_t c) { ++count[w][c]; });
+    for (std::size_t k = b; k < e; ++k) {
+      const Box box = box_of(k);
+      if (is_finite(box)) for_cells(box, [&](std::size_t c) { ++count[w][c]; });
+      else if (box[0] <= box[2]) unbounded[w].push_back(static_cast<int>(k));
+    }
   });
   g.cell_begin.assign(cells + 1, 0);
   for (std::size_t c = 0; c < cells; ++c) {
     int total = 0;
     for (int w = 0; w < workers; ++w) {
-      const int n = count[w][c];
+      const int in_cell = count[w][c];
       count[w][c] = g.cell_begin[c] + total;  // where worker w starts writing in cell c
-      total += n;
+      total += in_cell;
     }
     g.cell_begin[c + 1] = g.cell_begin[c] + total;
   }
   g.items.resize(g.cell_begin.back());
-  engine::parallel_chunks(boxes.size(), workers, [&](std::size_t b, std::size_t e, int w) {
+  engine::parallel_chunks(n, workers, [&](std::size_t b, std::size_t e, int w) {
     for (std::size_t k = b; k < e; ++k)
-      if (is_finite(boxes[k])) for_cells(boxes[k], [&](std::size_t c) { g.items[count[w][c]++] = static_cast<int>(k); });
+      if (const Box box = box_of(k); is_finite(box)) for_cells(box, [&](std::size_t c) { g.items[count[w][c]++] = static_cast<int>(k); });
   });
-  for (std::size_t k = 0; k < boxes.size(); ++k)
-    if (!is_finite(boxes[k]) && boxes[k][0] <= boxes[k][2]) g.always.push_back(static_cast<int>(k));
+  for (const auto& list : unbounded) g.always.insert(g.always.end(), list.begin(), list.end());
   return g;
 }
 
@@ -587,7 +594,7 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
         }
         if (is_finite(boxes[f])) grow(area, boxes[f][0], boxes[f][1]), grow(area, boxes[f][2], boxes[f][3]);
       }
-      face_grid = make_grid(boxes, area, outer_area.size());
+      face_grid = make_grid(boxes.size(), [&](std::size_t f) { return boxes[f]; }, area, outer_area.size());
     }
     std::vector<int> out(face_grid->always.begin(), face_grid->always.end());
     if (face_grid->nx > 0) {
@@ -606,26 +613,26 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
   // node (ambiguous), fall back to containment tests.
   std::vector<int> ray_face(holes.size(), -2);  // face, -1 unbounded, -2 undecided
   if (!by_sites && !holes.empty()) {
-    // A few holes (the usual case: the outer boundary of a weighted diagram) are cheaper to test
-    // against every arc's box than to grid all arcs for.
-    const bool scan_all = holes.size() <= 16;
-    LargeVector<Box> box(d.arcs.size());
-    engine::parallel_chunks(d.arcs.size(), engine::worker_count(d.arcs.size()), [&](std::size_t b, std::size_t e, int) {
-      for (std::size_t a = b; a < e; ++a) box[a] = arc_box(d.arcs[a], d.nodes);
-    });
+    // A few holes in a small graph (the usual case: the outer boundary of a weighted diagram)
+    // are cheaper to test against every arc than to grid all arcs for.
+    const bool scan_all = holes.size() * d.arcs.size() <= (std::size_t{1} << 22);
+    auto box_of = [&](std::size_t a) { return arc_box(d.arcs[a], d.nodes); };
+    auto unbounded_line = [&](std::size_t a) {
+      return std::holds_alternative<Line>(d.arcs[a].curve) && (d.arcs[a].from == kNone || d.arcs[a].to == kNone);
+    };
     std::vector<int> unbounded_arcs;
     for (std::size_t a = 0; a < d.arcs.size(); ++a)
-      if (!is_finite(box[a])) unbounded_arcs.push_back(static_cast<int>(a));
+      if (unbounded_line(a)) unbounded_arcs.push_back(static_cast<int>(a));
     const Box nodes_box = central_box(d.nodes);
     BoxGrid arc_grid;
     // About four arcs per cell: a ray crosses few cells before its first hit, and a coarser grid
     // is cheaper to fill.
-    if (!scan_all) arc_grid = make_grid(box, nodes_box, d.arcs.size() / 4);
-    // Crossings of the horizontal line y with an arc: (x, tangent y-component) pairs.
+    if (!scan_all) arc_grid = make_grid(d.arcs.size(), box_of, nodes_box, d.arcs.size() / 4);
+    // Crossings of the horizontal line y with arc a (box b): (x, tangent y-component) pairs.
     std::vector<std::pair<double, double>> xs;
-    auto crossings = [&](int a, double y) {
+    auto crossings = [&](int a, const Box& b, double y) {
       xs.clear();
-      if (!(box[a][1] <= y && y <= box[a][3])) return;
+      if (!(b[1] <= y && y <= b[3])) return;
       const ArcPathView p = path_of_arc(a);
       if (p.circle) {
         const double dy = y - p.cy;
@@ -670,8 +677,9 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
       int best_arc = -1;
       bool ambiguous = false;
       auto test_arc = [&](int a) {
-        if (box[a][2] <= right.x) return;  // wholly left of the ray's origin
-        crossings(a, right.y);
+        const Box b = box_of(static_cast<std::size_t>(a));
+        if (b[2] <= right.x) return;  // wholly left of the ray's origin
+        crossings(a, b, right.y);
         for (auto [x, ty] : xs) {
           if (x <= right.x + eps_x) continue;
           if (std::abs(x - best_x) <= eps_x) ambiguous = true;
@@ -682,7 +690,7 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
       for (int a : unbounded_arcs) test_arc(a);
       if (scan_all) {
         for (std::size_t a = 0; a < d.arcs.size(); ++a)
-          if (is_finite(box[a])) test_arc(static_cast<int>(a));
+          if (!unbounded_line(a)) test_arc(static_cast<int>(a));
       } else if (arc_grid.nx > 0) {
         const int j = arc_grid.row(right.y);
         for (int i = arc_grid.column(right.x); i < arc_grid.nx; ++i) {
