@@ -136,8 +136,10 @@ bool cycle_contains(const Diagram& d, const std::vector<HalfArc>& cycle, Point p
 
 namespace {
 
-// A monotone stand-in for atan2 (the "diamond angle"), in [0, 4): enough to decide whether a
-// direction lies within an arc's sweep without trigonometry.
+// A monotone stand-in for atan2 (the "diamond angle"), in [0, 4): a full turn is 4, and its slope
+// per radian lies between 1/2 and 1. Orders directions without trigonometry: whether a direction
+// lies within an arc's sweep, and which arc leaves a node next in clockwise order.
+constexpr double kPseudoTurn = 4.0;
 double pseudo_angle(double x, double y) {
   const double s = std::abs(x) + std::abs(y);
   if (s == 0) return 0.0;
@@ -192,7 +194,7 @@ Box arc_box(const Arc& arc, const std::vector<Node>& nodes) {
 
 bool is_finite(const Box& b) { return std::isfinite(b[0]) && std::isfinite(b[2]); }
 
-// Per half-arc geometry at the node where it starts: the angle of its direction of travel and its
+// Per half-arc geometry at the node where it starts: the pseudo-angle of its direction of travel and its
 // curvature in that direction (next_of compares them at every node); per arc, twice the signed
 // area between the forward half-arc and its chord (positive when it bulges to the right).
 struct TracingGeometry {
@@ -221,8 +223,8 @@ TracingGeometry tracing_geometry(const Diagram& d) {
           const double ex = d.nodes[arc.to].x - c->cx, ey = d.nodes[arc.to].y - c->cy;
           // Forward travel at the start: the radius turned by +90° (counter-clockwise arcs);
           // backward travel at the end: the reverse of forward travel there.
-          g.depart[2 * a] = {std::atan2(sense * ax, -sense * ay), sense / c->r};
-          g.depart[2 * a + 1] = {std::atan2(-sense * ex, sense * ey), -sense / c->r};
+          g.depart[2 * a] = {pseudo_angle(sense * -ay, sense * ax), sense / c->r};
+          g.depart[2 * a + 1] = {pseudo_angle(-sense * -ey, -sense * ex), -sense / c->r};
           if (arc.from != arc.to) {
             sweep = sense * std::atan2(ax * ey - ay * ex, ax * ex + ay * ey);
             if (sweep <= 0) sweep += kTwoPi;
@@ -231,8 +233,8 @@ TracingGeometry tracing_geometry(const Diagram& d) {
         g.segment_area2[a] = sense * c->r * c->r * (sweep - std::sin(sweep));
       } else {
         const Line& l = std::get<Line>(arc.curve);
-        if (arc.from != kNone) g.depart[2 * a].angle = std::atan2(l.dy, l.dx);
-        if (arc.to != kNone) g.depart[2 * a + 1].angle = std::atan2(-l.dy, -l.dx);
+        if (arc.from != kNone) g.depart[2 * a].angle = pseudo_angle(l.dx, l.dy);
+        if (arc.to != kNone) g.depart[2 * a + 1].angle = pseudo_angle(-l.dx, -l.dy);
       }
     }
   });
@@ -382,15 +384,14 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
     for (int c : out) {
       if (c == (h ^ 1) || !eligible(c)) continue;
       const auto& dc = geometry.depart[c];
-      // Clockwise angle from the back direction to c's departure, in (0, 2π] (both angles are
-      // atan2 values, so their difference lies in [-2π, 2π]).
+      // Clockwise turn from the back direction to c's departure, in (0, 4] (both are pseudo-angles
+      // in [0, 4), so their difference lies in (-4, 4)).
       double cw = back.angle - dc.angle;
-      if (cw <= 0) cw += kTwoPi;
-      if (cw <= 0) cw += kTwoPi;
+      if (cw <= 0) cw += kPseudoTurn;
       // Leaving along the way we came: right of the returning arc (bending less left) comes first
       // in the sweep, left of it last.
-      if (cw < tolerance::kParallelAngle || cw > kTwoPi - tolerance::kParallelAngle)
-        cw = dc.curvature < back.curvature ? 0.0 : kTwoPi;
+      if (cw < tolerance::kParallelAngle || cw > kPseudoTurn - tolerance::kParallelAngle)
+        cw = dc.curvature < back.curvature ? 0.0 : kPseudoTurn;
       if (best < 0 || cw < best_angle - tolerance::kParallelAngle ||
           (cw <= best_angle + tolerance::kParallelAngle && dc.curvature > best_curvature))
         best_angle = cw, best_curvature = dc.curvature, best = c;
@@ -442,9 +443,9 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
         bool degenerate = out.size() != 3;
         for (std::size_t i = 0; i < out.size() && !degenerate; ++i)
           for (std::size_t j = i + 1; j < out.size(); ++j) {
-            // Tangent curves: directions equal or opposite (atan2 values differ by 0, π or 2π).
+            // Tangent curves: directions equal or opposite (pseudo-angles differ by 0, 2 or 4).
             const double diff = std::abs(geometry.depart[out[i]].angle - geometry.depart[out[j]].angle);
-            const double off = std::min({diff, std::abs(diff - kPi), std::abs(diff - kTwoPi)});
+            const double off = std::min({diff, std::abs(diff - 0.5 * kPseudoTurn), std::abs(diff - kPseudoTurn)});
             if (off < tolerance::kParallelAngle) degenerate = true;
           }
         index->degenerate_node[v] = degenerate;
