@@ -223,6 +223,9 @@ Reconstruction collect_sites(const LargeVector<FaceSite>& site, double tol, doub
   for (int f = 0; f < faces; ++f) wmax = std::max(wmax, weight[f]);
   Reconstruction r;
   r.sites.reserve(by_x.size());  // at most one site per assigned face
+  r.face_site.reserve(faces);
+  voronoi::advise_huge_pages(r.sites.data(), r.sites.capacity() * sizeof(voronoi::Site));
+  voronoi::advise_huge_pages(r.face_site.data(), r.face_site.capacity() * sizeof(int));
   r.face_site.assign(faces, kNone);
   for (int f = 0; f < faces; ++f) {
     if (!site[f].assigned) continue;

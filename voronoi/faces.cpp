@@ -535,6 +535,7 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
   LargeVector<double> outer_area;          // per face: |area| of its outer cycle (∞ when unbounded)
   d.faces.reserve(static_cast<std::size_t>(
       std::count_if(cycles.begin(), cycles.end(), [](const Cycle& c) { return c.through_infinity || c.area2 > 0; })));
+  advise_huge_pages(d.faces.data(), d.faces.capacity() * sizeof(Face));
   for (std::size_t c = 0; c < cycles.size(); ++c) {
     const Cycle& cyc = cycles[c];
     if (cyc.through_infinity || cyc.area2 > 0) {

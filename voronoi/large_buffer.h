@@ -21,8 +21,20 @@ namespace covmap::voronoi {
 inline constexpr std::size_t kHugePage = std::size_t{2} << 20;
 inline constexpr std::size_t kLargeBlock = std::size_t{4} << 20;
 
-// Aligned to kHugePage and advised as huge pages when `bytes` >= kLargeBlock; released by std::free.
+// Blocks of at least kLargeBlock bytes are aligned to kHugePage and advised as huge pages; released
+// ones are kept (up to 1 GiB) and handed out again, already faulted in, for later requests of up to
+// their size — the arrays of one recognition are freed and allocated stage after stage, and a
+// benchmark or a service recognizes graph after graph. Smaller blocks are plain malloc/free.
+// Thread-safe. `bytes` must be the same in both calls.
 void* allocate_large(std::size_t bytes);
+void deallocate_large(void* p, std::size_t bytes) noexcept;
+
+// Returns the kept blocks to the system (a long-running process after its largest job).
+void release_large_buffers() noexcept;
+
+// Advises the 2 MiB-aligned interior of [p, p + bytes) as huge pages when bytes >= kLargeBlock:
+// for large std::vector results (reserved, not yet written) that must keep the standard allocator.
+void advise_huge_pages(void* p, std::size_t bytes);
 
 // Note: vectors sized without a value (v(n), resize(n)) are default-initialised, not zeroed, like
 // new T[n]: the zero fill would be the first touch of every page, on one core, right before the
@@ -37,7 +49,7 @@ struct LargeAllocator {
     if (n > static_cast<std::size_t>(-1) / sizeof(T)) throw std::bad_array_new_length();
     return static_cast<T*>(allocate_large(n * sizeof(T)));
   }
-  void deallocate(T* p, std::size_t) noexcept { std::free(p); }
+  void deallocate(T* p, std::size_t n) noexcept { deallocate_large(p, n * sizeof(T)); }
   template <class U>
   void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
     ::new (static_cast<void*>(p)) U;

@@ -5,10 +5,15 @@
 #include <algorithm>
 #include <cstddef>
 #include <functional>
+#include <iterator>
 #include <thread>
 #include <vector>
 
+#include "voronoi/large_buffer.h"
+
 namespace covmap::voronoi::engine {
+
+using voronoi::LargeVector;
 
 inline int worker_count(std::size_t items) {
   const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
@@ -44,7 +49,10 @@ void parallel_sort(It first, It last, Less less = {}) {
   std::thread left([&] { std::sort(first, mid, less); });
   std::sort(mid, last, less);
   left.join();
-  std::inplace_merge(first, mid, last, less);
+  // Merged through a copy of the left half (a large buffer: no fresh 4 KiB pages for it).
+  LargeVector<typename std::iterator_traits<It>::value_type> buffer(std::make_move_iterator(first), std::make_move_iterator(mid));
+  std::merge(std::make_move_iterator(buffer.begin()), std::make_move_iterator(buffer.end()), std::make_move_iterator(mid),
+             std::make_move_iterator(last), first, less);
 }
 
 }  // namespace covmap::voronoi::engine
