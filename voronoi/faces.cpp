@@ -159,14 +159,14 @@ void grow(Box& b, double x, double y) {
 // The bounding box of one arc: its ends and the circle's axis-extreme points within its sweep
 // (the whole plane for an unbounded line arc). A box only preselects arcs for exact tests; it is
 // widened by a few units in the last place so that rounding cannot make it miss its arc.
-Box arc_box(const Arc& arc, const std::vector<Node>& nodes) {
+Box arc_box(const Arc& arc, const Node& from, const Node& to) {
   Box b = kEmptyBox;
   if (const Circle* c = std::get_if<Circle>(&arc.curve)) {
     if (arc.from == kNone || arc.from == arc.to) {
       b = {c->cx - c->r, c->cy - c->r, c->cx + c->r, c->cy + c->r};
     } else {
-      const Node& a = nodes[arc.from];
-      const Node& e = nodes[arc.to];
+      const Node& a = from;
+      const Node& e = to;
       grow(b, a.x, a.y);
       grow(b, e.x, e.y);
       // Counter-clockwise from the start direction to the end direction (reversed for clockwise
@@ -184,13 +184,36 @@ Box arc_box(const Arc& arc, const std::vector<Node>& nodes) {
     }
   } else {
     if (arc.from == kNone || arc.to == kNone) return kWholePlane;
-    grow(b, nodes[arc.from].x, nodes[arc.from].y);
-    grow(b, nodes[arc.to].x, nodes[arc.to].y);
+    grow(b, from.x, from.y);
+    grow(b, to.x, to.y);
   }
   const double pad = 4 * std::numeric_limits<double>::epsilon() *
                      std::max({std::abs(b[0]), std::abs(b[1]), std::abs(b[2]), std::abs(b[3])});
   return {b[0] - pad, b[1] - pad, b[2] + pad, b[3] + pad};
 }
+
+Box arc_box(const Arc& arc, const std::vector<Node>& nodes) {
+  const Node none{};
+  return arc_box(arc, arc.from == kNone ? none : nodes[arc.from], arc.to == kNone ? none : nodes[arc.to]);
+}
+
+// Boxes kept per arc in single precision, rounded outward (half the memory of doubles; a box only
+// preselects). Coordinates beyond float range become infinite: such a box is treated as unbounded.
+using FloatBox = std::array<float, 4>;
+
+FloatBox to_float_outward(const Box& b) {
+  auto down = [](double x) {
+    float f = static_cast<float>(x);
+    return static_cast<double>(f) > x ? std::nextafter(f, -INFINITY) : f;
+  };
+  auto up = [](double x) {
+    float f = static_cast<float>(x);
+    return static_cast<double>(f) < x ? std::nextafter(f, INFINITY) : f;
+  };
+  return {down(b[0]), down(b[1]), up(b[2]), up(b[3])};
+}
+
+Box to_double(const FloatBox& b) { return {b[0], b[1], b[2], b[3]}; }
 
 bool is_finite(const Box& b) { return std::isfinite(b[0]) && std::isfinite(b[2]); }
 
@@ -204,23 +227,31 @@ struct TracingGeometry {
   };
   LargeVector<Departure> depart;  // per half-arc, angle and curvature side by side (read together)
   LargeVector<double> segment_area2;
+  LargeVector<FloatBox> box;  // per arc, when asked for (placing holes by geometry)
 };
 
-TracingGeometry tracing_geometry(const Diagram& d) {
+// The arcs' end nodes are read here once for everything that needs them (they are scattered in
+// memory: each read is a cache miss at 10^6 faces).
+TracingGeometry tracing_geometry(const Diagram& d, bool with_boxes) {
   const std::size_t arcs = d.arcs.size();
   TracingGeometry g;
   g.depart.assign(2 * arcs, {});
   g.segment_area2.assign(arcs, 0.0);
+  if (with_boxes) g.box.resize(arcs);
   // Independent per arc: both cores share it (engine/parallel.h).
   engine::parallel_chunks(arcs, engine::worker_count(arcs), [&](std::size_t b, std::size_t e, int) {
     for (std::size_t a = b; a < e; ++a) {
       const Arc& arc = d.arcs[a];
+      const Node none{};
+      const Node& from = arc.from == kNone ? none : d.nodes[arc.from];
+      const Node& to = arc.to == kNone ? none : d.nodes[arc.to];
+      if (with_boxes) g.box[a] = to_float_outward(arc_box(arc, from, to));
       if (const Circle* c = std::get_if<Circle>(&arc.curve)) {
         const double sense = arc.ccw ? 1.0 : -1.0;
         double sweep = kTwoPi;
         if (arc.from != kNone) {
-          const double ax = d.nodes[arc.from].x - c->cx, ay = d.nodes[arc.from].y - c->cy;
-          const double ex = d.nodes[arc.to].x - c->cx, ey = d.nodes[arc.to].y - c->cy;
+          const double ax = from.x - c->cx, ay = from.y - c->cy;
+          const double ex = to.x - c->cx, ey = to.y - c->cy;
           // Forward travel at the start: the radius turned by +90° (counter-clockwise arcs);
           // backward travel at the end: the reverse of forward travel there.
           g.depart[2 * a] = {pseudo_angle(sense * -ay, sense * ax), sense / c->r};
@@ -339,7 +370,7 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
   // continuation at a node is chosen by angle.
   auto label = [&](int h) { return by_sites ? info(d, h).site : 0; };
   const int halves = 2 * static_cast<int>(d.arcs.size());
-  const TracingGeometry geometry = tracing_geometry(d);
+  const TracingGeometry geometry = tracing_geometry(d, !by_sites);
   // Outgoing half-arcs per node in compressed rows (out_begin[v] .. out_begin[v+1]), and
   // half-arcs arriving from infinity per site.
   LargeVector<int> out_begin(d.nodes.size() + 1, 0), out_list;
@@ -618,7 +649,7 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
     // A few holes in a small graph (the usual case: the outer boundary of a weighted diagram)
     // are cheaper to test against every arc than to grid all arcs for.
     const bool scan_all = holes.size() * d.arcs.size() <= (std::size_t{1} << 22);
-    auto box_of = [&](std::size_t a) { return arc_box(d.arcs[a], d.nodes); };
+    auto box_of = [&](std::size_t a) { return to_double(geometry.box[a]); };
     auto unbounded_line = [&](std::size_t a) {
       return std::holds_alternative<Line>(d.arcs[a].curve) && (d.arcs[a].from == kNone || d.arcs[a].to == kNone);
     };
