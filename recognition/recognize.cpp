@@ -716,7 +716,26 @@ Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
     site[start] = {true, p, 1.0};
     reached[start] = 1;
     queue.assign(1, start);
+    // Memory latency bound (faces, their boundaries and the faces across are scattered at 10^6
+    // faces): the data of the faces a few places ahead in the queue is prefetched in stages.
+    auto prefetch_face = [&](std::size_t at) {
+      if (at < queue.size()) __builtin_prefetch(&g.faces[queue[at]]);
+    };
+    auto prefetch_boundary = [&](std::size_t at) {
+      if (at >= queue.size()) return;
+      const auto& b = g.faces[queue[at]].boundaries;
+      if (!b.empty()) __builtin_prefetch(b.front().data());
+    };
+    auto prefetch_across = [&](std::size_t at) {
+      if (at >= queue.size()) return;
+      const auto& b = g.faces[queue[at]].boundaries;
+      if (b.empty()) return;
+      for (const HalfArc& h : b.front()) __builtin_prefetch(&face_of_half[half_id({h.arc, !h.forward})]);
+    };
     for (std::size_t head = 0; head < queue.size(); ++head) {
+      prefetch_face(head + 12);
+      prefetch_boundary(head + 8);
+      prefetch_across(head + 4);
       const int f = queue[head];
       const FaceSite here = site[f];
       for (const auto& cycle : g.faces[f].boundaries)
