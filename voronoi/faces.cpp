@@ -564,8 +564,9 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
   std::vector<int> holes;                  // cycle indices
   LargeVector<int> face_of_cycle(cycles.size(), -1), hole_of_cycle(cycles.size(), -1);
   LargeVector<double> outer_area;          // per face: |area| of its outer cycle (∞ when unbounded)
-  d.faces.reserve(static_cast<std::size_t>(
-      std::count_if(cycles.begin(), cycles.end(), [](const Cycle& c) { return c.through_infinity || c.area2 > 0; })));
+  // Faces: one per outer cycle, plus at most one per hole (a site's unbounded face made for its
+  // holes), so no reallocation of a million faces when the first of those appears.
+  d.faces.reserve(cycles.size() + 1);
   advise_huge_pages(d.faces.data(), d.faces.capacity() * sizeof(Face));
   for (std::size_t c = 0; c < cycles.size(); ++c) {
     const Cycle& cyc = cycles[c];
