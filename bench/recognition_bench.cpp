@@ -9,6 +9,7 @@
 //       recognizing it) and reports the fastest of three recognitions with its stages
 #include <CLI/CLI.hpp>
 #include <sys/resource.h>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -16,12 +17,53 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "bench/diagram_cache.h"
 #include "bench/site_distributions.h"
 #include "recognition/recognize.h"
 #include "voronoi/engine.h"
+
+namespace {
+
+// Every reconstructed site against the nearest original one (a grid over the unit square, where
+// make_sites puts them): the largest distance, and the largest relative difference of weights
+// normalised to a largest of 1 (the heaviest site always owns a face, so both sets share it).
+std::pair<double, double> reconstruction_error(const std::vector<covmap::voronoi::Site>& truth,
+                                               const covmap::recognition::Reconstruction& r) {
+  const int side = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(truth.size()))));
+  std::vector<std::vector<int>> cell(static_cast<std::size_t>(side) * side);
+  auto cell_of = [&](double v) { return std::clamp(static_cast<int>(v * side), 0, side - 1); };
+  double wmax = 0.0;
+  for (std::size_t k = 0; k < truth.size(); ++k) {
+    cell[static_cast<std::size_t>(cell_of(truth[k].y)) * side + cell_of(truth[k].x)].push_back(static_cast<int>(k));
+    wmax = std::max(wmax, truth[k].weight);
+  }
+  double worst_position = 0.0, worst_weight = 0.0;
+  for (const auto& s : r.sites) {
+    double best = INFINITY;
+    int match = -1;
+    const int ci = cell_of(s.x), cj = cell_of(s.y);
+    for (int ring = 0; ring < side && match < 0; ++ring)  // grow the search until something is found,
+      for (int j = cj - ring - 1; j <= cj + ring + 1; ++j)  // then one more ring covers the nearest
+        for (int i = ci - ring - 1; i <= ci + ring + 1; ++i) {
+          if (i < 0 || j < 0 || i >= side || j >= side) continue;
+          for (int k : cell[static_cast<std::size_t>(j) * side + i]) {
+            const double d = std::hypot(truth[k].x - s.x, truth[k].y - s.y);
+            if (d < best) best = d, match = k;
+          }
+        }
+    if (match < 0) return {INFINITY, INFINITY};
+    worst_position = std::max(worst_position, best);
+    const double w = truth[match].weight / wmax;
+    worst_weight = std::max(worst_weight, std::abs(s.weight - w) / w);
+  }
+  return {worst_position, worst_weight};
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"time recognition of MWVD arc graphs"};
@@ -32,6 +74,7 @@ int main(int argc, char** argv) {
   bool no_check = false;
   std::string cache_dir;
   int repeat = 1;
+  bool verify = false;
   app.add_option("--n", sizes, "numbers of sites (comma separated)")->delimiter(',');
   app.add_option("--dist", dist_name, "weight distribution (see mwvd_bench)");
   app.add_option("--seed", seed, "random seed");
@@ -39,6 +82,9 @@ int main(int argc, char** argv) {
   app.add_flag("--no-check", no_check, "time recognize() without the MWVD check only (for 10^6)");
   app.add_option("--cache", cache_dir, "directory keeping the engine's graphs between runs");
   app.add_option("--repeat", repeat, "recognitions per size; the fastest is reported")->check(CLI::PositiveNumber);
+  app.add_flag("--verify", verify,
+               "compare the reconstruction with the sites that drew the graph (largest position error "
+               "relative to the unit square, largest relative error of normalised weights)");
   CLI11_PARSE(app, argc, argv);
   std::string error;
   const auto dist = covmap::bench::parse_distribution(dist_name, &error);
@@ -88,12 +134,15 @@ int main(int argc, char** argv) {
     if (!no_check) r2 = covmap::recognition::recognize(d);
     const double s2 = seconds(t1, Clock::now());
     const auto& st = r1.timings;
+    double worst_position = 0.0, worst_weight = 0.0;
+    if (verify) std::tie(worst_position, worst_weight) = reconstruction_error(covmap::bench::make_sites(n, *dist, seed), r1);
     if (json_out) {
       nlohmann::json row = {{"n", n},          {"dist", dist->name()},
                             {"faces", r1.graph.faces.size()}, {"arcs", d.arcs.size()},
                             {"recognize_s", s1}, {"with_check_s", s2},
                             {"bisector_graph", r1.bisector_graph}, {"voronoi", r2.voronoi},
                             {"voronoi_differences", r2.voronoi_differences.size()},
+                            {"worst_position_error", worst_position}, {"worst_weight_error", worst_weight},
                             {"stages_s", {{"faces", st.faces}, {"start", st.start},
                                           {"propagate", st.propagate}, {"sites", st.sites}}}};
       std::cout << row.dump() << "\n";
@@ -102,6 +151,7 @@ int main(int argc, char** argv) {
                   r1.graph.faces.size(), d.arcs.size(), s1, s2, r2.voronoi.c_str(),
                   r1.bisector_graph ? "yes" : "no", 1e9 * s1 / static_cast<double>(d.arcs.size()),
                   st.faces, st.start, st.propagate, st.sites);
+      if (verify) std::printf("         worst position error %.2e, worst weight error %.2e\n", worst_position, worst_weight);
     }
     std::cout.flush();
   }
