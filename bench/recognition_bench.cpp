@@ -152,6 +152,9 @@ int main(int argc, char** argv) {
                   r1.bisector_graph ? "yes" : "no", 1e9 * s1 / static_cast<double>(d.arcs.size()),
                   st.faces, st.start, st.propagate, st.sites);
       if (verify) std::printf("         worst position error %.2e, worst weight error %.2e\n", worst_position, worst_weight);
+      for (std::size_t k = 0; k < std::min<std::size_t>(3, r2.voronoi_differences.size()); ++k)
+        std::printf("         difference %zu of %zu: %s\n", k + 1, r2.voronoi_differences.size(),
+                    r2.voronoi_differences[k].message.c_str());
     }
     std::cout.flush();
   }
