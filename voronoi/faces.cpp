@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -497,38 +498,98 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
     double area2 = 0.0;  // twice the signed area (closed cycles)
   };
   LargeVector<Cycle> cycles;
+  cycles.reserve(static_cast<std::size_t>(halves) / 2);  // a hint: most cycles have two or more half-arcs
   LargeVector<int> cycle_halves;
   cycle_halves.reserve(halves);
   LargeVector<int> cycle_of_half(halves, -1);
   LargeVector<char> seen(halves, 0);
-  // The walk only follows next_half (memory latency bound, one core); orientation and the rest
-  // are computed per cycle afterwards, on both.
-  for (int h0 = 0; h0 < halves; ++h0) {
-    if (seen[h0] || label(h0) == kNone) continue;
-    Cycle cyc;
-    cyc.site = label(h0);
-    cyc.begin = static_cast<int>(cycle_halves.size());
-    int h = h0;
-    bool closed = false;
-    for (int guard = 0; guard <= halves; ++guard) {
-      seen[h] = 1;
-      cycle_halves.push_back(h);
-      const int nx = next_half[h];
-      if (nx < 0) break;
-      if (nx == h0) {
-        closed = true;
-        break;
+  // The walk only follows next_half (memory latency bound); orientation and the rest are computed
+  // per cycle afterwards, on both cores.
+  auto walk_sequentially = [&]() {
+    for (int h0 = 0; h0 < halves; ++h0) {
+      if (seen[h0] || label(h0) == kNone) continue;
+      Cycle cyc;
+      cyc.site = label(h0);
+      cyc.begin = static_cast<int>(cycle_halves.size());
+      int h = h0;
+      bool closed = false;
+      for (int guard = 0; guard <= halves; ++guard) {
+        seen[h] = 1;
+        cycle_halves.push_back(h);
+        const int nx = next_half[h];
+        if (nx < 0) break;
+        if (nx == h0) {
+          closed = true;
+          break;
+        }
+        if (seen[nx]) break;
+        h = nx;
       }
-      if (seen[nx]) break;
-      h = nx;
+      if (!closed) {
+        cycle_halves.resize(cyc.begin);
+        continue;
+      }
+      cyc.end = static_cast<int>(cycle_halves.size());
+      cycles.push_back(cyc);
     }
-    if (!closed) {
-      cycle_halves.resize(cyc.begin);
-      continue;
+  };
+  // By geometry next_half is a permutation of the half-arcs (every half-arc has one successor and
+  // one predecessor), and its cycles can be walked on both cores: each cycle by the worker whose
+  // range holds its smallest half-arc, which is where the sequential walk starts it too, so the
+  // cycles come out in the same order. A walk from any other half-arc stops at the first smaller
+  // one. Anything but a permutation (a dangling end, a walk that does not come back) is left to the
+  // sequential walk.
+  auto walk_in_parallel = [&]() {
+    const int workers = engine::worker_count(static_cast<std::size_t>(halves));
+    std::vector<LargeVector<Cycle>> found(workers);
+    std::vector<LargeVector<int>> walked(workers);
+    std::atomic<bool> malformed{false};
+    engine::parallel_chunks(static_cast<std::size_t>(halves), workers, [&](std::size_t b, std::size_t e, int w) {
+      LargeVector<int>& out = walked[w];
+      out.reserve(e - b + 64);  // the cycles owned by a range have about as many half-arcs as it
+      found[w].reserve((e - b) / 2);
+      for (int h0 = static_cast<int>(b); h0 < static_cast<int>(e) && !malformed.load(std::memory_order_relaxed); ++h0) {
+        if (std::atomic_ref<char>(seen[h0]).load(std::memory_order_relaxed)) continue;
+        const std::size_t begin = out.size();
+        int h = h0;
+        bool owner = false;
+        for (int guard = 0;; ++guard) {
+          out.push_back(h);
+          const int nx = next_half[h];
+          if (nx < 0 || guard > halves) {
+            malformed = true;
+            break;
+          }
+          if (nx == h0) {
+            owner = true;
+            break;
+          }
+          if (nx < h0) break;  // the cycle's walk starts at a smaller half-arc
+          h = nx;
+        }
+        if (!owner) {
+          out.resize(begin);
+          continue;
+        }
+        for (std::size_t k = begin; k < out.size(); ++k) std::atomic_ref<char>(seen[out[k]]).store(1, std::memory_order_relaxed);
+        found[w].push_back(Cycle{0, static_cast<int>(begin), static_cast<int>(out.size()), false, 0.0});
+      }
+    });
+    if (malformed) {
+      std::fill(seen.begin(), seen.end(), 0);
+      return false;
     }
-    cyc.end = static_cast<int>(cycle_halves.size());
-    cycles.push_back(cyc);
-  }
+    for (int w = 0; w < workers; ++w) {
+      const int offset = static_cast<int>(cycle_halves.size());
+      cycle_halves.insert(cycle_halves.end(), walked[w].begin(), walked[w].end());
+      for (Cycle c : found[w]) {
+        c.begin += offset, c.end += offset;
+        cycles.push_back(c);
+      }
+    }
+    return true;
+  };
+  if (by_sites || !walk_in_parallel()) walk_sequentially();
   engine::parallel_chunks(cycles.size(), engine::worker_count(cycles.size()), [&](std::size_t b, std::size_t e, int) {
     for (std::size_t c = b; c < e; ++c) {
       Cycle& cyc = cycles[c];
