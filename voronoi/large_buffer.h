@@ -19,7 +19,7 @@
 namespace covmap::voronoi {
 
 inline constexpr std::size_t kHugePage = std::size_t{2} << 20;
-inline constexpr std::size_t kLargeBlock = std::size_t{4} << 20;
+inline constexpr std::size_t kLargeBlock = std::size_t{1} << 20;
 
 // Blocks of at least kLargeBlock bytes are aligned to kHugePage and advised as huge pages; released
 // ones are kept (up to 1 GiB) and handed out again, already faulted in, for later requests of up to
