@@ -2,7 +2,9 @@
 #include "recognition/compare.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <unordered_map>
 
@@ -60,23 +62,99 @@ double distance_to_arc(const voronoi::ArcPathView& p, voronoi::Point q) {
   return std::hypot(q.x - on.x, q.y - on.y);
 }
 
-// Whether every given point lies within tol(point) of some arc of d (brute force over d's arcs).
-template <class Tol>
-bool points_on_graph(const Diagram& d, const std::vector<voronoi::Point>& points, Tol&& tol) {
-  std::vector<voronoi::ArcPathView> paths;
-  paths.reserve(d.arcs.size());
-  for (const Arc& a : d.arcs) paths.push_back(voronoi::arc_path(a, d.nodes));
-  for (const voronoi::Point& q : points) {
-    bool near = false;
-    for (const auto& p : paths)
-      if (distance_to_arc(p, q) <= tol(q)) {
-        near = true;
-        break;
+// "Is q within tol of the graph?" for many points: the arcs' paths computed once, and their boxes
+// in a uniform grid over the central nodes (boxes reaching beyond it land in the border cells, which
+// the clamped query reaches too). Arcs whose box covers many cells (far, huge circles; unbounded
+// lines) are kept apart and always tested. Without the grid the check filtered each difference
+// against every arc: 26 differences of a 10^5-site diagram took 9 s.
+class ArcProximity {
+ public:
+  explicit ArcProximity(const Diagram& d) {
+    paths_.reserve(d.arcs.size());
+    for (const Arc& a : d.arcs) paths_.push_back(voronoi::arc_path(a, d.nodes));
+    const Extent e = robust_extent(d.nodes);
+    side_ = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(d.arcs.size()))), 1, 2048);
+    x0_ = e.xmin, y0_ = e.ymin;
+    cw_ = std::max((e.xmax - e.xmin) / side_, 1e-300);
+    ch_ = std::max((e.ymax - e.ymin) / side_, 1e-300);
+    std::vector<std::array<int, 4>> range(paths_.size());
+    std::vector<int> count(static_cast<std::size_t>(side_) * side_ + 1, 0);
+    for (std::size_t k = 0; k < paths_.size(); ++k) {
+      const auto box = box_of(paths_[k]);
+      range[k] = {column(box[0]), row(box[1]), column(box[2]), row(box[3])};
+      const auto& r = range[k];
+      const long long cells = static_cast<long long>(r[2] - r[0] + 1) * (r[3] - r[1] + 1);
+      if (!std::isfinite(box[0]) || !std::isfinite(box[2]) || !std::isfinite(box[1]) || !std::isfinite(box[3]) ||
+          cells > kMaxCellsPerArc) {
+        always_.push_back(static_cast<int>(k));
+        range[k] = {1, 1, 0, 0};  // empty
+        continue;
       }
-    if (!near) return false;
+      for (int j = r[1]; j <= r[3]; ++j)
+        for (int i = r[0]; i <= r[2]; ++i) ++count[static_cast<std::size_t>(j) * side_ + i + 1];
+    }
+    for (std::size_t c = 1; c < count.size(); ++c) count[c] += count[c - 1];
+    begin_ = count;
+    items_.resize(count.back());
+    for (std::size_t k = 0; k < paths_.size(); ++k) {
+      const auto& r = range[k];
+      for (int j = r[1]; j <= r[3]; ++j)
+        for (int i = r[0]; i <= r[2]; ++i) items_[count[static_cast<std::size_t>(j) * side_ + i]++] = static_cast<int>(k);
+    }
   }
-  return true;
-}
+
+  bool near(voronoi::Point q, double tol) const {
+    if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(tol)) return false;
+    auto close = [&](int k) { return distance_to_arc(paths_[k], q) <= tol; };
+    if (std::any_of(always_.begin(), always_.end(), close)) return true;
+    const int i0 = column(q.x - tol), i1 = column(q.x + tol), j0 = row(q.y - tol), j1 = row(q.y + tol);
+    if (static_cast<long long>(i1 - i0 + 1) * (j1 - j0 + 1) > kMaxCellsPerArc) {  // a huge allowance
+      for (std::size_t k = 0; k < paths_.size(); ++k)
+        if (close(static_cast<int>(k))) return true;
+      return false;
+    }
+    for (int j = j0; j <= j1; ++j)
+      for (int i = i0; i <= i1; ++i) {
+        const std::size_t c = static_cast<std::size_t>(j) * side_ + i;
+        for (int n = begin_[c]; n < begin_[c + 1]; ++n)
+          if (close(items_[n])) return true;
+      }
+    return false;
+  }
+
+ private:
+  static constexpr long long kMaxCellsPerArc = 64;
+
+  // The path's box: its ends and the circle's axis-extreme points within its sweep.
+  static std::array<double, 4> box_of(const voronoi::ArcPathView& p) {
+    std::array<double, 4> b = {INFINITY, INFINITY, -INFINITY, -INFINITY};
+    auto grow = [&](voronoi::Point q) {
+      b = {std::min(b[0], q.x), std::min(b[1], q.y), std::max(b[2], q.x), std::max(b[3], q.y)};
+    };
+    if (!p.circle && (!std::isfinite(p.s0) || !std::isfinite(p.s1))) return {-INFINITY, -INFINITY, INFINITY, INFINITY};
+    grow(p.at(p.s0));
+    grow(p.at(p.s1));
+    if (p.circle)
+      for (int k = 0; k < 4; ++k) {
+        double t = std::fmod(p.sense * (k * 1.5707963267948966 - p.start_angle), 6.283185307179586);
+        if (t < 0) t += 6.283185307179586;
+        if (t >= p.s0 && t <= p.s1) grow(p.at(t));
+      }
+    return b;
+  }
+  // Clamped to the grid (NaN to its first cell; such points are near nothing anyway).
+  int cell_index(double c) const {
+    if (!(c > 0)) return 0;
+    return c >= side_ - 1 ? side_ - 1 : static_cast<int>(c);
+  }
+  int column(double x) const { return cell_index(std::floor((x - x0_) / cw_)); }
+  int row(double y) const { return cell_index(std::floor((y - y0_) / ch_)); }
+
+  std::vector<voronoi::ArcPathView> paths_;
+  int side_ = 1;
+  double x0_ = 0, y0_ = 0, cw_ = 1, ch_ = 1;
+  std::vector<int> begin_, items_, always_;
+};
 
 std::vector<voronoi::Point> arc_samples(const Diagram& d, const Arc& arc, double far) {
   const voronoi::ArcPathView p = voronoi::arc_path(arc, d.nodes);
@@ -316,17 +394,19 @@ Comparison compare_graphs(const Diagram& a, const Diagram& b, const CompareOptio
   // the unmatched node or arc lies on the other graph. Those are dropped. (Bounded effort: with very
   // many differences the graphs differ anyway and all are kept.)
   if (!out.differences.empty() && out.differences.size() <= 200) {
+    std::optional<ArcProximity> near_a, near_b;  // built on first use
     std::vector<Difference> kept;
     for (const Difference& diff : out.differences) {
       const bool in_a = diff.kind == DifferenceKind::NodeOnlyInA || diff.kind == DifferenceKind::ArcOnlyInA;
       const Diagram& own = in_a ? a : b;
-      const Diagram& other = in_a ? b : a;
+      std::optional<ArcProximity>& other = in_a ? near_b : near_a;
+      if (!other) other.emplace(in_a ? b : a);
       std::vector<voronoi::Point> points;
       if (diff.kind == DifferenceKind::NodeOnlyInA || diff.kind == DifferenceKind::NodeOnlyInB)
         points.push_back({own.nodes[diff.index].x, own.nodes[diff.index].y});
       else
         points = arc_samples(own, own.arcs[diff.index], scale);
-      if (!points_on_graph(other, points, [&](voronoi::Point q) { return scaled_tol(q.x, q.y); }))
+      if (!std::all_of(points.begin(), points.end(), [&](voronoi::Point q) { return other->near(q, scaled_tol(q.x, q.y)); }))
         kept.push_back(diff);
     }
     out.differences = std::move(kept);
