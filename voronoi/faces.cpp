@@ -274,14 +274,17 @@ TracingGeometry tracing_geometry(const Diagram& d, bool with_boxes) {
 }
 
 // Boxes in a uniform grid of cells, stored in compressed rows (cell_begin[c] .. cell_begin[c+1]
-// index into items). Items with an unbounded box are kept apart in `always`.
+// index into items). Items with an unbounded or a large box are kept apart in `always`; a query
+// tests those and the items of its cells.
 struct BoxGrid {
   double x0 = 0, y0 = 0, cw = 1, ch = 1;
   int nx = 0, ny = 0;
   LargeVector<int> cell_begin, items, always;
 
-  int column(double x) const { return std::clamp(static_cast<int>(std::floor((x - x0) / cw)), 0, nx - 1); }
-  int row(double y) const { return std::clamp(static_cast<int>(std::floor((y - y0) / ch)), 0, ny - 1); }
+  // Clamped to the grid before the conversion (far points would overflow an int; NaN -> 0).
+  static int clamp_index(double c, int n) { return !(c > 0) ? 0 : c >= n - 1 ? n - 1 : static_cast<int>(c); }
+  int column(double x) const { return clamp_index(std::floor((x - x0) / cw), nx); }
+  int row(double y) const { return clamp_index(std::floor((y - y0) / ch), ny); }
   std::span<const int> cell(int i, int j) const {
     const std::size_t c = static_cast<std::size_t>(j) * nx + i;
     return {items.data() + cell_begin[c], items.data() + cell_begin[c + 1]};
@@ -290,9 +293,9 @@ struct BoxGrid {
 
 // A grid of about `target` cells over `area` (boxes reaching outside it land in the border cells).
 // `box_of(k)` gives the box of item k < n; it is called twice per item (count, then fill), so the
-// boxes need no storage of their own.
+// boxes need no storage of their own. Boxes covering more than `max_cells` cells go to `always`.
 template <class BoxOf>
-BoxGrid make_grid(std::size_t n, BoxOf&& box_of, Box area, std::size_t target) {
+BoxGrid make_grid(std::size_t n, BoxOf&& box_of, Box area, std::size_t target, long long max_cells) {
   BoxGrid g;
   const int side = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(target))), 1, 2048);
   if (!is_finite(area)) {
@@ -309,9 +312,16 @@ BoxGrid make_grid(std::size_t n, BoxOf&& box_of, Box area, std::size_t target) {
     for (int j = j0; j <= j1; ++j)
       for (int i = i0; i <= i1; ++i) f(static_cast<std::size_t>(j) * side + i);
   };
+  // Boxes that are unbounded or would cover more than max_cells cells (faces reaching far out:
+  // the grid spans the central nodes only) are kept in `always`, tested by every query.
+  auto gridded = [&](const Box& b) {
+    if (!is_finite(b)) return false;
+    const long long cells_covered = static_cast<long long>(g.column(b[2]) - g.column(b[0]) + 1) * (g.row(b[3]) - g.row(b[1]) + 1);
+    return cells_covered <= max_cells;
+  };
   // Counted and filled on both cores, each worker over its own contiguous range of items; within
   // a cell the first range's items come first, so rows are in item order as a sequential fill
-  // makes them. Unbounded boxes go to `always`, also in item order.
+  // makes them. `always` is in item order too.
   const int workers = engine::worker_count(n);
   std::vector<LargeVector<int>> count(workers);
   std::vector<std::vector<int>> unbounded(workers);
@@ -319,7 +329,7 @@ BoxGrid make_grid(std::size_t n, BoxOf&& box_of, Box area, std::size_t target) {
     count[w].assign(cells, 0);
     for (std::size_t k = b; k < e; ++k) {
       const Box box = box_of(k);
-      if (is_finite(box)) for_cells(box, [&](std::size_t c) { ++count[w][c]; });
+      if (gridded(box)) for_cells(box, [&](std::size_t c) { ++count[w][c]; });
       else if (box[0] <= box[2]) unbounded[w].push_back(static_cast<int>(k));
     }
   });
@@ -336,7 +346,7 @@ BoxGrid make_grid(std::size_t n, BoxOf&& box_of, Box area, std::size_t target) {
   g.items.resize(g.cell_begin.back());
   engine::parallel_chunks(n, workers, [&](std::size_t b, std::size_t e, int w) {
     for (std::size_t k = b; k < e; ++k)
-      if (const Box box = box_of(k); is_finite(box)) for_cells(box, [&](std::size_t c) { g.items[count[w][c]++] = static_cast<int>(k); });
+      if (const Box box = box_of(k); gridded(box)) for_cells(box, [&](std::size_t c) { g.items[count[w][c]++] = static_cast<int>(k); });
   });
   for (const auto& list : unbounded) g.always.insert(g.always.end(), list.begin(), list.end());
   return g;
@@ -673,6 +683,19 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
     return it->second;
   };
   auto path_of_arc = [&](int arc) { return arc_path(d.arcs[arc], d.nodes); };
+  // Paths for the containment tests of holes the ray cannot place (every hole when tracing by
+  // sites): computed on first use and kept, since one large face's outer cycle is tested against
+  // many holes.
+  LargeVector<ArcPathView> path_cache;
+  LargeVector<char> path_cached;
+  auto cached_path = [&](int arc) -> const ArcPathView& {
+    if (path_cache.empty()) {
+      path_cache.resize(d.arcs.size());
+      path_cached.assign(d.arcs.size(), 0);
+    }
+    if (!path_cached[arc]) path_cache[arc] = path_of_arc(arc), path_cached[arc] = 1;
+    return path_cache[arc];
+  };
   // Candidate outer cycles for a point, through a grid over their bounding boxes (built on first
   // use: most graphs have no hole that needs a containment test). Without it, tracing by geometry
   // (one label for all faces) would test every hole against every face.
@@ -680,24 +703,21 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
   auto candidate_faces = [&](Point p) {
     if (!face_grid) {
       LargeVector<Box> boxes(outer_area.size(), kEmptyBox);
-      Box area = kEmptyBox;
-      for (std::size_t f = 0; f < outer_area.size(); ++f) {
+      for (std::size_t f = 0; f < outer_area.size(); ++f)
         for (const HalfArc& h : d.faces[f].boundaries.front()) {
           const Box b = arc_box(d.arcs[h.arc], d.nodes);
           boxes[f] = {std::min(boxes[f][0], b[0]), std::min(boxes[f][1], b[1]), std::max(boxes[f][2], b[2]),
                       std::max(boxes[f][3], b[3])};
         }
-        if (is_finite(boxes[f])) grow(area, boxes[f][0], boxes[f][1]), grow(area, boxes[f][2], boxes[f][3]);
-      }
-      face_grid = make_grid(boxes.size(), [&](std::size_t f) { return boxes[f]; }, area, outer_area.size());
+      // Over the central nodes: a few faces reaching far out would otherwise stretch the cells
+      // until every face shares one.
+      face_grid = make_grid(boxes.size(), [&](std::size_t f) { return boxes[f]; }, central_box(d.nodes), outer_area.size(),
+                            /*max_cells=*/64);
     }
     std::vector<int> out(face_grid->always.begin(), face_grid->always.end());
-    if (face_grid->nx > 0) {
-      const double i = std::floor((p.x - face_grid->x0) / face_grid->cw), j = std::floor((p.y - face_grid->y0) / face_grid->ch);
-      if (i >= 0 && i < face_grid->nx && j >= 0 && j < face_grid->ny) {
-        const auto c = face_grid->cell(static_cast<int>(i), static_cast<int>(j));
-        out.insert(out.end(), c.begin(), c.end());
-      }
+    if (face_grid->nx > 0) {  // clamped like the boxes: a point beyond the grid meets the border cells
+      const auto c = face_grid->cell(face_grid->column(p.x), face_grid->row(p.y));
+      out.insert(out.end(), c.begin(), c.end());
     }
     return out;
   };
@@ -722,7 +742,13 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
     BoxGrid arc_grid;
     // About four arcs per cell: a ray crosses few cells before its first hit, and a coarser grid
     // is cheaper to fill.
-    if (!scan_all) arc_grid = make_grid(d.arcs.size(), box_of, nodes_box, d.arcs.size() / 4);
+    // Far arcs of huge circles land in the border cells, which only rays that go that far reach;
+    // an arc whose box spans more than four rows' worth of cells (around the whole graph) is
+    // tested by every ray instead of filling the grid.
+    if (!scan_all) {
+      const std::size_t cells = d.arcs.size() / 4;
+      arc_grid = make_grid(d.arcs.size(), box_of, nodes_box, cells, 4 * static_cast<long long>(std::sqrt(static_cast<double>(cells))) + 64);
+    }
     // Crossings of the horizontal line y with arc a (box b): (x, tangent y-component) pairs.
     std::vector<std::pair<double, double>> xs;
     auto crossings = [&](int a, const Box& b, double y) {
@@ -782,7 +808,10 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
         }
       };
       if (!scan_all && arc_grid.nx == 0) continue;  // no finite extent to grid: containment tests
-      for (int a : unbounded_arcs) test_arc(a);
+      if (scan_all)
+        for (int a : unbounded_arcs) test_arc(a);
+      else
+        for (int a : arc_grid.always) test_arc(a);
       if (scan_all) {
         for (std::size_t a = 0; a < d.arcs.size(); ++a)
           if (!unbounded_line(a)) test_arc(static_cast<int>(a));
@@ -841,7 +870,7 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
       if (f >= static_cast<int>(outer_area.size())) continue;  // hole-only faces have no outer
       if (std::find(across.begin(), across.end(), f) != across.end()) continue;
       // Innermost containing outer cycle (smallest area) wins.
-      if (cycle_contains(d, d.faces[f].boundaries.front(), p) && (target < 0 || outer_area[f] < outer_area[target]))
+      if (contains_with(d, d.faces[f].boundaries.front(), p, cached_path) && (target < 0 || outer_area[f] < outer_area[target]))
         target = f;
     }
     if (target < 0) {
