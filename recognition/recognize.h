@@ -15,8 +15,10 @@
 // on its two sides; pulled back to one root face through the composed transforms, these demands
 // are generalized disks, intersected by half-space intersection in 3D (feasible_region.h). The
 // region is returned with a representative point, whose propagation is the reconstruction. Frame
-// arcs of clipped maps bound faces but constrain nothing. The answer names the arc and the
-// distance when it fails.
+// arcs of clipped maps bound faces but constrain nothing. An arc whose end nodes do not lie on its
+// circle or line (beyond the tolerance) is rejected before anything else. The answer names the arc
+// and the distance when it fails. Linear in the size of the graph; docs/PERFORMANCE.md has times
+// (10^6 faces in ~1.7 s on two cores).
 #pragma once
 
 #include <optional>
