@@ -124,3 +124,43 @@ TEST(Negative, MergedFacesAreRejected) {
 
 }  // namespace
 }  // namespace covmap::recognition
+
+namespace covmap::recognition {
+namespace {
+
+// An arc whose stored circle misses its own end nodes (here: radius 1 % too large) is malformed;
+// recognition rejects it before anything else and names that arc, one of its ends, and how far
+// the end is from the circle.
+TEST(Negative, ArcWhoseEndsAreOffItsCircleIsNamed) {
+  std::mt19937_64 rng(41);
+  int checked = 0;
+  for (int trial = 0; trial < 20; ++trial) {
+    std::uniform_real_distribution<double> u(0.0, 1.0), w(1.0, 2.0);
+    std::vector<voronoi::Site> sites;
+    for (int i = 0; i < 15; ++i) sites.push_back({std::to_string(i), u(rng), u(rng), w(rng)});
+    voronoi::Diagram d = voronoi::build_diagram(sites);
+    int changed = -1;
+    double old_r = 0;
+    for (std::size_t a = 0; a < d.arcs.size(); ++a)
+      if (auto* c = std::get_if<voronoi::Circle>(&d.arcs[a].curve); c && d.arcs[a].from != voronoi::kNone && c->r < 10) {
+        old_r = c->r;
+        c->r *= 1.01;
+        changed = static_cast<int>(a);
+        break;
+      }
+    if (changed < 0) continue;
+    const voronoi::Arc arc = d.arcs[changed];
+    const Reconstruction r = recognize(d);
+    ASSERT_FALSE(r.bisector_graph) << "trial " << trial;
+    ASSERT_TRUE(r.failure.has_value());
+    EXPECT_EQ(r.failure->arc, changed) << r.reason;
+    EXPECT_TRUE(r.failure->node == arc.from || r.failure->node == arc.to) << r.reason;
+    EXPECT_NEAR(r.failure->amount, 0.01 * old_r, 1e-9) << r.reason;
+    EXPECT_NE(r.reason.find("off the arc's curve"), std::string::npos) << r.reason;
+    ++checked;
+  }
+  EXPECT_GT(checked, 15);
+}
+
+}  // namespace
+}  // namespace covmap::recognition

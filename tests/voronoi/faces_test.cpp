@@ -5,6 +5,7 @@
 // with the ray casting in voronoi/faces.cpp.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -180,6 +181,24 @@ TEST(Faces, NestedRegionsGiveHolesAndOrphans) {
 namespace covmap::voronoi {
 namespace {
 
+// Faces as sorted sets of sorted boundary cycles, to compare tracings that may number them apart.
+std::vector<std::vector<std::vector<std::pair<int, bool>>>> canonical_faces(const Diagram& d) {
+  std::vector<std::vector<std::vector<std::pair<int, bool>>>> out;
+  for (const Face& f : d.faces) {
+    std::vector<std::vector<std::pair<int, bool>>> cycles;
+    for (const auto& b : f.boundaries) {
+      std::vector<std::pair<int, bool>> c;
+      for (const HalfArc& h : b) c.emplace_back(h.arc, h.forward);
+      std::sort(c.begin(), c.end());
+      cycles.push_back(c);
+    }
+    std::sort(cycles.begin(), cycles.end());
+    out.push_back(cycles);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 // Tracing by geometry alone (as for an input graph without sites) must find exactly the faces
 // traced from the site labels: same boundary cycles, as sets of half-arcs.
 class FacesByGeometry : public ::testing::TestWithParam<Family> {};
@@ -191,22 +210,7 @@ TEST_P(FacesByGeometry, MatchLabelledFaces) {
     Diagram geometric = labelled;
     for (Arc& a : geometric.arcs) a.left_site = a.right_site = kNone;
     trace_faces(geometric, FaceLabels::kGeometry);
-    auto canon = [](const Face& f) {
-      std::vector<std::vector<std::pair<int, bool>>> cycles;
-      for (const auto& b : f.boundaries) {
-        std::vector<std::pair<int, bool>> c;
-        for (const HalfArc& h : b) c.emplace_back(h.arc, h.forward);
-        std::sort(c.begin(), c.end());
-        cycles.push_back(c);
-      }
-      std::sort(cycles.begin(), cycles.end());
-      return cycles;
-    };
-    std::vector<decltype(canon(Face{}))> a, b;
-    for (const Face& f : labelled.faces) a.push_back(canon(f));
-    for (const Face& f : geometric.faces) b.push_back(canon(f));
-    std::sort(a.begin(), a.end());
-    std::sort(b.begin(), b.end());
+    const auto a = canonical_faces(labelled), b = canonical_faces(geometric);
     ASSERT_EQ(a.size(), b.size()) << "seed " << seed;
     EXPECT_TRUE(a == b) << "seed " << seed;
   }
@@ -217,6 +221,80 @@ INSTANTIATE_TEST_SUITE_P(Families, FacesByGeometry,
                                            Family::WeightClasses, Family::SharedMaximum,
                                            Family::Grid),
                          [](const auto& info) { return testing::family_name(info.param); });
+
+}  // namespace
+}  // namespace covmap::voronoi
+
+namespace covmap::voronoi {
+namespace {
+
+
+// A graph large enough for the two-core paths of tracing by geometry (continuations node by node,
+// the cycle walk split between workers, the hole-ray grid: 12 000 sites give ~36 000 arcs and a few
+// hundred island circles). The faces must be the labelled ones, the face index must describe them,
+// and a second tracing must give the same faces in the same order.
+TEST(FacesByGeometryLarge, MatchLabelledFacesWithTheirIndex) {
+  const auto sites = testing::make_sites(Family::UniformWeights, 12000, 3);
+  const Diagram labelled = build_diagram(sites);
+  Diagram geometric = labelled;
+  for (Arc& a : geometric.arcs) a.left_site = a.right_site = kNone;
+  FaceIndex index;
+  trace_faces(geometric, FaceLabels::kGeometry, &index);
+  std::size_t holes = 0;
+  for (const Face& f : geometric.faces) holes += f.boundaries.size() > 1 ? f.boundaries.size() - 1 : 0;
+  EXPECT_GT(holes * geometric.arcs.size(), std::size_t{1} << 22) << holes << " holes: the hole-ray grid should be exercised";
+  ASSERT_EQ(canonical_faces(labelled).size(), canonical_faces(geometric).size());
+  EXPECT_TRUE(canonical_faces(labelled) == canonical_faces(geometric));
+
+  ASSERT_EQ(index.face_of_half.size(), 2 * geometric.arcs.size());
+  std::size_t on_cycles = 0;
+  for (std::size_t f = 0; f < geometric.faces.size(); ++f)
+    for (const auto& cycle : geometric.faces[f].boundaries)
+      for (std::size_t k = 0; k < cycle.size(); ++k) {
+        const int h = 2 * cycle[k].arc + (cycle[k].forward ? 0 : 1);
+        const HalfArc& n = cycle[(k + 1) % cycle.size()];
+        EXPECT_EQ(index.face_of_half[h], static_cast<int>(f));
+        EXPECT_EQ(index.next_half[h], 2 * n.arc + (n.forward ? 0 : 1));
+        ++on_cycles;
+      }
+  EXPECT_EQ(on_cycles, index.face_of_half.size()) << "every half-arc bounds exactly one face";
+  // Random sites in general position: every node has degree three and no tangency.
+  EXPECT_EQ(std::count(index.degenerate_node.begin(), index.degenerate_node.end(), 1), 0);
+
+  Diagram again = labelled;
+  for (Arc& a : again.arcs) a.left_site = a.right_site = kNone;
+  trace_faces(again, FaceLabels::kGeometry);
+  ASSERT_EQ(again.faces.size(), geometric.faces.size());
+  for (std::size_t f = 0; f < again.faces.size(); ++f) {
+    ASSERT_EQ(again.faces[f].boundaries.size(), geometric.faces[f].boundaries.size()) << "face " << f;
+    for (std::size_t b = 0; b < again.faces[f].boundaries.size(); ++b)
+      for (std::size_t k = 0; k < again.faces[f].boundaries[b].size(); ++k)
+        ASSERT_EQ(again.faces[f].boundaries[b][k].arc, geometric.faces[f].boundaries[b][k].arc) << "face " << f;
+  }
+}
+
+// Grid sites give nodes of degree four and more: those, and only nodes of degree other than three
+// or with tangent arcs, are flagged degenerate.
+TEST(FaceIndex, FlagsNodesOfDegreeOtherThanThree) {
+  int flagged_high_degree = 0;
+  for (int seed = 1; seed <= 20; ++seed) {
+    Diagram d = build_diagram(testing::make_sites(Family::Grid, 25, seed));
+    std::vector<int> degree(d.nodes.size(), 0);
+    for (const Arc& a : d.arcs)
+      for (int v : {a.from, a.to})
+        if (v != kNone) ++degree[v];
+    for (Arc& a : d.arcs) a.left_site = a.right_site = kNone;
+    FaceIndex index;
+    trace_faces(d, FaceLabels::kGeometry, &index);
+    ASSERT_EQ(index.degenerate_node.size(), d.nodes.size());
+    for (std::size_t v = 0; v < d.nodes.size(); ++v)
+      if (degree[v] != 3) {
+        EXPECT_EQ(index.degenerate_node[v], 1) << "seed " << seed << " node " << v;
+        ++flagged_high_degree;
+      }
+  }
+  EXPECT_GT(flagged_high_degree, 10) << "the grid family should produce nodes of degree > 3";
+}
 
 }  // namespace
 }  // namespace covmap::voronoi
