@@ -145,8 +145,8 @@ double pseudo_angle(double x, double y) {
   const double s = std::abs(x) + std::abs(y);
   if (s == 0) return 0.0;
   const double t = y / s;  // in [-1, 1]
-  if (x >= 0) return t >= 0 ? t : 4.0 + t;
-  return 2.0 - t;
+  if (x >= 0) return t >= 0 ? t : kPseudoTurn + t;
+  return 0.5 * kPseudoTurn - t;
 }
 
 using Box = std::array<double, 4>;  // xmin, ymin, xmax, ymax
@@ -160,6 +160,7 @@ void grow(Box& b, double x, double y) {
 // The bounding box of one arc: its ends and the circle's axis-extreme points within its sweep
 // (the whole plane for an unbounded line arc). A box only preselects arcs for exact tests; it is
 // widened by a few units in the last place so that rounding cannot make it miss its arc.
+constexpr double kBoxPadUlps = 4.0;
 Box arc_box(const Arc& arc, const Node& from, const Node& to) {
   Box b = kEmptyBox;
   if (const Circle* c = std::get_if<Circle>(&arc.curve)) {
@@ -175,11 +176,11 @@ Box arc_box(const Arc& arc, const Node& from, const Node& to) {
       const double pa = pseudo_angle(a.x - c->cx, a.y - c->cy), pe = pseudo_angle(e.x - c->cx, e.y - c->cy);
       const double lo = arc.ccw ? pa : pe, hi = arc.ccw ? pe : pa;
       double span = hi - lo;
-      if (span <= 0) span += 4.0;
+      if (span <= 0) span += kPseudoTurn;
       const double extreme[4][2] = {{c->cx + c->r, c->cy}, {c->cx, c->cy + c->r}, {c->cx - c->r, c->cy}, {c->cx, c->cy - c->r}};
       for (int k = 0; k < 4; ++k) {
         double at = k - lo;  // pseudo-angles of the axis directions are 0, 1, 2, 3
-        if (at < 0) at += 4.0;
+        if (at < 0) at += kPseudoTurn;
         if (at <= span) grow(b, extreme[k][0], extreme[k][1]);
       }
     }
@@ -188,7 +189,7 @@ Box arc_box(const Arc& arc, const Node& from, const Node& to) {
     grow(b, from.x, from.y);
     grow(b, to.x, to.y);
   }
-  const double pad = 4 * std::numeric_limits<double>::epsilon() *
+  const double pad = kBoxPadUlps * std::numeric_limits<double>::epsilon() *
                      std::max({std::abs(b[0]), std::abs(b[1]), std::abs(b[2]), std::abs(b[3])});
   return {b[0] - pad, b[1] - pad, b[2] + pad, b[3] + pad};
 }
