@@ -80,7 +80,7 @@ class ArcProximity {
     std::vector<std::array<int, 4>> range(paths_.size());
     std::vector<int> count(static_cast<std::size_t>(side_) * side_ + 1, 0);
     for (std::size_t k = 0; k < paths_.size(); ++k) {
-      const auto box = box_of(paths_[k]);
+      const auto box = voronoi::arc_bounds(d.arcs[k], d.nodes);
       range[k] = {column(box[0]), row(box[1]), column(box[2]), row(box[3])};
       const auto& r = range[k];
       const long long cells = static_cast<long long>(r[2] - r[0] + 1) * (r[3] - r[1] + 1);
@@ -125,23 +125,6 @@ class ArcProximity {
  private:
   static constexpr long long kMaxCellsPerArc = 64;
 
-  // The path's box: its ends and the circle's axis-extreme points within its sweep.
-  static std::array<double, 4> box_of(const voronoi::ArcPathView& p) {
-    std::array<double, 4> b = {INFINITY, INFINITY, -INFINITY, -INFINITY};
-    auto grow = [&](voronoi::Point q) {
-      b = {std::min(b[0], q.x), std::min(b[1], q.y), std::max(b[2], q.x), std::max(b[3], q.y)};
-    };
-    if (!p.circle && (!std::isfinite(p.s0) || !std::isfinite(p.s1))) return {-INFINITY, -INFINITY, INFINITY, INFINITY};
-    grow(p.at(p.s0));
-    grow(p.at(p.s1));
-    if (p.circle)
-      for (int k = 0; k < 4; ++k) {
-        double t = std::fmod(p.sense * (k * 1.5707963267948966 - p.start_angle), 6.283185307179586);
-        if (t < 0) t += 6.283185307179586;
-        if (t >= p.s0 && t <= p.s1) grow(p.at(t));
-      }
-    return b;
-  }
   // Clamped to the grid (NaN to its first cell; such points are near nothing anyway).
   int cell_index(double c) const {
     if (!(c > 0)) return 0;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace covmap::voronoi {
 namespace {
@@ -96,5 +97,64 @@ std::vector<double> path_segment_crossings(const ArcPathView& path, Point a, Poi
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
 }
+
+double pseudo_angle(double x, double y) {
+  const double s = std::abs(x) + std::abs(y);
+  if (s == 0) return 0.0;
+  const double t = y / s;  // in [-1, 1]
+  if (x >= 0) return t >= 0 ? t : kPseudoTurn + t;
+  return 0.5 * kPseudoTurn - t;
+}
+
+namespace {
+
+// Bounds only preselect arcs for exact tests (face tracing, comparison); this many ulps of the
+// coordinates cover the rounding of the ends and extreme points.
+constexpr double kBoundsPadUlps = 4.0;
+
+void grow(ArcBounds& b, double x, double y) {
+  b = {std::min(b[0], x), std::min(b[1], y), std::max(b[2], x), std::max(b[3], y)};
+}
+
+}  // namespace
+
+ArcBounds arc_bounds(const Arc& arc, const Node& from, const Node& to) {
+  ArcBounds b = {INFINITY, INFINITY, -INFINITY, -INFINITY};
+  if (const Circle* c = std::get_if<Circle>(&arc.curve)) {
+    if (arc.from == kNone || arc.from == arc.to) {
+      b = {c->cx - c->r, c->cy - c->r, c->cx + c->r, c->cy + c->r};
+    } else {
+      const Node& a = from;
+      const Node& e = to;
+      grow(b, a.x, a.y);
+      grow(b, e.x, e.y);
+      // Counter-clockwise from the start direction to the end direction (reversed for clockwise
+      // arcs: then the sweep runs from the end to the start).
+      const double pa = pseudo_angle(a.x - c->cx, a.y - c->cy), pe = pseudo_angle(e.x - c->cx, e.y - c->cy);
+      const double lo = arc.ccw ? pa : pe, hi = arc.ccw ? pe : pa;
+      double span = hi - lo;
+      if (span <= 0) span += kPseudoTurn;
+      const double extreme[4][2] = {{c->cx + c->r, c->cy}, {c->cx, c->cy + c->r}, {c->cx - c->r, c->cy}, {c->cx, c->cy - c->r}};
+      for (int k = 0; k < 4; ++k) {
+        double at = k - lo;  // pseudo-angles of the axis directions are 0, 1, 2, 3
+        if (at < 0) at += kPseudoTurn;
+        if (at <= span) grow(b, extreme[k][0], extreme[k][1]);
+      }
+    }
+  } else {
+    if (arc.from == kNone || arc.to == kNone) return {-INFINITY, -INFINITY, INFINITY, INFINITY};
+    grow(b, from.x, from.y);
+    grow(b, to.x, to.y);
+  }
+  const double pad = kBoundsPadUlps * std::numeric_limits<double>::epsilon() *
+                     std::max({std::abs(b[0]), std::abs(b[1]), std::abs(b[2]), std::abs(b[3])});
+  return {b[0] - pad, b[1] - pad, b[2] + pad, b[3] + pad};
+}
+
+ArcBounds arc_bounds(const Arc& arc, const std::vector<Node>& nodes) {
+  const Node none{};
+  return arc_bounds(arc, arc.from == kNone ? none : nodes[arc.from], arc.to == kNone ? none : nodes[arc.to]);
+}
+
 
 }  // namespace covmap::voronoi

@@ -6,6 +6,7 @@
 // along the unit direction from the line's anchor point; ±∞ at kNone ends.
 #pragma once
 
+#include <array>
 #include <limits>
 #include <vector>
 
@@ -31,6 +32,19 @@ struct ArcPathView {
 };
 
 ArcPathView arc_path(const Arc& arc, const std::vector<Node>& nodes);
+
+// A monotone stand-in for atan2 (the "diamond angle"), in [0, kPseudoTurn): a full turn is 4 and
+// the slope per radian lies between 1/2 and 1. Orders directions without trigonometry.
+inline constexpr double kPseudoTurn = 4.0;
+double pseudo_angle(double x, double y);
+
+// Axis-aligned bounds of an arc {xmin, ymin, xmax, ymax}: its ends and the circle's axis-extreme
+// points within its sweep, widened by a few units in the last place so that rounding cannot make
+// them miss the arc; ±infinity for a line arc with an end at infinity. `from` and `to` are the
+// arc's end nodes (ignored where the arc has none).
+using ArcBounds = std::array<double, 4>;
+ArcBounds arc_bounds(const Arc& arc, const Node& from, const Node& to);
+ArcBounds arc_bounds(const Arc& arc, const std::vector<Node>& nodes);
 
 // Parameters (within [s0, s1]) where the path crosses the segment a–b, in increasing order.
 std::vector<double> path_segment_crossings(const ArcPathView& path, Point a, Point b);

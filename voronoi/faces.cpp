@@ -137,67 +137,17 @@ bool cycle_contains(const Diagram& d, const std::vector<HalfArc>& cycle, Point p
 
 namespace {
 
-// A monotone stand-in for atan2 (the "diamond angle"), in [0, 4): a full turn is 4, and its slope
-// per radian lies between 1/2 and 1. Orders directions without trigonometry: whether a direction
-// lies within an arc's sweep, and which arc leaves a node next in clockwise order.
-constexpr double kPseudoTurn = 4.0;
-double pseudo_angle(double x, double y) {
-  const double s = std::abs(x) + std::abs(y);
-  if (s == 0) return 0.0;
-  const double t = y / s;  // in [-1, 1]
-  if (x >= 0) return t >= 0 ? t : kPseudoTurn + t;
-  return 0.5 * kPseudoTurn - t;
-}
-
-using Box = std::array<double, 4>;  // xmin, ymin, xmax, ymax
+using Box = ArcBounds;
 constexpr Box kEmptyBox = {INFINITY, INFINITY, -INFINITY, -INFINITY};
-constexpr Box kWholePlane = {-INFINITY, -INFINITY, INFINITY, INFINITY};
 
 void grow(Box& b, double x, double y) {
   b = {std::min(b[0], x), std::min(b[1], y), std::max(b[2], x), std::max(b[3], y)};
 }
 
-// The bounding box of one arc: its ends and the circle's axis-extreme points within its sweep
-// (the whole plane for an unbounded line arc). A box only preselects arcs for exact tests; it is
-// widened by a few units in the last place so that rounding cannot make it miss its arc.
-constexpr double kBoxPadUlps = 4.0;
-Box arc_box(const Arc& arc, const Node& from, const Node& to) {
-  Box b = kEmptyBox;
-  if (const Circle* c = std::get_if<Circle>(&arc.curve)) {
-    if (arc.from == kNone || arc.from == arc.to) {
-      b = {c->cx - c->r, c->cy - c->r, c->cx + c->r, c->cy + c->r};
-    } else {
-      const Node& a = from;
-      const Node& e = to;
-      grow(b, a.x, a.y);
-      grow(b, e.x, e.y);
-      // Counter-clockwise from the start direction to the end direction (reversed for clockwise
-      // arcs: then the sweep runs from the end to the start).
-      const double pa = pseudo_angle(a.x - c->cx, a.y - c->cy), pe = pseudo_angle(e.x - c->cx, e.y - c->cy);
-      const double lo = arc.ccw ? pa : pe, hi = arc.ccw ? pe : pa;
-      double span = hi - lo;
-      if (span <= 0) span += kPseudoTurn;
-      const double extreme[4][2] = {{c->cx + c->r, c->cy}, {c->cx, c->cy + c->r}, {c->cx - c->r, c->cy}, {c->cx, c->cy - c->r}};
-      for (int k = 0; k < 4; ++k) {
-        double at = k - lo;  // pseudo-angles of the axis directions are 0, 1, 2, 3
-        if (at < 0) at += kPseudoTurn;
-        if (at <= span) grow(b, extreme[k][0], extreme[k][1]);
-      }
-    }
-  } else {
-    if (arc.from == kNone || arc.to == kNone) return kWholePlane;
-    grow(b, from.x, from.y);
-    grow(b, to.x, to.y);
-  }
-  const double pad = kBoxPadUlps * std::numeric_limits<double>::epsilon() *
-                     std::max({std::abs(b[0]), std::abs(b[1]), std::abs(b[2]), std::abs(b[3])});
-  return {b[0] - pad, b[1] - pad, b[2] + pad, b[3] + pad};
-}
+bool is_finite(const Box& b) { return std::isfinite(b[0]) && std::isfinite(b[2]); }
 
-Box arc_box(const Arc& arc, const std::vector<Node>& nodes) {
-  const Node none{};
-  return arc_box(arc, arc.from == kNone ? none : nodes[arc.from], arc.to == kNone ? none : nodes[arc.to]);
-}
+Box arc_box(const Arc& arc, const Node& from, const Node& to) { return arc_bounds(arc, from, to); }
+Box arc_box(const Arc& arc, const std::vector<Node>& nodes) { return arc_bounds(arc, nodes); }
 
 // Boxes kept per arc in single precision, rounded outward (half the memory of doubles; a box only
 // preselects). Coordinates beyond float range become infinite: such a box is treated as unbounded.
@@ -217,7 +167,6 @@ FloatBox to_float_outward(const Box& b) {
 
 Box to_double(const FloatBox& b) { return {b[0], b[1], b[2], b[3]}; }
 
-bool is_finite(const Box& b) { return std::isfinite(b[0]) && std::isfinite(b[2]); }
 
 // Per half-arc geometry at the node where it starts: the pseudo-angle of its direction of travel and its
 // curvature in that direction (next_of compares them at every node); per arc, twice the signed
