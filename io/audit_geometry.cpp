@@ -83,7 +83,7 @@ std::vector<Point> sample_half_arc(const voronoi::Diagram& d, voronoi::HalfArc h
   return points;
 }
 
-Ring sample_cycle(const voronoi::Diagram& d, const std::vector<voronoi::HalfArc>& cycle, const ArcSampling& s) {
+Ring sample_cycle(const voronoi::Diagram& d, std::span<const voronoi::HalfArc> cycle, const ArcSampling& s) {
   Ring ring;
   for (const auto& h : cycle) {
     const std::vector<Point> points = sample_half_arc(d, h, s);

@@ -39,7 +39,7 @@ std::vector<voronoi::Point> sample_half_arc(const voronoi::Diagram& d, voronoi::
 // A boundary cycle as an implicitly closed ring (no repeated last point, no two consecutive points
 // equal), in the cycle's direction. Empty when the cycle passes through infinity, has a non-finite
 // point or has fewer than three distinct points.
-Ring sample_cycle(const voronoi::Diagram& d, const std::vector<voronoi::HalfArc>& cycle, const ArcSampling& s);
+Ring sample_cycle(const voronoi::Diagram& d, std::span<const voronoi::HalfArc> cycle, const ArcSampling& s);
 
 // The signed area of an implicitly closed ring (shoelace), positive counter-clockwise.
 double signed_area(const Ring& ring);

@@ -79,7 +79,7 @@ namespace {
 
 // Ray casting along kRayAngle; `path_of(arc)` gives each arc's path (cached by trace_faces).
 template <class PathOf>
-bool contains_with(const Diagram& d, const std::vector<HalfArc>& cycle, Point p, PathOf&& path_of) {
+bool contains_with(const Diagram& d, std::span<const HalfArc> cycle, Point p, PathOf&& path_of) {
   const Point dir{std::cos(kRayAngle), std::sin(kRayAngle)};
   int crossings = 0;
   for (std::size_t k = 0; k < cycle.size(); ++k) {
@@ -127,7 +127,7 @@ bool contains_with(const Diagram& d, const std::vector<HalfArc>& cycle, Point p,
 
 }  // namespace
 
-bool cycle_contains(const Diagram& d, const std::vector<HalfArc>& cycle, Point p) {
+bool cycle_contains(const Diagram& d, std::span<const HalfArc> cycle, Point p) {
   ArcPathView scratch;
   return contains_with(d, cycle, p, [&](int arc) -> const ArcPathView& {
     scratch = arc_path(d.arcs[arc], d.nodes);
@@ -574,12 +574,19 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
   auto halves_of = [&](const Cycle& c) {
     return std::span<const int>(cycle_halves.data() + c.begin, static_cast<std::size_t>(c.end - c.begin));
   };
-  auto half_arcs_of = [&](const Cycle& c) {
-    std::vector<HalfArc> out;
-    out.reserve(static_cast<std::size_t>(c.end - c.begin));
-    for (int h : halves_of(c)) out.push_back(half_of(h));
-    return out;
+  // All cycles as half-arcs, in one array that the faces share (FaceBoundaries): no allocation per
+  // face. Advised as huge pages before the first touch, filled on both cores.
+  const auto pool = std::make_shared<std::vector<HalfArc>>();
+  pool->reserve(cycle_halves.size());
+  advise_huge_pages(pool->data(), pool->capacity() * sizeof(HalfArc));
+  pool->resize(cycle_halves.size());
+  engine::parallel_chunks(cycle_halves.size(), engine::worker_count(cycle_halves.size()), [&](std::size_t b, std::size_t e, int) {
+    for (std::size_t k = b; k < e; ++k) (*pool)[k] = half_of(cycle_halves[k]);
+  });
+  auto add_cycle = [&](Face& face, const Cycle& c) {
+    face.boundaries.push_back_shared(pool, static_cast<std::size_t>(c.begin), static_cast<std::size_t>(c.end));
   };
+
   // Outer cycles make faces; clockwise cycles are holes of the face of their site containing them.
   std::unordered_map<int, LargeVector<int>> faces_of_site;
   std::vector<int> holes;                  // cycle indices
@@ -601,15 +608,9 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
       holes.push_back(static_cast<int>(c));
     }
   }
-  // Each face's outer cycle as half-arcs (independent per face: both cores share the allocations).
-  {
-    LargeVector<int> outer_cycle(d.faces.size());
-    for (std::size_t c = 0; c < cycles.size(); ++c)
-      if (face_of_cycle[c] >= 0) outer_cycle[face_of_cycle[c]] = static_cast<int>(c);
-    engine::parallel_chunks(d.faces.size(), engine::worker_count(d.faces.size()), [&](std::size_t b, std::size_t e, int) {
-      for (std::size_t f = b; f < e; ++f) d.faces[f].boundaries.push_back(half_arcs_of(cycles[outer_cycle[f]]));
-    });
-  }
+  // Each face's outer cycle (sequential: the faces share one reference count).
+  for (std::size_t c = 0; c < cycles.size(); ++c)
+    if (face_of_cycle[c] >= 0) add_cycle(d.faces[face_of_cycle[c]], cycles[c]);
   const LargeVector<char> has_outer(d.faces.size(), 1);
   // The face whose outer cycle runs along each half-arc (-1 on holes): the face across a hole's own
   // arcs is the one on the hole's other side, never the face containing it.
@@ -801,7 +802,7 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
     if (ray_face[hk] != -2) {
       int target = ray_face[hk];
       if (target < 0) target = implicit_face_of(hole.site);
-      d.faces[target].boundaries.push_back(half_arcs_of(hole));
+      add_cycle(d.faces[target], hole);
       face_of_cycle[holes[hk]] = target;
       continue;
     }
@@ -826,7 +827,7 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
     if (target < 0) {
       target = implicit_face_of(hole.site);
     }
-    d.faces[target].boundaries.push_back(half_arcs_of(hole));
+    add_cycle(d.faces[target], hole);
     face_of_cycle[holes[hk]] = target;
   }
   if (index) {

@@ -10,6 +10,8 @@
 // continuation is chosen by angle (tangent, then curvature), for graphs without site labels.
 #pragma once
 
+#include <span>
+
 #include "voronoi/diagram.h"
 #include "voronoi/large_buffer.h"
 
@@ -38,6 +40,6 @@ void trace_faces(Diagram& d, FaceLabels labels = FaceLabels::kSites, FaceIndex* 
 
 // True when p lies inside the region enclosed by `cycle` (half-arcs with the region on their left;
 // a cycle may pass through infinity). Used for containment of holes and sites.
-bool cycle_contains(const Diagram& d, const std::vector<HalfArc>& cycle, Point p);
+bool cycle_contains(const Diagram& d, std::span<const HalfArc> cycle, Point p);
 
 }  // namespace covmap::voronoi

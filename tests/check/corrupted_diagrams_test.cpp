@@ -252,7 +252,7 @@ TEST(CorruptedDiagrams, FaceOnWrongSide) {
 
 TEST(CorruptedDiagrams, FaceCycleBroken) {
   Diagram d = rhombus();
-  d.faces[0].boundaries[0][1] = HalfArc{4, true};  // R's lower ray: right start, but site 3's
+  d.faces[0].boundaries.mutable_cycle(0)[1] = HalfArc{4, true};  // R's lower ray: right start, but site 3's
   const CheckReport r = check_diagram(d);
   const auto v = first_of(r, ViolationKind::FaceInconsistent);
   ASSERT_TRUE(v) << r.brief();

@@ -26,7 +26,7 @@ using voronoi::Point;
 using voronoi::Site;
 
 // f's boundary as a polygon of points sampled along its arcs.
-std::vector<Point> sampled_boundary(const Diagram& d, const std::vector<HalfArc>& cycle) {
+std::vector<Point> sampled_boundary(const Diagram& d, std::span<const HalfArc> cycle) {
   std::vector<Point> poly;
   for (const HalfArc& h : cycle) {
     const voronoi::ArcPathView p = voronoi::arc_path(d.arcs[h.arc], d.nodes);

@@ -30,7 +30,7 @@ int brute_owner(const std::vector<Site>& sites, Point p) {
 
 // The cycle as a polygon. Unbounded pieces are followed out to distance `far` and joined there
 // counter-clockwise (the face is on the left), which is exact enough for points well inside.
-std::vector<Point> flatten(const Diagram& d, const std::vector<HalfArc>& cycle, double far) {
+std::vector<Point> flatten(const Diagram& d, std::span<const HalfArc> cycle, double far) {
   std::vector<Point> poly;
   auto angle_of = [](Point p) { return std::atan2(p.y, p.x); };
   for (std::size_t k = 0; k < cycle.size(); ++k) {
@@ -294,6 +294,35 @@ TEST(FaceIndex, FlagsNodesOfDegreeOtherThanThree) {
       }
   }
   EXPECT_GT(flagged_high_degree, 10) << "the grid family should produce nodes of degree > 3";
+}
+
+}  // namespace
+}  // namespace covmap::voronoi
+
+namespace covmap::voronoi {
+namespace {
+
+// FaceBoundaries share the half-arcs of faces traced together; changing one face must not change
+// another (copy on write), and a face may append one of its own cycles.
+TEST(FaceBoundaries, BehaveAsValues) {
+  Diagram d = build_diagram(testing::make_sites(Family::UniformWeights, 30, 4));
+  ASSERT_GE(d.faces.size(), 2u);
+  const std::vector<HalfArc> first(d.faces[0].boundaries[0].begin(), d.faces[0].boundaries[0].end());
+  const std::vector<HalfArc> second(d.faces[1].boundaries[0].begin(), d.faces[1].boundaries[0].end());
+  Face copy = d.faces[0];
+  copy.boundaries.mutable_cycle(0)[0] = HalfArc{12345, false};
+  EXPECT_EQ(d.faces[0].boundaries[0][0].arc, first[0].arc) << "the original is untouched";
+  EXPECT_EQ(d.faces[1].boundaries[0][0].arc, second[0].arc) << "so is every other face";
+  EXPECT_EQ(copy.boundaries[0][0].arc, 12345);
+  copy.boundaries.push_back(copy.boundaries[0]);  // its own cycle, appended
+  ASSERT_EQ(copy.boundaries.size(), 2u);
+  EXPECT_TRUE(std::equal(copy.boundaries[0].begin(), copy.boundaries[0].end(), copy.boundaries[1].begin(),
+                         [](const HalfArc& a, const HalfArc& b) { return a.arc == b.arc && a.forward == b.forward; }));
+  d.faces[1].boundaries.push_back(std::vector<HalfArc>{{7, true}, {8, false}});
+  EXPECT_EQ(d.faces[1].boundaries.size(), 2u);
+  EXPECT_EQ(d.faces[1].boundaries[1][1].arc, 8);
+  EXPECT_EQ(d.faces[0].boundaries.size(), 1u);
+  EXPECT_EQ(d.faces[0].boundaries[0].size(), first.size());
 }
 
 }  // namespace

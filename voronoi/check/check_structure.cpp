@@ -155,7 +155,7 @@ void check_faces(CheckContext& c) {
       continue;
     }
     for (std::size_t b = 0; b < face.boundaries.size(); ++b) {
-      const std::vector<HalfArc>& cycle = face.boundaries[b];
+      const auto cycle = face.boundaries[b];
       bool indices_ok = true;
       for (const HalfArc& h : cycle) {
         if (h.arc < 0 || h.arc >= n_arcs) {
