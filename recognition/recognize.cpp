@@ -8,6 +8,7 @@
 #include <optional>
 #include <deque>
 #include <sstream>
+#include <thread>
 
 #include "recognition/bisector_relation.h"
 #include "recognition/extent.h"
@@ -177,47 +178,59 @@ std::optional<EndOffCurve> first_end_off_curve(const Diagram& g, double tol) {
 // site, and weights are normalised to a largest of 1. Sites are numbered by their first face.
 Reconstruction collect_sites(const LargeVector<FaceSite>& site, double tol, double weight_snap) {
   const int faces = static_cast<int>(site.size());
+  // The two orders are independent: one core each.
   LargeVector<double> weight(faces, 0.0);
-  {
+  auto snap_weights = [&] {
     LargeVector<std::pair<double, int>> order;
     order.reserve(faces);
     for (int f = 0; f < faces; ++f)
       if (site[f].assigned) order.emplace_back(site[f].weight, f);
-    voronoi::engine::parallel_sort(order.begin(), order.end());  // (weight, face): no ties
+    std::sort(order.begin(), order.end());  // (weight, face): no ties
     for (std::size_t k = 0; k < order.size(); ++k) {
       if (k > 0 && order[k].first - order[k - 1].first <= weight_snap * order[k].first) order[k].first = order[k - 1].first;
       weight[order[k].second] = order[k].first;
     }
-  }
+  };
   // Coinciding sites through a sweep in x: each face joins the first earlier face (in face order)
-  // whose site lies within tol; a union over a window of width tol.
-  LargeVector<int> by_x;
-  {
-    LargeVector<std::pair<double, int>> keyed;
-    keyed.reserve(faces);
+  // whose site lies within tol; a union over a window of width tol. The positions travel with the
+  // sorted keys, so the sweep reads memory in order.
+  struct Keyed {
+    double x, y;
+    int face;
+    bool operator<(const Keyed& o) const { return x < o.x || (x == o.x && face < o.face); }
+  };
+  LargeVector<Keyed> by_x;
+  auto sort_by_x = [&] {
+    by_x.reserve(faces);
     for (int f = 0; f < faces; ++f)
-      if (site[f].assigned) keyed.emplace_back(site[f].position.real(), f);
-    voronoi::engine::parallel_sort(keyed.begin(), keyed.end());  // (x, face): no ties
-    by_x.reserve(keyed.size());
-    for (const auto& [x, f] : keyed) by_x.push_back(f);
+      if (site[f].assigned) by_x.push_back({site[f].position.real(), site[f].position.imag(), f});
+    std::sort(by_x.begin(), by_x.end());  // (x, face): no ties
+  };
+  if (voronoi::engine::worker_count(site.size()) > 1) {
+    std::thread other(sort_by_x);
+    snap_weights();
+    other.join();
+  } else {
+    snap_weights();
+    sort_by_x();
   }
   LargeVector<int> same_as(faces, kNone);  // the earliest face with the same site
   const double tol2 = tol * tol;
+  auto close = [&](const Keyed& a, const Keyed& b) { return (a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) <= tol2; };
   for (std::size_t k = 0; k < by_x.size(); ++k) {
-    const int f = by_x[k];
-    const Complex p = site[f].position;
-    int earliest = f;
+    const Keyed& p = by_x[k];
+    int earliest = p.face;
     for (std::size_t j = k; j-- > 0;) {
-      const int e = by_x[j];
-      if (p.real() - site[e].position.real() > tol) break;
-      if (std::norm(site[e].position - p) <= tol2) earliest = std::min(earliest, same_as[e] == kNone ? e : same_as[e]);
+      const Keyed& e = by_x[j];
+      if (p.x - e.x > tol) break;
+      if (close(e, p)) earliest = std::min(earliest, same_as[e.face] == kNone ? e.face : same_as[e.face]);
     }
     for (std::size_t j = k + 1; j < by_x.size(); ++j) {
-      const int e = by_x[j];
-      if (site[e].position.real() - p.real() > tol) break;
-      if (e < earliest && std::norm(site[e].position - p) <= tol2) earliest = e;
+      const Keyed& e = by_x[j];
+      if (e.x - p.x > tol) break;
+      if (e.face < earliest && close(e, p)) earliest = e.face;
     }
-    same_as[f] = earliest;
+    same_as[p.face] = earliest;
   }
   double wmax = 0;
   for (int f = 0; f < faces; ++f) wmax = std::max(wmax, weight[f]);
@@ -227,6 +240,8 @@ Reconstruction collect_sites(const LargeVector<FaceSite>& site, double tol, doub
   voronoi::advise_huge_pages(r.sites.data(), r.sites.capacity() * sizeof(voronoi::Site));
   voronoi::advise_huge_pages(r.face_site.data(), r.face_site.capacity() * sizeof(int));
   r.face_site.assign(faces, kNone);
+  LargeVector<int> first_face;  // per site, the face it is numbered by
+  first_face.reserve(by_x.size());
   for (int f = 0; f < faces; ++f) {
     if (!site[f].assigned) continue;
     const int first = same_as[f];
@@ -234,9 +249,18 @@ Reconstruction collect_sites(const LargeVector<FaceSite>& site, double tol, doub
       r.face_site[f] = r.face_site[first];
       continue;
     }
-    r.face_site[f] = static_cast<int>(r.sites.size());
-    r.sites.push_back({"s" + std::to_string(r.sites.size()), site[f].position.real(), site[f].position.imag(), weight[f] / wmax});
+    r.face_site[f] = static_cast<int>(first_face.size());
+    first_face.push_back(f);
   }
+  r.sites.resize(first_face.size());
+  voronoi::engine::parallel_chunks(first_face.size(), voronoi::engine::worker_count(first_face.size()),
+                                   [&](std::size_t b, std::size_t e, int) {
+                                     for (std::size_t k = b; k < e; ++k) {
+                                       const int f = first_face[k];
+                                       r.sites[k] = {"s" + std::to_string(k), site[f].position.real(),
+                                                     site[f].position.imag(), weight[f] / wmax};
+                                     }
+                                   });
   return r;
 }
 
