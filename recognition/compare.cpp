@@ -10,6 +10,7 @@
 
 #include "recognition/extent.h"
 #include "voronoi/arc_path.h"
+#include "voronoi/box_grid.h"
 
 namespace covmap::recognition {
 namespace {
@@ -73,70 +74,36 @@ class ArcProximity {
     paths_.reserve(d.arcs.size());
     for (const Arc& a : d.arcs) paths_.push_back(voronoi::arc_path(a, d.nodes));
     const Extent e = robust_extent(d.nodes);
-    side_ = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(d.arcs.size()))), 1, 2048);
-    x0_ = e.xmin, y0_ = e.ymin;
-    cw_ = std::max((e.xmax - e.xmin) / side_, 1e-300);
-    ch_ = std::max((e.ymax - e.ymin) / side_, 1e-300);
-    std::vector<std::array<int, 4>> range(paths_.size());
-    std::vector<int> count(static_cast<std::size_t>(side_) * side_ + 1, 0);
-    for (std::size_t k = 0; k < paths_.size(); ++k) {
-      const auto box = voronoi::arc_bounds(d.arcs[k], d.nodes);
-      range[k] = {column(box[0]), row(box[1]), column(box[2]), row(box[3])};
-      const auto& r = range[k];
-      const long long cells = static_cast<long long>(r[2] - r[0] + 1) * (r[3] - r[1] + 1);
-      if (!std::isfinite(box[0]) || !std::isfinite(box[2]) || !std::isfinite(box[1]) || !std::isfinite(box[3]) ||
-          cells > kMaxCellsPerArc) {
-        always_.push_back(static_cast<int>(k));
-        range[k] = {1, 1, 0, 0};  // empty
-        continue;
-      }
-      for (int j = r[1]; j <= r[3]; ++j)
-        for (int i = r[0]; i <= r[2]; ++i) ++count[static_cast<std::size_t>(j) * side_ + i + 1];
-    }
-    for (std::size_t c = 1; c < count.size(); ++c) count[c] += count[c - 1];
-    begin_ = count;
-    items_.resize(count.back());
-    for (std::size_t k = 0; k < paths_.size(); ++k) {
-      const auto& r = range[k];
-      for (int j = r[1]; j <= r[3]; ++j)
-        for (int i = r[0]; i <= r[2]; ++i) items_[count[static_cast<std::size_t>(j) * side_ + i]++] = static_cast<int>(k);
-    }
+    grid_ = voronoi::make_grid(
+        d.arcs.size(), [&](std::size_t k) { return voronoi::arc_bounds(d.arcs[k], d.nodes); },
+        {e.xmin, e.ymin, e.xmax, e.ymax}, d.arcs.size(), kMaxCells);
   }
 
   bool near(voronoi::Point q, double tol) const {
     if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(tol)) return false;
     auto close = [&](int k) { return distance_to_arc(paths_[k], q) <= tol; };
-    if (std::any_of(always_.begin(), always_.end(), close)) return true;
-    const int i0 = column(q.x - tol), i1 = column(q.x + tol), j0 = row(q.y - tol), j1 = row(q.y + tol);
-    if (static_cast<long long>(i1 - i0 + 1) * (j1 - j0 + 1) > kMaxCellsPerArc) {  // a huge allowance
+    if (std::any_of(grid_.always.begin(), grid_.always.end(), close)) return true;
+    if (grid_.nx == 0) return false;  // every arc is in `always`
+    const int i0 = grid_.column(q.x - tol), i1 = grid_.column(q.x + tol);
+    const int j0 = grid_.row(q.y - tol), j1 = grid_.row(q.y + tol);
+    if (static_cast<long long>(i1 - i0 + 1) * (j1 - j0 + 1) > kMaxCells) {  // a huge allowance
       for (std::size_t k = 0; k < paths_.size(); ++k)
         if (close(static_cast<int>(k))) return true;
       return false;
     }
     for (int j = j0; j <= j1; ++j)
-      for (int i = i0; i <= i1; ++i) {
-        const std::size_t c = static_cast<std::size_t>(j) * side_ + i;
-        for (int n = begin_[c]; n < begin_[c + 1]; ++n)
-          if (close(items_[n])) return true;
-      }
+      for (int i = i0; i <= i1; ++i)
+        for (int k : grid_.cell(i, j))
+          if (close(k)) return true;
     return false;
   }
 
  private:
-  static constexpr long long kMaxCellsPerArc = 64;
-
-  // Clamped to the grid (NaN to its first cell; such points are near nothing anyway).
-  int cell_index(double c) const {
-    if (!(c > 0)) return 0;
-    return c >= side_ - 1 ? side_ - 1 : static_cast<int>(c);
-  }
-  int column(double x) const { return cell_index(std::floor((x - x0_) / cw_)); }
-  int row(double y) const { return cell_index(std::floor((y - y0_) / ch_)); }
+  // Arcs whose box covers more cells (far, huge circles) are tested for every point instead.
+  static constexpr long long kMaxCells = 64;
 
   std::vector<voronoi::ArcPathView> paths_;
-  int side_ = 1;
-  double x0_ = 0, y0_ = 0, cw_ = 1, ch_ = 1;
-  std::vector<int> begin_, items_, always_;
+  voronoi::BoxGrid grid_;
 };
 
 std::vector<voronoi::Point> arc_samples(const Diagram& d, const Arc& arc, double far) {

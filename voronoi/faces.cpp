@@ -13,6 +13,7 @@
 #include <unordered_map>
 
 #include "voronoi/arc_path.h"
+#include "voronoi/box_grid.h"
 #include "voronoi/large_buffer.h"
 #include "voronoi/tolerances.h"
 
@@ -137,17 +138,7 @@ bool cycle_contains(const Diagram& d, std::span<const HalfArc> cycle, Point p) {
 
 namespace {
 
-using Box = ArcBounds;
 constexpr Box kEmptyBox = {INFINITY, INFINITY, -INFINITY, -INFINITY};
-
-void grow(Box& b, double x, double y) {
-  b = {std::min(b[0], x), std::min(b[1], y), std::max(b[2], x), std::max(b[3], y)};
-}
-
-bool is_finite(const Box& b) { return std::isfinite(b[0]) && std::isfinite(b[2]); }
-
-Box arc_box(const Arc& arc, const Node& from, const Node& to) { return arc_bounds(arc, from, to); }
-Box arc_box(const Arc& arc, const std::vector<Node>& nodes) { return arc_bounds(arc, nodes); }
 
 // Boxes kept per arc in single precision, rounded outward (half the memory of doubles; a box only
 // preselects). Coordinates beyond float range become infinite: such a box is treated as unbounded.
@@ -196,7 +187,7 @@ TracingGeometry tracing_geometry(const Diagram& d, bool with_boxes) {
       const Node none{};
       const Node& from = arc.from == kNone ? none : d.nodes[arc.from];
       const Node& to = arc.to == kNone ? none : d.nodes[arc.to];
-      if (with_boxes) g.box[a] = to_float_outward(arc_box(arc, from, to));
+      if (with_boxes) g.box[a] = to_float_outward(arc_bounds(arc, from, to));
       if (const Circle* c = std::get_if<Circle>(&arc.curve)) {
         const double sense = arc.ccw ? 1.0 : -1.0;
         double sweep = kTwoPi;
@@ -220,85 +211,6 @@ TracingGeometry tracing_geometry(const Diagram& d, bool with_boxes) {
       }
     }
   });
-  return g;
-}
-
-// Boxes in a uniform grid of cells, stored in compressed rows (cell_begin[c] .. cell_begin[c+1]
-// index into items). Items with an unbounded or a large box are kept apart in `always`; a query
-// tests those and the items of its cells.
-struct BoxGrid {
-  double x0 = 0, y0 = 0, cw = 1, ch = 1;
-  int nx = 0, ny = 0;
-  LargeVector<int> cell_begin, items, always;
-
-  // Clamped to the grid before the conversion (far points would overflow an int; NaN -> 0).
-  static int clamp_index(double c, int n) { return !(c > 0) ? 0 : c >= n - 1 ? n - 1 : static_cast<int>(c); }
-  int column(double x) const { return clamp_index(std::floor((x - x0) / cw), nx); }
-  int row(double y) const { return clamp_index(std::floor((y - y0) / ch), ny); }
-  std::span<const int> cell(int i, int j) const {
-    const std::size_t c = static_cast<std::size_t>(j) * nx + i;
-    return {items.data() + cell_begin[c], items.data() + cell_begin[c + 1]};
-  }
-};
-
-// A grid of about `target` cells over `area` (boxes reaching outside it land in the border cells).
-// `box_of(k)` gives the box of item k < n; it is called twice per item (count, then fill), so the
-// boxes need no storage of their own. Boxes covering more than `max_cells` cells go to `always`.
-template <class BoxOf>
-BoxGrid make_grid(std::size_t n, BoxOf&& box_of, Box area, std::size_t target, long long max_cells) {
-  BoxGrid g;
-  const int side = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(target))), 1, 2048);
-  if (!is_finite(area)) {
-    for (std::size_t k = 0; k < n; ++k) g.always.push_back(static_cast<int>(k));
-    return g;
-  }
-  g.nx = g.ny = side;
-  g.x0 = area[0], g.y0 = area[1];
-  g.cw = std::max((area[2] - area[0]) / side, 1e-300);
-  g.ch = std::max((area[3] - area[1]) / side, 1e-300);
-  const std::size_t cells = static_cast<std::size_t>(side) * side;
-  auto for_cells = [&](const Box& b, auto&& f) {
-    const int i0 = g.column(b[0]), i1 = g.column(b[2]), j0 = g.row(b[1]), j1 = g.row(b[3]);
-    for (int j = j0; j <= j1; ++j)
-      for (int i = i0; i <= i1; ++i) f(static_cast<std::size_t>(j) * side + i);
-  };
-  // Boxes that are unbounded or would cover more than max_cells cells (faces reaching far out:
-  // the grid spans the central nodes only) are kept in `always`, tested by every query.
-  auto gridded = [&](const Box& b) {
-    if (!is_finite(b)) return false;
-    const long long cells_covered = static_cast<long long>(g.column(b[2]) - g.column(b[0]) + 1) * (g.row(b[3]) - g.row(b[1]) + 1);
-    return cells_covered <= max_cells;
-  };
-  // Counted and filled on both cores, each worker over its own contiguous range of items; within
-  // a cell the first range's items come first, so rows are in item order as a sequential fill
-  // makes them. `always` is in item order too.
-  const int workers = engine::worker_count(n);
-  std::vector<LargeVector<int>> count(workers);
-  std::vector<std::vector<int>> unbounded(workers);
-  engine::parallel_chunks(n, workers, [&](std::size_t b, std::size_t e, int w) {
-    count[w].assign(cells, 0);
-    for (std::size_t k = b; k < e; ++k) {
-      const Box box = box_of(k);
-      if (gridded(box)) for_cells(box, [&](std::size_t c) { ++count[w][c]; });
-      else if (box[0] <= box[2]) unbounded[w].push_back(static_cast<int>(k));
-    }
-  });
-  g.cell_begin.assign(cells + 1, 0);
-  for (std::size_t c = 0; c < cells; ++c) {
-    int total = 0;
-    for (int w = 0; w < workers; ++w) {
-      const int in_cell = count[w][c];
-      count[w][c] = g.cell_begin[c] + total;  // where worker w starts writing in cell c
-      total += in_cell;
-    }
-    g.cell_begin[c + 1] = g.cell_begin[c] + total;
-  }
-  g.items.resize(g.cell_begin.back());
-  engine::parallel_chunks(n, workers, [&](std::size_t b, std::size_t e, int w) {
-    for (std::size_t k = b; k < e; ++k)
-      if (const Box box = box_of(k); gridded(box)) for_cells(box, [&](std::size_t c) { g.items[count[w][c]++] = static_cast<int>(k); });
-  });
-  for (const auto& list : unbounded) g.always.insert(g.always.end(), list.begin(), list.end());
   return g;
 }
 
@@ -656,7 +568,7 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
       LargeVector<Box> boxes(outer_area.size(), kEmptyBox);
       for (std::size_t f = 0; f < outer_area.size(); ++f)
         for (const HalfArc& h : d.faces[f].boundaries.front()) {
-          const Box b = arc_box(d.arcs[h.arc], d.nodes);
+          const Box b = arc_bounds(d.arcs[h.arc], d.nodes);
           boxes[f] = {std::min(boxes[f][0], b[0]), std::min(boxes[f][1], b[1]), std::max(boxes[f][2], b[2]),
                       std::max(boxes[f][3], b[3])};
         }
