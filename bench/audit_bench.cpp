@@ -1,6 +1,6 @@
 // audit_bench: accuracy and speed of `covmap audit` on generated maps (docs/ACCURACY.md,
 // docs/PERFORMANCE.md). For each configuration it generates a best-server map of random sensors
-// (datasets/generate), runs the whole pipeline in memory through the same readers as the program
+// (tools/mapgen), runs the whole pipeline in memory through the same readers as the program
 // (map and sensors written as GeoJSON and read back), and compares with the truth:
 //   position error of every sensor owning ≥ 20 bins, in bins and in mean sensor spacings;
 //   weight error (log ratio after removing the common factor) in dB (alpha = 3.5);
@@ -22,12 +22,12 @@
 #include <string>
 #include <vector>
 
-#include "datasets/generate/coverage_map_files.h"
-#include "datasets/generate/coverage_map_generator.h"
-#include "datasets/generate/site_layouts.h"
+#include "tools/mapgen/coverage_map_files.h"
+#include "tools/mapgen/coverage_map_generator.h"
+#include "tools/mapgen/site_layouts.h"
 #include "io/coverage_map.h"
 #include "io/reported_sensors.h"
-#include "recognition/audit.h"
+#include "audit/audit.h"
 
 namespace {
 
@@ -95,16 +95,16 @@ int main(int argc, char** argv) {
     so.alpha = alpha;
     so.planar = !lonlat;
     so.projection = map.projection ? &*map.projection : nullptr;
-    std::vector<recognition::ReportedSensorValues> reported;
+    std::vector<audit::ReportedSensorValues> reported;
     for (const auto& s : io::read_reported_sensors(dir / mapgen::kSensorsFileName, so))
       reported.push_back({s.id, s.position, s.weight, s.tx_power_dbm, s.position_sigma_m, s.power_sigma_db});
     fs::remove_all(dir);
     cells += map.cells.size();
     vertices += map.vertex_count;
-    recognition::AuditOptions ao;
+    audit::AuditOptions ao;
     ao.alpha = alpha;
     const auto t0 = std::chrono::steady_clock::now();
-    const recognition::AuditResult r = recognition::audit(map.cells, reported, ao);
+    const audit::AuditResult r = audit::audit(map.cells, reported, ao);
     seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
     iou_sum += r.refined_agreement.mean_iou;
     for (const auto& m : r.messages)
@@ -124,7 +124,7 @@ int main(int argc, char** argv) {
       if (!s.in_map || !truth.count(s.id)) continue;
       const auto& t = *truth[s.id];
       if (t.bins >= 20) {
-        voronoi::Point p = s.position;
+        Point p = s.position;
         if (generated.projection) {
           const auto ll = map.projection->inverse(p);
           p = generated.projection->forward({ll.lon, ll.lat});

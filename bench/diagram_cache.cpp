@@ -9,11 +9,11 @@
 namespace covmap::bench {
 namespace {
 
-static_assert(std::is_trivially_copyable_v<voronoi::Node>);
-static_assert(std::is_trivially_copyable_v<voronoi::Arc>);
+static_assert(std::is_trivially_copyable_v<Node>);
+static_assert(std::is_trivially_copyable_v<Arc>);
 
 // Changes with the layout of Node and Arc, so that a cache from another build is not misread.
-constexpr std::uint64_t kMagic = 0xc0fe'0000'0000'0000ULL | (sizeof(voronoi::Node) << 16) | sizeof(voronoi::Arc);
+constexpr std::uint64_t kMagic = 0xc0fe'0000'0000'0000ULL | (sizeof(Node) << 16) | sizeof(Arc);
 
 template <class T>
 void write_vector(std::ofstream& out, const std::vector<T>& v) {
@@ -32,7 +32,7 @@ bool read_vector(std::ifstream& in, std::vector<T>& v) {
 
 }  // namespace
 
-void save_graph(const voronoi::Diagram& d, const std::string& path) {
+void save_graph(const Diagram& d, const std::string& path) {
   const std::string tmp = path + ".tmp";
   {
     std::ofstream out(tmp, std::ios::binary);
@@ -44,11 +44,11 @@ void save_graph(const voronoi::Diagram& d, const std::string& path) {
   std::filesystem::rename(tmp, path);
 }
 
-std::optional<voronoi::Diagram> load_graph(const std::string& path) {
+std::optional<Diagram> load_graph(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::uint64_t magic = 0;
   if (!in || !in.read(reinterpret_cast<char*>(&magic), sizeof magic) || magic != kMagic) return std::nullopt;
-  voronoi::Diagram d;
+  Diagram d;
   if (!read_vector(in, d.nodes) || !read_vector(in, d.arcs)) return std::nullopt;
   return d;
 }

@@ -7,14 +7,14 @@
 #include <optional>
 #include <string>
 
-#include "voronoi/diagram.h"
+#include "core/diagram.h"
 
 namespace covmap::bench {
 
 // Nodes and arcs of `d` written to `path` (atomically, through a temporary file).
-void save_graph(const voronoi::Diagram& d, const std::string& path);
+void save_graph(const Diagram& d, const std::string& path);
 
 // The graph stored at `path`, or nullopt when there is none or it is from another build.
-std::optional<voronoi::Diagram> load_graph(const std::string& path);
+std::optional<Diagram> load_graph(const std::string& path);
 
 }  // namespace covmap::bench

@@ -31,7 +31,7 @@ namespace {
 // Every reconstructed site against the nearest original one (a grid over the unit square, where
 // make_sites puts them): the largest distance, and the largest relative difference of weights
 // normalised to a largest of 1 (the heaviest site always owns a face, so both sets share it).
-std::pair<double, double> reconstruction_error(const std::vector<covmap::voronoi::Site>& truth,
+std::pair<double, double> reconstruction_error(const std::vector<covmap::Site>& truth,
                                                const covmap::recognition::Reconstruction& r) {
   const int side = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(truth.size()))));
   std::vector<std::vector<int>> cell(static_cast<std::size_t>(side) * side);
@@ -103,9 +103,9 @@ int main(int argc, char** argv) {
     const auto n = static_cast<std::size_t>(std::stod(text));
     const std::string cache_file = cache_dir.empty() ? std::string()
         : cache_dir + "/mwvd-" + dist->name() + "-" + std::to_string(n) + "-" + std::to_string(seed) + ".bin";
-    std::optional<covmap::voronoi::Diagram> cached;
+    std::optional<covmap::Diagram> cached;
     if (!cache_file.empty()) cached = covmap::bench::load_graph(cache_file);
-    covmap::voronoi::Diagram d;
+    covmap::Diagram d;
     if (cached) {
       d = std::move(*cached);
     } else {
@@ -119,7 +119,7 @@ int main(int argc, char** argv) {
     covmap::recognition::Reconstruction r1;
     double s1 = INFINITY;
     for (int k = 0; k < repeat; ++k) {
-      covmap::voronoi::Diagram input = d;  // moved in, as a caller done with its graph does
+      covmap::Diagram input = d;  // moved in, as a caller done with its graph does
       rusage before{}, after{};
       getrusage(RUSAGE_SELF, &before);
       const auto t0 = Clock::now();

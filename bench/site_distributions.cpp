@@ -65,12 +65,12 @@ std::optional<Distribution> parse_distribution(const std::string& text, std::str
   return std::nullopt;
 }
 
-std::vector<voronoi::Site> make_sites(std::size_t n, const Distribution& dist, std::uint64_t seed) {
+std::vector<Site> make_sites(std::size_t n, const Distribution& dist, std::uint64_t seed) {
   // Positions: uniform in [0,1)², redrawn until pairwise distinct (a repeat of a 53-bit pair is
   // astronomically unlikely, but the engine rejects it, so make it impossible).
   auto position_rng = stream(seed, n, 0);
   std::set<std::pair<double, double>> seen;
-  std::vector<voronoi::Site> sites(n);
+  std::vector<Site> sites(n);
   for (std::size_t i = 0; i < n; ++i) {
     double x = 0.0, y = 0.0;
     do {

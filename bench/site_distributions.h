@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "voronoi/diagram.h"
+#include "core/diagram.h"
 
 namespace covmap::bench {
 
@@ -38,6 +38,6 @@ struct Distribution {
 // "uniform12", "uniform01", "correlated", "correlated:A:B"; nullopt (and a message) otherwise.
 std::optional<Distribution> parse_distribution(const std::string& text, std::string* error);
 
-std::vector<voronoi::Site> make_sites(std::size_t n, const Distribution& dist, std::uint64_t seed);
+std::vector<Site> make_sites(std::size_t n, const Distribution& dist, std::uint64_t seed);
 
 }  // namespace covmap::bench

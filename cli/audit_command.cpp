@@ -8,10 +8,10 @@
 #include <sstream>
 
 #include "cli/cli_support.h"
-#include "io/audit_report.h"
+#include "report/audit_report.h"
 #include "io/coverage_map.h"
 #include "io/reported_sensors.h"
-#include "recognition/audit.h"
+#include "audit/audit.h"
 
 namespace covmap::cli {
 namespace {
@@ -66,6 +66,9 @@ void setup_audit(CLI::App& app, AuditCommandOptions& options) {
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("-o,--output", options.output_dir, "output directory (created or replaced as a whole)")->required();
   cmd->add_flag("-q,--quiet", options.quiet, "no progress messages");
+  cmd->add_option("--threads", options.threads, "refinement threads (1 gives the same numbers on every run)")
+      ->check(CLI::Range(1, 64))
+      ->capture_default_str();
   cmd->callback([&options]() { std::exit(run_audit(options)); });
 }
 
@@ -82,7 +85,7 @@ int run_audit(const AuditCommandOptions& options) {
     mo.sensor_property = options.sensor_property;
     mo.planar = options.planar;
     const io::CoverageMap map = io::read_coverage_map(options.map_path, mo);
-    std::vector<recognition::ReportedSensorValues> reported;
+    std::vector<audit::ReportedSensorValues> reported;
     if (!options.sensors_path.empty()) {
       io::ReportedSensorOptions so;
       so.alpha = options.alpha;
@@ -92,28 +95,29 @@ int run_audit(const AuditCommandOptions& options) {
         reported.push_back({r.id, r.position, r.weight, r.tx_power_dbm, r.position_sigma_m, r.power_sigma_db});
     }
     say("map read: " + std::to_string(map.cells.size()) + " cells, " + std::to_string(map.vertex_count) + " vertices");
-    recognition::AuditOptions ao;
+    audit::AuditOptions ao;
     ao.alpha = options.alpha;
     ao.cleaning.snap_distance = options.snap;
+    ao.threads = options.threads;
     ao.progress = [&](const std::string& stage, double f) { say(stage + ", " + std::to_string(static_cast<int>(100 * f)) + " %"); };
-    const recognition::AuditResult result = recognition::audit(map.cells, reported, ao);
-    io::AuditReportContext context{result, map, options.map_path, options.sensors_path, options.alpha,
+    const audit::AuditResult result = audit::audit(map.cells, reported, ao);
+    report::AuditReportContext context{result, map, options.map_path, options.sensors_path, options.alpha,
                                    options.command_line, &ao};
     std::ostringstream json, html, sensors, diagram;
     say("writing report.json");
-    io::write_audit_json(context, json);
+    report::write_audit_json(context, json);
     say("writing report.html");
-    io::write_audit_html(context, html);
+    report::write_audit_html(context, html);
     say("writing sensors.geojson");
-    io::write_sensors_geojson(context, sensors);
+    report::write_sensors_geojson(context, sensors);
     say("writing diagram.geojson");
-    io::write_diagram_geojson(context, diagram);
+    report::write_diagram_geojson(context, diagram);
     say("moving the reports into place");
     write_directory(options.output_dir, {{"report.json", json.str()},
                                          {"report.html", html.str()},
                                          {"sensors.geojson", sensors.str()},
                                          {"diagram.geojson", diagram.str()}});
-    const io::AuditVerdictCounts counts = io::count_verdicts(result.sensors);
+    const report::AuditVerdictCounts counts = report::count_verdicts(result.sensors);
     std::cout << options.map_path << ": " << result.cleaned.sensors.size() << " sensors in the map, "
               << counts.reported << " reported: " << counts.consistent << " consistent, " << counts.inconsistent
               << " inconsistent, " << counts.not_in_map << " not in the map; refined diagram agrees with the map on "

@@ -20,6 +20,7 @@ struct AuditCommandOptions {
   bool planar = false;               // map and sensors in planar metres, not lon/lat
   double snap = 0.0;                 // cleaning snap distance (0: estimated)
   bool quiet = false;                // no progress on stderr
+  int threads = 2;                   // refinement threads (1: reproducible numbers)
   std::string command_line;          // recorded in the reports
 };
 

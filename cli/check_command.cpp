@@ -6,7 +6,7 @@
 #include "cli/cli_support.h"
 #include "io/diagram_json.h"
 #include "io/sites_io.h"
-#include "voronoi/check/check.h"
+#include "check/check.h"
 
 namespace covmap::cli {
 
@@ -32,7 +32,7 @@ void setup_check(CLI::App& app, CheckCommandOptions& options) {
 
 int run_check(const CheckCommandOptions& options) {
   return guarded([&]() {
-    voronoi::Diagram diagram = io::read_diagram_json(options.diagram_path);
+    Diagram diagram = io::read_diagram_json(options.diagram_path);
     if (!options.sites_path.empty()) {
       io::SiteTable table = io::read_sites(options.sites_path);
       if (table.sites.size() != diagram.sites.size() && !diagram.sites.empty())
@@ -41,7 +41,7 @@ int run_check(const CheckCommandOptions& options) {
                                     std::to_string(diagram.sites.size()));
       diagram.sites = std::move(table.sites);
     }
-    voronoi::CheckOptions check;
+    check::CheckOptions check;
     check.boundary_probes = options.probes;
     check.samples_per_arc = options.samples;
     check.relative_tolerance = options.tolerance;
@@ -49,13 +49,13 @@ int run_check(const CheckCommandOptions& options) {
     check.max_reported = std::max(options.show, 1);
     std::string why;
     if (!check.is_valid(&why)) throw std::invalid_argument(why);
-    const voronoi::CheckReport report = voronoi::check_diagram(diagram, check);
+    const check::CheckReport report = check::check_diagram(diagram, check);
     std::cout << options.diagram_path << ": " << report.brief() << "\n";
     int listed = 0;
     std::cout << std::setprecision(17);
     for (const auto& v : report.violations) {
       if (listed++ >= options.show) break;
-      std::cout << "  " << voronoi::to_string(v.kind) << " at (" << v.x << ", " << v.y
+      std::cout << "  " << check::to_string(v.kind) << " at (" << v.x << ", " << v.y
                 << "): " << v.message << "\n";
     }
     return report.ok() ? kOk : kViolations;

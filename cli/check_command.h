@@ -1,5 +1,5 @@
 // covmap check DIAGRAM.json [--sites SITES]: verify any arc graph against the MWVD definition with
-// the independent checker (voronoi/check), never the engine.
+// the independent checker (check/), never the engine.
 #pragma once
 
 #include <CLI/CLI.hpp>

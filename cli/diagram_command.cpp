@@ -9,7 +9,7 @@
 #include "io/diagram_json.h"
 #include "io/polygon_io.h"
 #include "io/sites_io.h"
-#include "io/svg.h"
+#include "report/svg.h"
 #include "voronoi/clip.h"
 #include "voronoi/engine.h"
 
@@ -36,7 +36,7 @@ int run_diagram(const DiagramOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     const io::SiteTable table = io::read_sites(options.sites_path);
     voronoi::BuildStats stats;
-    voronoi::Diagram diagram;
+    Diagram diagram;
     try {
       diagram = voronoi::build_diagram(table.sites, &stats);
     } catch (const voronoi::InvalidSites& e) {
@@ -51,7 +51,7 @@ int run_diagram(const DiagramOptions& options) {
     // Render everything before writing anything, so a failure leaves no partial output.
     std::ostringstream json, svg;
     io::write_diagram_json(diagram, json);
-    if (!options.svg_path.empty()) io::write_svg(diagram, svg);
+    if (!options.svg_path.empty()) report::write_svg(diagram, svg);
     io::write_file_atomically(options.output_path, [&](std::ostream& out) { out << json.str(); });
     if (!options.svg_path.empty())
       io::write_file_atomically(options.svg_path, [&](std::ostream& out) { out << svg.str(); });

@@ -8,8 +8,8 @@
 #include "cli/cli_support.h"
 #include "io/atomic_file.h"
 #include "io/diagram_json.h"
-#include "io/reconstruction_json.h"
-#include "io/svg.h"
+#include "report/reconstruction_json.h"
+#include "report/svg.h"
 #include "recognition/tolerances.h"
 #include "recognition/compare.h"
 #include "recognition/graph_repair.h"
@@ -36,9 +36,9 @@ void setup_recognize(CLI::App& app, RecognizeOptions& options) {
 
 int run_recognize(const RecognizeOptions& options) {
   return guarded([&]() {
-    voronoi::Diagram graph = io::read_diagram_json(options.graph_path, io::ArcLabels::kIgnored);
+    Diagram graph = io::read_diagram_json(options.graph_path, io::ArcLabels::kIgnored);
     graph.sites.clear();
-    for (auto& a : graph.arcs) a.left_site = a.right_site = voronoi::kNone;
+    for (auto& a : graph.arcs) a.left_site = a.right_site = kNone;
     // Nodes of degree 2 on one curve are no nodes of a bisector graph: repaired and reported.
     double extent = 0;
     for (const auto& n : graph.nodes) extent = std::max({extent, std::abs(n.x), std::abs(n.y)});
@@ -50,9 +50,9 @@ int run_recognize(const RecognizeOptions& options) {
     ro.relative_tolerance = options.tolerance;
     const recognition::Reconstruction r = recognition::recognize(std::move(graph), ro);
     std::ostringstream json, svg;
-    if (!options.output_path.empty()) io::write_reconstruction_json(r, json);
+    if (!options.output_path.empty()) report::write_reconstruction_json(r, json);
     if (!options.svg_path.empty() && r.bisector_graph)
-      io::write_svg(voronoi::build_diagram(r.sites), svg);
+      report::write_svg(voronoi::build_diagram(r.sites), svg);
     if (!options.output_path.empty())
       io::write_file_atomically(options.output_path, [&](std::ostream& o) { o << json.str(); });
     if (!options.svg_path.empty() && r.bisector_graph)
@@ -93,8 +93,8 @@ void setup_compare(CLI::App& app, CompareCommandOptions& options) {
 
 int run_compare(const CompareCommandOptions& options) {
   return guarded([&]() {
-    const voronoi::Diagram a = io::read_diagram_json(options.a_path, io::ArcLabels::kIgnored);
-    const voronoi::Diagram b = io::read_diagram_json(options.b_path, io::ArcLabels::kIgnored);
+    const Diagram a = io::read_diagram_json(options.a_path, io::ArcLabels::kIgnored);
+    const Diagram b = io::read_diagram_json(options.b_path, io::ArcLabels::kIgnored);
     recognition::CompareOptions co;
     co.relative_tolerance = options.tolerance;
     const recognition::Comparison c = recognition::compare_graphs(a, b, co);

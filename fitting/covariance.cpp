@@ -155,7 +155,7 @@ CovarianceOutcome site_covariance(std::vector<SiteBlock>& blocks, const Layout& 
   CovarianceOutcome outcome;
   outcome.uncertainty.resize(blocks.size());
   for (std::size_t i = 0; i < blocks.size(); ++i) {
-    if (layout.group[i] != voronoi::kNone) {
+    if (layout.group[i] != kNone) {
       outcome.uncertainty[i].log_weight_reference = layout.group_reference[layout.group[i]];
     }
   }

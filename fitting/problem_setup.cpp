@@ -24,23 +24,23 @@ class Groups {
 
 }  // namespace
 
-Layout make_layout(std::span<const voronoi::Site> initial, std::span<const BoundarySample> samples,
+Layout make_layout(std::span<const Site> initial, std::span<const BoundarySample> samples,
                    std::span<const SitePrior> priors) {
   const std::size_t n = initial.size();
   Layout layout;
   layout.sample_count.assign(n, 0);
-  layout.group.assign(n, voronoi::kNone);
+  layout.group.assign(n, kNone);
   Groups groups(n);
   for (const BoundarySample& s : samples) {
     ++layout.sample_count[s.site_a];
     ++layout.sample_count[s.site_b];
     groups.join(s.site_a, s.site_b);
   }
-  std::vector<int> group_of_root(n, voronoi::kNone);
+  std::vector<int> group_of_root(n, kNone);
   for (std::size_t i = 0; i < n; ++i) {
     if (layout.sample_count[i] == 0) continue;
     int& g = group_of_root[groups.find(static_cast<int>(i))];
-    if (g == voronoi::kNone) {
+    if (g == kNone) {
       g = static_cast<int>(layout.group_reference.size());
       layout.group_reference.push_back(static_cast<int>(i));
     }
@@ -50,14 +50,14 @@ Layout make_layout(std::span<const voronoi::Site> initial, std::span<const Bound
   }
   std::vector<bool> weight_prior(layout.group_reference.size(), false);
   for (const SitePrior& p : priors) {
-    if (p.log_weight_sigma > 0 && layout.group[p.site] != voronoi::kNone) weight_prior[layout.group[p.site]] = true;
+    if (p.log_weight_sigma > 0 && layout.group[p.site] != kNone) weight_prior[layout.group[p.site]] = true;
   }
   std::size_t observed = 0;
   for (std::size_t i = 0; i < n; ++i) observed += layout.sample_count[i] > 0 ? 1 : 0;
   layout.free_parameters = kSiteBlockSize * observed;
   for (std::size_t g = 0; g < weight_prior.size(); ++g) {
     if (weight_prior[g]) {
-      layout.group_reference[g] = voronoi::kNone;
+      layout.group_reference[g] = kNone;
     } else {
       --layout.free_parameters;
     }
@@ -65,10 +65,10 @@ Layout make_layout(std::span<const voronoi::Site> initial, std::span<const Bound
   return layout;
 }
 
-std::vector<SiteBlock> initial_blocks(std::span<const voronoi::Site> initial) {
+std::vector<SiteBlock> initial_blocks(std::span<const Site> initial) {
   std::vector<SiteBlock> blocks;
   blocks.reserve(initial.size());
-  for (const voronoi::Site& s : initial) blocks.push_back({s.x, s.y, std::log(s.weight)});
+  for (const Site& s : initial) blocks.push_back({s.x, s.y, std::log(s.weight)});
   return blocks;
 }
 
@@ -103,7 +103,7 @@ BuiltProblem build_problem(std::vector<SiteBlock>& blocks, const Layout& layout,
   }
   std::vector<char> is_reference(blocks.size(), 0);
   for (int reference : layout.group_reference) {
-    if (reference == voronoi::kNone) continue;
+    if (reference == kNone) continue;
     is_reference[reference] = 1;
     problem.SetManifold(blocks[reference].data(), new ceres::SubsetManifold(kSiteBlockSize, {kLogWeightIndex}));
   }

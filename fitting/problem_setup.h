@@ -29,10 +29,10 @@ struct Layout {
   std::size_t free_parameters = 0;   // tangent dimension of the problem
 };
 
-Layout make_layout(std::span<const voronoi::Site> initial, std::span<const BoundarySample> samples,
+Layout make_layout(std::span<const Site> initial, std::span<const BoundarySample> samples,
                    std::span<const SitePrior> priors);
 
-std::vector<SiteBlock> initial_blocks(std::span<const voronoi::Site> initial);
+std::vector<SiteBlock> initial_blocks(std::span<const Site> initial);
 
 struct BuiltProblem {
   std::unique_ptr<ceres::Problem> problem;

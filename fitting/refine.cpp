@@ -86,7 +86,7 @@ void settle_unobserved(std::vector<SiteBlock>& blocks, const detail::Layout& lay
       s.sigma_x = x.sigma();
       s.sigma_y = y.sigma();
       s.sigma_log_weight = u.sigma();
-      s.log_weight_reference = voronoi::kNone;
+      s.log_weight_reference = kNone;
       s.available = x.any() && u.any();
     }
   }
@@ -94,7 +94,7 @@ void settle_unobserved(std::vector<SiteBlock>& blocks, const detail::Layout& lay
 
 }  // namespace
 
-RefineResult refine_sites(std::span<const voronoi::Site> initial, std::span<const BoundarySample> samples,
+RefineResult refine_sites(std::span<const Site> initial, std::span<const BoundarySample> samples,
                           std::span<const SitePrior> priors, const RefineOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   std::string error;

@@ -37,13 +37,13 @@
 #include <vector>
 
 #include "fitting/tolerances.h"
-#include "voronoi/diagram.h"
+#include "core/diagram.h"
 
 namespace covmap::fitting {
 
 // A point observed on the boundary between the cells of sites a and b (indices into the sites).
 struct BoundarySample {
-  voronoi::Point p;
+  Point p;
   int site_a = 0;
   int site_b = 0;
   double sigma = 1.0;  // 1-σ of p's distance from the boundary, in the units of p
@@ -53,7 +53,7 @@ struct BoundarySample {
 // An optional prior from a reported sensor (its stated precision, taken as calibrated).
 struct SitePrior {
   int site = 0;
-  voronoi::Point position;
+  Point position;
   double position_sigma = 0.0;  // <= 0: no position prior
   double log_weight = 0.0;      // natural log, in the units of the initial weights
   double log_weight_sigma = 0.0;  // <= 0: no weight prior
@@ -111,7 +111,7 @@ struct SiteUncertainty {
   // the scale is fixed by weight priors (reference kNone). Dividing all weights by the largest
   // shifts every log weight by one number, so this is not changed by the normalisation.
   double sigma_log_weight = 0.0;
-  int log_weight_reference = voronoi::kNone;
+  int log_weight_reference = kNone;
   // False when the data (and priors) do not determine the site (its sigmas are then +inf, for a
   // site without samples only the undetermined parts), when the covariance could not be computed
   // or compute_covariance is off (sigmas 0).
@@ -145,7 +145,7 @@ struct RefineSummary {
 };
 
 struct RefineResult {
-  std::vector<voronoi::Site> sites;             // refined; weights normalized so the largest is 1
+  std::vector<Site> sites;             // refined; weights normalized so the largest is 1
   std::vector<SiteUncertainty> uncertainty;     // per site
   std::vector<SiteStatus> status;               // per site
   std::vector<double> sample_residual;          // signed geometric distance per sample, units of p;
@@ -153,7 +153,7 @@ struct RefineResult {
   RefineSummary summary;
 };
 
-RefineResult refine_sites(std::span<const voronoi::Site> initial, std::span<const BoundarySample> samples,
+RefineResult refine_sites(std::span<const Site> initial, std::span<const BoundarySample> samples,
                           std::span<const SitePrior> priors = {}, const RefineOptions& options = {});
 
 }  // namespace covmap::fitting

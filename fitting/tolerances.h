@@ -48,4 +48,8 @@ inline constexpr double kMinVarianceFactor = 1e-40;
 // weight underflows and the residuals turn into NaN.
 inline constexpr double kLogWeightExcursion = 30.0;
 
+// A sensor's 3×3 information block (local_uncertainty.h) is singular when its smallest eigenvalue
+// is below this fraction of its largest: the sensor is then reported undetermined.
+inline constexpr double kLocalInformationConditioning = 1e-12;
+
 }  // namespace covmap::fitting::tolerance

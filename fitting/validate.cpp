@@ -37,10 +37,10 @@ class Problems {
   std::vector<std::string> list_;
 };
 
-void check_sites(std::span<const voronoi::Site> sites, Problems& problems) {
+void check_sites(std::span<const Site> sites, Problems& problems) {
   if (sites.empty()) problems.add("initial", "no sites");
   for (std::size_t i = 0; i < sites.size(); ++i) {
-    const voronoi::Site& s = sites[i];
+    const Site& s = sites[i];
     const std::string item = "initial[" + std::to_string(i) + "]" + (s.id.empty() ? "" : " (site '" + s.id + "')");
     if (!std::isfinite(s.x) || !std::isfinite(s.y)) {
       problems.add(item, "position must be finite (got " + number(s.x) + ", " + number(s.y) + ")");
@@ -59,7 +59,7 @@ bool check_index(int index, std::size_t sites, const std::string& item, const ch
   return false;
 }
 
-void check_samples(std::span<const voronoi::Site> sites, std::span<const BoundarySample> samples, Problems& problems) {
+void check_samples(std::span<const Site> sites, std::span<const BoundarySample> samples, Problems& problems) {
   for (std::size_t i = 0; i < samples.size(); ++i) {
     const BoundarySample& s = samples[i];
     const std::string item = "samples[" + std::to_string(i) + "] (chain " + std::to_string(s.chain) + ")";
@@ -108,7 +108,7 @@ void check_priors(std::size_t sites, std::span<const SitePrior> priors, Problems
 
 }  // namespace
 
-void validate_inputs(std::span<const voronoi::Site> initial, std::span<const BoundarySample> samples,
+void validate_inputs(std::span<const Site> initial, std::span<const BoundarySample> samples,
                      std::span<const SitePrior> priors) {
   Problems problems;
   check_sites(initial, problems);

@@ -15,7 +15,7 @@ namespace covmap::fitting::detail {
 inline constexpr std::size_t kMaxListed = 20;
 
 // Throws std::invalid_argument when any input is malformed; returns normally otherwise.
-void validate_inputs(std::span<const voronoi::Site> initial, std::span<const BoundarySample> samples,
+void validate_inputs(std::span<const Site> initial, std::span<const BoundarySample> samples,
                      std::span<const SitePrior> priors);
 
 }  // namespace covmap::fitting::detail

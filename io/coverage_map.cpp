@@ -20,7 +20,6 @@ namespace {
 
 using detail::FieldError;
 using detail::Json;
-using voronoi::Point;
 
 using RawRing = std::vector<Point>;            // positions as written, the closing one included
 using RawPolygon = std::vector<RawRing>;       // outer ring first

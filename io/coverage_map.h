@@ -45,15 +45,14 @@
 #include <vector>
 
 #include "io/local_projection.h"
-#include "recognition/coverage_cells.h"
-#include "voronoi/diagram.h"
+#include "core/coverage_cells.h"
+#include "core/diagram.h"
 
 namespace covmap::io {
 
-// The plain map types live in recognition/coverage_cells.h (the cleaning step reads them).
-using Ring = recognition::Ring;
-using MapPolygon = recognition::CellPolygon;
-using MapCell = recognition::CoverageCell;
+// The plain map types live in core/coverage_cells.h (the cleaning step reads them).
+using MapPolygon = CellPolygon;
+using MapCell = CoverageCell;
 
 struct CoverageMap {
   std::vector<MapCell> cells;                 // planar metres (projected when geographic)

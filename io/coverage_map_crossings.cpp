@@ -12,7 +12,6 @@
 namespace covmap::io::detail {
 namespace {
 
-using voronoi::Point;
 
 // Grid tuning. These trade speed only; the answer is exact whatever their values.
 // Average number of cells a long edge may cover before the cells are enlarged: keeps the

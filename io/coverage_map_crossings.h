@@ -17,7 +17,7 @@
 #include <span>
 #include <vector>
 
-#include "voronoi/diagram.h"
+#include "core/diagram.h"
 
 namespace covmap::io::detail {
 
@@ -34,11 +34,11 @@ struct Crossing {
 };
 
 // Whether the segments p1-p2 and q1-q2 cross properly (see above). Exact.
-bool properly_cross(voronoi::Point p1, voronoi::Point p2, voronoi::Point q1, voronoi::Point q2);
+bool properly_cross(Point p1, Point p2, Point q1, Point q2);
 
 // The crossing with the smallest (first, second) among all proper crossings between edges of the
 // rings (within one ring or between two), or nullopt if there is none. Rings are implicitly closed,
 // have at least 3 vertices and finite coordinates. The answer does not depend on the grid.
-std::optional<Crossing> first_crossing(std::span<const std::vector<voronoi::Point>> rings);
+std::optional<Crossing> first_crossing(std::span<const std::vector<Point>> rings);
 
 }  // namespace covmap::io::detail

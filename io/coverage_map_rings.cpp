@@ -10,7 +10,6 @@
 namespace covmap::io::detail {
 namespace {
 
-using voronoi::Point;
 
 bool same(Point p, Point q) { return p.x == q.x && p.y == q.y; }
 

@@ -20,8 +20,8 @@ namespace covmap::io::detail {
 
 // One ring of a polygon as it will be checked.
 struct RingInput {
-  std::vector<voronoi::Point> read;       // positions as in the file (lon/lat or x/y), closing one included
-  std::vector<voronoi::Point> projected;  // the same positions in the plane, index for index
+  std::vector<Point> read;       // positions as in the file (lon/lat or x/y), closing one included
+  std::vector<Point> projected;  // the same positions in the plane, index for index
 };
 
 // Where a polygon sits in its feature, for messages: "outer ring", "hole 2 of polygon 1".

@@ -15,7 +15,6 @@ namespace {
 
 using detail::FieldError;
 using detail::Json;
-using voronoi::kNone;
 // Ordered so the file reads in the documented member order.
 using Out = nlohmann::ordered_json;
 
@@ -31,16 +30,16 @@ double checked(double v, const std::string& path) {
 
 Out index_or_null(int i) { return i == kNone ? Out(nullptr) : Out(i); }
 
-Out arc_json(const voronoi::Arc& arc, const std::string& path) {
+Out arc_json(const Arc& arc, const std::string& path) {
   Out out;
   out["from"] = index_or_null(arc.from);
   out["to"] = index_or_null(arc.to);
-  if (const auto* c = std::get_if<voronoi::Circle>(&arc.curve)) {
+  if (const auto* c = std::get_if<Circle>(&arc.curve)) {
     const std::string at = path + ".circle";
     out["circle"] = Out{{"cx", checked(c->cx, at + ".cx")}, {"cy", checked(c->cy, at + ".cy")},
                         {"r", checked(c->r, at + ".r")}, {"ccw", arc.ccw}};
   } else {
-    const auto& l = std::get<voronoi::Line>(arc.curve);
+    const auto& l = std::get<Line>(arc.curve);
     const std::string at = path + ".line";
     out["line"] = Out{{"x", checked(l.x, at + ".x")}, {"y", checked(l.y, at + ".y")},
                       {"dx", checked(l.dx, at + ".dx")}, {"dy", checked(l.dy, at + ".dy")}};
@@ -50,7 +49,7 @@ Out arc_json(const voronoi::Arc& arc, const std::string& path) {
   return out;
 }
 
-Out face_json(const voronoi::Face& face) {
+Out face_json(const Face& face) {
   Out boundaries = Out::array();
   for (const auto& cycle : face.boundaries) {
     Out steps = Out::array();
@@ -74,7 +73,7 @@ struct Reader {
   const Json& root;
   const std::string& file;
   bool unlabelled = false;  // an arc graph without sites: arcs' "sites" are optional and ignored
-  voronoi::Diagram diagram;
+  Diagram diagram;
 
   const Json& array_member(std::string_view key) {
     const Json& value = detail::member(root, key, "");
@@ -91,7 +90,7 @@ struct Reader {
     }
   }
 
-  voronoi::Curve read_curve(const Json& arc, const std::string& at, bool& ccw) {
+  Curve read_curve(const Json& arc, const std::string& at, bool& ccw) {
     const Json* circle = detail::optional_member(arc, "circle");
     const Json* line = detail::optional_member(arc, "line");
     if ((circle != nullptr) == (line != nullptr)) {
@@ -103,13 +102,13 @@ struct Reader {
     };
     if (circle) {
       const std::string cat = at + ".circle";
-      voronoi::Circle c{number(*circle, cat, "cx"), number(*circle, cat, "cy"), number(*circle, cat, "r")};
+      Circle c{number(*circle, cat, "cx"), number(*circle, cat, "cy"), number(*circle, cat, "r")};
       if (!(c.r > 0)) throw FieldError(cat + ".r", "radius must be positive (got " + detail::format_number(c.r) + ")");
       ccw = detail::boolean(detail::member(*circle, "ccw", cat), cat + ".ccw");
       return c;
     }
     const std::string lat = at + ".line";
-    voronoi::Line l{number(*line, lat, "x"), number(*line, lat, "y"), number(*line, lat, "dx"), number(*line, lat, "dy")};
+    Line l{number(*line, lat, "x"), number(*line, lat, "y"), number(*line, lat, "dx"), number(*line, lat, "dy")};
     if (l.dx == 0 && l.dy == 0) throw FieldError(lat, "direction (dx, dy) must not be zero");
     ccw = true;  // not meaningful for lines; the default keeps round trips exact
     return l;
@@ -122,11 +121,11 @@ struct Reader {
       const std::string at = detail::element_path("arcs", i);
       const Json& a = arcs[i];
       detail::expect_object(a, at);
-      voronoi::Arc arc;
+      Arc arc;
       arc.from = detail::index(detail::member(a, "from", at), at + ".from", nodes, "node", true);
       arc.to = detail::index(detail::member(a, "to", at), at + ".to", nodes, "node", true);
       arc.curve = read_curve(a, at, arc.ccw);
-      if (std::holds_alternative<voronoi::Circle>(arc.curve) && (arc.from == kNone) != (arc.to == kNone)) {
+      if (std::holds_alternative<Circle>(arc.curve) && (arc.from == kNone) != (arc.to == kNone)) {
         throw FieldError(at, "a circle arc has both ends or neither (a full circle); only line arcs reach infinity");
       }
       if (unlabelled) {
@@ -159,7 +158,7 @@ struct Reader {
     for (std::size_t i = 0; i < faces->size(); ++i) {
       const std::string at = detail::element_path("faces", i);
       const Json& f = (*faces)[i];
-      voronoi::Face face;
+      Face face;
       face.site = detail::index(detail::member(f, "site", at), at + ".site", diagram.sites.size(), "site", false);
       face.bounded = detail::boolean(detail::member(f, "bounded", at), at + ".bounded");
       face.orphan = detail::boolean(detail::member(f, "orphan", at), at + ".orphan");
@@ -170,7 +169,7 @@ struct Reader {
         const std::string cyc = detail::element_path(cat, c);
         detail::expect_array(cycles[c], cyc);
         if (cycles[c].empty()) throw FieldError(cyc, "a boundary cycle must not be empty");
-        std::vector<voronoi::HalfArc> cycle;
+        std::vector<HalfArc> cycle;
         for (std::size_t k = 0; k < cycles[c].size(); ++k) {
           const std::string step = detail::element_path(cyc, k);
           const Json& h = cycles[c][k];
@@ -202,7 +201,7 @@ struct Reader {
 
 }  // namespace
 
-void write_diagram_json(const voronoi::Diagram& d, std::ostream& out) {
+void write_diagram_json(const Diagram& d, std::ostream& out) {
   std::vector<Out> sites, nodes, arcs, faces, clip;
   for (std::size_t i = 0; i < d.sites.size(); ++i) {
     const auto& s = d.sites[i];
@@ -229,7 +228,7 @@ void write_diagram_json(const voronoi::Diagram& d, std::ostream& out) {
   out << "}\n";
 }
 
-voronoi::Diagram parse_diagram_json(std::string_view text, const std::string& file, ArcLabels labels) {
+Diagram parse_diagram_json(std::string_view text, const std::string& file, ArcLabels labels) {
   const Json root = detail::parse_json(text, file);
   detail::check_format_tag(root, "covmap.arcgraph/1", file);
   Reader reader{root, file, labels == ArcLabels::kIgnored, {}};
@@ -249,7 +248,7 @@ voronoi::Diagram parse_diagram_json(std::string_view text, const std::string& fi
   return std::move(reader.diagram);
 }
 
-voronoi::Diagram read_diagram_json(const std::filesystem::path& path, ArcLabels labels) {
+Diagram read_diagram_json(const std::filesystem::path& path, ArcLabels labels) {
   return parse_diagram_json(detail::read_text_file(path), path.string(), labels);
 }
 

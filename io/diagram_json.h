@@ -1,4 +1,4 @@
-// covmap::io arc graphs: a voronoi::Diagram as covmap.arcgraph/1 JSON, both directions.
+// covmap::io arc graphs: a Diagram as covmap.arcgraph/1 JSON, both directions.
 //
 // Layout (docs/FORMATS.md is the reference):
 //   {"format":"covmap.arcgraph/1",
@@ -9,7 +9,7 @@
 //             "sites":[left|null, right|null], "frame":true (only on frame arcs)}, ...],
 //    "faces":[{"site":i,"bounded":b,"orphan":b,"boundaries":[[[arc,forward], ...], ...]}, ...],
 //    "clip":[[x,y], ...]}
-// null stands for voronoi::kNone. Orientation conventions are those of voronoi/diagram.h.
+// null stands for kNone. Orientation conventions are those of core/diagram.h.
 //
 // Writing: every double is written in the shortest form that reads back to the same bits, so
 // write -> read reproduces the Diagram exactly. A non-finite number cannot be written (JSON has
@@ -30,21 +30,21 @@
 #include <string>
 #include <string_view>
 
-#include "voronoi/diagram.h"
+#include "core/diagram.h"
 
 namespace covmap::io {
 
-void write_diagram_json(const voronoi::Diagram& diagram, std::ostream& out);
+void write_diagram_json(const Diagram& diagram, std::ostream& out);
 
 // kRequired: a diagram, sites and labels checked as above. kIgnored: an arc graph whose sites are
 // unknown (the input of recognition and comparison): "sites", the arcs' "sites" and "faces" may be
 // absent and are ignored; the result has no sites, no faces and kNone labels.
 enum class ArcLabels { kRequired, kIgnored };
 
-voronoi::Diagram read_diagram_json(const std::filesystem::path& path, ArcLabels labels = ArcLabels::kRequired);
+Diagram read_diagram_json(const std::filesystem::path& path, ArcLabels labels = ArcLabels::kRequired);
 
 // Parses text already in memory; `file` is only used in error messages.
-voronoi::Diagram parse_diagram_json(std::string_view text, const std::string& file,
+Diagram parse_diagram_json(std::string_view text, const std::string& file,
                                     ArcLabels labels = ArcLabels::kRequired);
 
 }  // namespace covmap::io

@@ -40,7 +40,7 @@ LocalProjection LocalProjection::about(double lon0, double lat0) {
   return LocalProjection(lon0, lat0, northing);
 }
 
-voronoi::Point LocalProjection::forward(double lon, double lat) const {
+Point LocalProjection::forward(double lon, double lat) const {
   double x = 0.0, y = 0.0;
   wgs84_tm().Forward(lon0_, lat, lon, x, y);
   return {x, y - northing0_};
@@ -55,7 +55,7 @@ ScaledPoint LocalProjection::forward_with_scale(double lon, double lat) const {
   return {{x, y - northing0_}, k};
 }
 
-LonLat LocalProjection::inverse(voronoi::Point p) const {
+LonLat LocalProjection::inverse(Point p) const {
   LonLat out;
   wgs84_tm().Reverse(lon0_, p.x, p.y + northing0_, out.lat, out.lon);
   return out;

@@ -24,7 +24,7 @@
 
 #include <string>
 
-#include "voronoi/diagram.h"
+#include "core/diagram.h"
 
 namespace covmap::io {
 
@@ -35,7 +35,7 @@ struct LonLat {
 
 // A projected point with the point scale there (both come out of one evaluation).
 struct ScaledPoint {
-  voronoi::Point point;
+  Point point;
   double scale = 1.0;
 };
 
@@ -45,11 +45,11 @@ class LocalProjection {
   static LocalProjection about(double lon0, double lat0);
 
   // Planar metres of a geographic position (degrees).
-  voronoi::Point forward(double lon, double lat) const;
+  Point forward(double lon, double lat) const;
   // forward() and point_scale() at once, for readers that project many vertices.
   ScaledPoint forward_with_scale(double lon, double lat) const;
   // Geographic position (degrees, lon in [-180, 180]) of planar metres.
-  LonLat inverse(voronoi::Point p) const;
+  LonLat inverse(Point p) const;
   // The point scale k of the projection at (lon, lat): planar length / true length of a short
   // segment there, the same in every direction. 1 on the central meridian.
   double point_scale(double lon, double lat) const;

@@ -11,7 +11,6 @@
 namespace covmap::io {
 namespace {
 
-using voronoi::Point;
 
 // Error-free transformations: a*b == p + e and a+b == s + e exactly (Shewchuk 1997; the product
 // needs a fused multiply-add).

@@ -10,22 +10,22 @@
 #include <span>
 #include <string>
 
-#include "voronoi/diagram.h"
+#include "core/diagram.h"
 
 namespace covmap::io {
 
 // Sign of the turn a -> b -> c: +1 counter-clockwise (left), -1 clockwise (right), 0 collinear.
-int orientation(voronoi::Point a, voronoi::Point b, voronoi::Point c);
+int orientation(Point a, Point b, Point c);
 
 // Why `ring` (vertices in order, the closing edge implied, no repeated closing vertex) is not a
 // usable clip polygon, or nullopt if it is one. Checked: at least 3 vertices, finite coordinates,
 // no two consecutive vertices equal, not all collinear (non-zero area), and no two edges meeting
 // other than consecutive edges at their shared vertex (this includes touching and overlapping).
 // Cost O(n^2) in the number of vertices.
-std::optional<std::string> polygon_defect(std::span<const voronoi::Point> ring);
+std::optional<std::string> polygon_defect(std::span<const Point> ring);
 
 // +1 if the ring runs counter-clockwise, -1 if clockwise. Precondition: polygon_defect(ring) is
 // nullopt.
-int ring_orientation(std::span<const voronoi::Point> ring);
+int ring_orientation(std::span<const Point> ring);
 
 }  // namespace covmap::io

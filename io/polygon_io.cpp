@@ -17,7 +17,6 @@ namespace {
 
 using detail::FieldError;
 using detail::Json;
-using voronoi::Point;
 
 // The four numbers of "xmin,ymin,xmax,ymax", or nullopt if spec is not four numbers.
 std::optional<std::array<double, 4>> rectangle_numbers(const std::string& spec) {

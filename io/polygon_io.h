@@ -17,19 +17,19 @@
 #include <string>
 #include <vector>
 
-#include "voronoi/diagram.h"
+#include "core/diagram.h"
 
 namespace covmap::io {
 
-std::vector<voronoi::Point> parse_clip(const std::string& spec);
+std::vector<Point> parse_clip(const std::string& spec);
 
 // The polygon part of parse_clip for a document already parsed from JSON text; `file` names it
 // in errors.
-std::vector<voronoi::Point> parse_polygon_json(const std::string& text, const std::string& file);
+std::vector<Point> parse_polygon_json(const std::string& text, const std::string& file);
 
 // Normalizes and validates a ring as parse_clip does (drops the closing and repeated vertices,
 // checks with polygon_defect, returns it counter-clockwise). Throws InputError(file, 0, item, defect).
-std::vector<voronoi::Point> make_clip_polygon(std::vector<voronoi::Point> ring, const std::string& file,
+std::vector<Point> make_clip_polygon(std::vector<Point> ring, const std::string& file,
                                               const std::string& item);
 
 }  // namespace covmap::io

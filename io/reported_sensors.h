@@ -44,13 +44,13 @@
 #include <vector>
 
 #include "io/local_projection.h"
-#include "voronoi/diagram.h"
+#include "core/diagram.h"
 
 namespace covmap::io {
 
 struct ReportedSensor {
   std::string id;
-  voronoi::Point position;                 // planar metres (projected if geographic)
+  Point position;                 // planar metres (projected if geographic)
   std::optional<double> lon, lat;          // as read, for geographic input
   std::optional<double> weight;            // as read or derived from power and alpha
   std::optional<double> tx_power_dbm;      // as read

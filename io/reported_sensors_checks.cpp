@@ -10,7 +10,6 @@
 namespace covmap::io::detail {
 namespace {
 
-using voronoi::Point;
 
 // "sensor 'a' (line 4)" / "sensor 'a' (features[0])": how a message refers to another sensor.
 std::string reference(const SensorDraft& d) { return "sensor " + quote_id(d.sensor.id) + " (" + d.sensor.origin + ")"; }

@@ -141,7 +141,7 @@ SensorDraft read_row(const std::vector<std::string>& fields, const ColumnIndex& 
   }
   if (at[kX] != kAbsent) {
     const auto x = number(kX, true), y = number(kY, true);
-    if (x && y) d.xy = voronoi::Point{*x, *y};
+    if (x && y) d.xy = Point{*x, *y};
   } else {
     const auto lon = number(kLon, true), lat = number(kLat, true);
     if (lon && lat) d.lon_lat = LonLat{*lon, *lat};

@@ -44,7 +44,7 @@ void read_position(const Json& entry, SensorDraft& d) {
   try {
     const double a = number(member(entry, first, ""), first);
     const double b = number(member(entry, second, ""), second);
-    if (planar) d.xy = voronoi::Point{a, b};
+    if (planar) d.xy = Point{a, b};
     else d.lon_lat = LonLat{a, b};
   } catch (const FieldError& e) {
     d.problems.push_back(phrase(e));
@@ -94,7 +94,7 @@ void read_point(const Json& feature, bool planar, SensorDraft& d) {
     return;
   }
   const double a = (*p)[0].get<double>(), b = (*p)[1].get<double>();  // altitude, if any, is ignored
-  if (planar) d.xy = voronoi::Point{a, b};
+  if (planar) d.xy = Point{a, b};
   else d.lon_lat = LonLat{a, b};
 }
 

@@ -16,7 +16,7 @@ namespace covmap::io::detail {
 
 struct SensorDraft {
   ReportedSensor sensor;  // id, strengths, sigmas and origin as read; position not yet set
-  std::optional<voronoi::Point> xy;  // a planar position as read
+  std::optional<Point> xy;  // a planar position as read
   std::optional<LonLat> lon_lat;     // a geographic position as read
   int line = 0;                      // line in a CSV file; 0 for JSON
   std::vector<std::string> problems;  // what is wrong so far, in the order found

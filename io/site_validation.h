@@ -7,13 +7,13 @@
 
 #include "io/input_error.h"
 #include "io/sites_io.h"
-#include "voronoi/diagram.h"
+#include "core/diagram.h"
 
 namespace covmap::io::detail {
 
 // A site as read, before the whole-list checks.
 struct SiteDraft {
-  voronoi::Site site;
+  Site site;
   int line = 0;        // line in a CSV file; 0 for JSON
   std::string origin;  // "line 7" or "sites[3]"
   std::vector<std::string> problems;  // what is wrong with this site so far, in the order found

@@ -34,7 +34,7 @@ SiteTable read_sites(const std::filesystem::path& path, SitesFormat format) {
   return parse_sites(detail::read_text_file(path), path.string(), format);
 }
 
-void write_sites_json(const std::vector<voronoi::Site>& sites, std::ostream& out) {
+void write_sites_json(const std::vector<Site>& sites, std::ostream& out) {
   // One site per line: readable, diffable, and still valid JSON. nlohmann writes doubles in the
   // shortest form that reads back to the same bits.
   out << "{\"format\":\"covmap.sites/1\",\"sites\":[";

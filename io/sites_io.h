@@ -24,12 +24,12 @@
 #include <string_view>
 #include <vector>
 
-#include "voronoi/diagram.h"
+#include "core/diagram.h"
 
 namespace covmap::io {
 
 struct SiteTable {
-  std::vector<voronoi::Site> sites;
+  std::vector<Site> sites;
   // Per site, where it was read from, for messages in later stages: "line 7" or "sites[3]".
   std::vector<std::string> origin;
 };
@@ -42,6 +42,6 @@ SiteTable read_sites(const std::filesystem::path& path, SitesFormat format = Sit
 SiteTable parse_sites(std::string_view text, const std::string& file, SitesFormat format = SitesFormat::kDetect);
 
 // Writes covmap.sites/1, one site per line; doubles are written so they read back bit-exactly.
-void write_sites_json(const std::vector<voronoi::Site>& sites, std::ostream& out);
+void write_sites_json(const std::vector<Site>& sites, std::ostream& out);
 
 }  // namespace covmap::io

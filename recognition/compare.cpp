@@ -8,16 +8,13 @@
 #include <sstream>
 #include <unordered_map>
 
-#include "recognition/extent.h"
+#include "core/extent.h"
 #include "voronoi/arc_path.h"
 #include "voronoi/box_grid.h"
 
 namespace covmap::recognition {
 namespace {
 
-using voronoi::Arc;
-using voronoi::Diagram;
-using voronoi::kNone;
 
 struct Grid {
   double cell;
@@ -36,7 +33,7 @@ struct Grid {
   }
 };
 
-voronoi::Point midpoint(const Diagram& d, const Arc& a) {
+Point midpoint(const Diagram& d, const Arc& a) {
   const voronoi::ArcPathView p = voronoi::arc_path(a, d.nodes);
   const double s = std::isfinite(p.s0) && std::isfinite(p.s1) ? 0.5 * (p.s0 + p.s1)
                    : std::isfinite(p.s0)                       ? p.s0 + 1.0
@@ -46,20 +43,20 @@ voronoi::Point midpoint(const Diagram& d, const Arc& a) {
 }
 
 // Distance from q to an arc (its parameter range only).
-double distance_to_arc(const voronoi::ArcPathView& p, voronoi::Point q) {
+double distance_to_arc(const voronoi::ArcPathView& p, Point q) {
   double s;
   if (p.circle) {
     const double angle = std::atan2(q.y - p.cy, q.x - p.cx);
     s = std::fmod(p.sense * (angle - p.start_angle), 6.283185307179586);
     if (s < 0) s += 6.283185307179586;
     if (s > p.s1) {
-      const voronoi::Point e0 = p.at(p.s0), e1 = p.at(p.s1);
+      const Point e0 = p.at(p.s0), e1 = p.at(p.s1);
       return std::min(std::hypot(q.x - e0.x, q.y - e0.y), std::hypot(q.x - e1.x, q.y - e1.y));
     }
   } else {
     s = std::clamp((q.x - p.ox) * p.ux + (q.y - p.oy) * p.uy, p.s0, p.s1);
   }
-  const voronoi::Point on = p.at(s);
+  const Point on = p.at(s);
   return std::hypot(q.x - on.x, q.y - on.y);
 }
 
@@ -79,7 +76,7 @@ class ArcProximity {
         {e.xmin, e.ymin, e.xmax, e.ymax}, d.arcs.size(), kMaxCells);
   }
 
-  bool near(voronoi::Point q, double tol) const {
+  bool near(Point q, double tol) const {
     if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(tol)) return false;
     auto close = [&](int k) { return distance_to_arc(paths_[k], q) <= tol; };
     if (std::any_of(grid_.always.begin(), grid_.always.end(), close)) return true;
@@ -106,23 +103,23 @@ class ArcProximity {
   voronoi::BoxGrid grid_;
 };
 
-std::vector<voronoi::Point> arc_samples(const Diagram& d, const Arc& arc, double far) {
+std::vector<Point> arc_samples(const Diagram& d, const Arc& arc, double far) {
   const voronoi::ArcPathView p = voronoi::arc_path(arc, d.nodes);
   const double s0 = std::isfinite(p.s0) ? p.s0 : (std::isfinite(p.s1) ? p.s1 - far : -far);
   const double s1 = std::isfinite(p.s1) ? p.s1 : s0 + 2 * far;
-  std::vector<voronoi::Point> out;
+  std::vector<Point> out;
   for (int k = 1; k < 8; ++k) out.push_back(p.at(s0 + (s1 - s0) * k / 8.0));
   return out;
 }
 
 bool same_curve(const Arc& a, const Arc& b, double tol) {
-  const auto* ca = std::get_if<voronoi::Circle>(&a.curve);
-  const auto* cb = std::get_if<voronoi::Circle>(&b.curve);
+  const auto* ca = std::get_if<Circle>(&a.curve);
+  const auto* cb = std::get_if<Circle>(&b.curve);
   if (ca && cb)
     return std::hypot(ca->cx - cb->cx, ca->cy - cb->cy) <= tol && std::abs(ca->r - cb->r) <= tol;
   if (!ca && !cb) {
-    const auto& la = std::get<voronoi::Line>(a.curve);
-    const auto& lb = std::get<voronoi::Line>(b.curve);
+    const auto& la = std::get<Line>(a.curve);
+    const auto& lb = std::get<Line>(b.curve);
     const double na = std::hypot(la.dx, la.dy), nb = std::hypot(lb.dx, lb.dy);
     const double cross = (la.dx * lb.dy - la.dy * lb.dx) / (na * nb);
     const double offset = std::abs((lb.x - la.x) * la.dy - (lb.y - la.y) * la.dx) / na;
@@ -156,7 +153,7 @@ std::string Comparison::brief() const {
 
 Comparison compare_graphs(const Diagram& a, const Diagram& b, const CompareOptions& options) {
   Comparison out;
-  // The extent: the central part of the first graph's nodes and full circles (recognition/extent.h) and both
+  // The extent: the central part of the first graph's nodes and full circles (core/extent.h) and both
   // graphs' sites (not the second graph's nodes, which may hold the far artefacts the horizon is
   // there to ignore).
   const Diagram& reference = a.arcs.empty() ? b : a;
@@ -171,7 +168,7 @@ Comparison compare_graphs(const Diagram& a, const Diagram& b, const CompareOptio
   const double scale =
       std::isfinite(xmax - xmin) ? std::max(std::hypot(xmax - xmin, ymax - ymin), 1e-300) : 1.0;
   const double tol = options.relative_tolerance * scale;
-  const voronoi::Point centre{0.5 * (xmin + xmax), 0.5 * (ymin + ymax)};
+  const Point centre{0.5 * (xmin + xmax), 0.5 * (ymin + ymax)};
   const double horizon = options.horizon * scale;
   auto far_node = [&](const Diagram& d, int v) {
     return v == kNone || std::hypot(d.nodes[v].x - centre.x, d.nodes[v].y - centre.y) > horizon;
@@ -190,7 +187,7 @@ Comparison compare_graphs(const Diagram& a, const Diagram& b, const CompareOptio
     } else {
       s = std::clamp((centre.x - p.ox) * p.ux + (centre.y - p.oy) * p.uy, p.s0, p.s1);
     }
-    const voronoi::Point q = p.at(s);
+    const Point q = p.at(s);
     return std::hypot(q.x - centre.x, q.y - centre.y) > horizon;
   };
   // Nodes closer than tol within one graph are one node (a node of degree four may be recomputed
@@ -293,7 +290,7 @@ Comparison compare_graphs(const Diagram& a, const Diagram& b, const CompareOptio
   std::unordered_map<long long, std::vector<int>> b_arcs;
   // A curve's own numbers are known in proportion to their size (see scaled_tol).
   auto curve_tol = [&](const Arc& arc) {
-    if (const auto* c = std::get_if<voronoi::Circle>(&arc.curve))
+    if (const auto* c = std::get_if<Circle>(&arc.curve))
       return tol * std::max(1.0, (std::hypot(c->cx - centre.x, c->cy - centre.y) + c->r) / scale);
     return tol;
   };
@@ -321,7 +318,7 @@ Comparison compare_graphs(const Diagram& a, const Diagram& b, const CompareOptio
           }
     }
     if (!matched) {
-      const voronoi::Point m = midpoint(a, arc);
+      const Point m = midpoint(a, arc);
       std::ostringstream msg;
       msg << "arc " << i << " near (" << m.x << ", " << m.y << ") only in the first graph";
       out.differences.push_back({DifferenceKind::ArcOnlyInA, static_cast<int>(i), m.x, m.y, msg.str()});
@@ -330,7 +327,7 @@ Comparison compare_graphs(const Diagram& a, const Diagram& b, const CompareOptio
   for (std::size_t j = 0; j < b.arcs.size(); ++j) {
     if (b_used[j] || tiny(b, cb, b.arcs[j]) || beyond(b, b.arcs[j])) continue;
     const Arc& arc = b.arcs[j];
-    const voronoi::Point m = midpoint(b, arc);
+    const Point m = midpoint(b, arc);
     std::ostringstream msg;
     msg << "arc " << j << " near (" << m.x << ", " << m.y << ") only in the second graph";
     if (arc.left_site != kNone && arc.right_site != kNone && arc.left_site < static_cast<int>(b.sites.size()) &&
@@ -351,12 +348,12 @@ Comparison compare_graphs(const Diagram& a, const Diagram& b, const CompareOptio
       const Diagram& own = in_a ? a : b;
       std::optional<ArcProximity>& other = in_a ? near_b : near_a;
       if (!other) other.emplace(in_a ? b : a);
-      std::vector<voronoi::Point> points;
+      std::vector<Point> points;
       if (diff.kind == DifferenceKind::NodeOnlyInA || diff.kind == DifferenceKind::NodeOnlyInB)
         points.push_back({own.nodes[diff.index].x, own.nodes[diff.index].y});
       else
         points = arc_samples(own, own.arcs[diff.index], scale);
-      if (!std::all_of(points.begin(), points.end(), [&](voronoi::Point q) { return other->near(q, scaled_tol(q.x, q.y)); }))
+      if (!std::all_of(points.begin(), points.end(), [&](Point q) { return other->near(q, scaled_tol(q.x, q.y)); }))
         kept.push_back(diff);
     }
     out.differences = std::move(kept);

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "voronoi/diagram.h"
+#include "core/diagram.h"
 
 namespace covmap::recognition {
 
@@ -38,7 +38,7 @@ const char* to_string(DifferenceKind kind);
 
 struct Difference {
   DifferenceKind kind = DifferenceKind::NodeOnlyInA;
-  int index = voronoi::kNone;  // node or arc index in its graph
+  int index = kNone;  // node or arc index in its graph
   double x = 0.0, y = 0.0;     // where (a node, or an arc's midpoint)
   std::string message;
 };
@@ -51,7 +51,7 @@ struct Comparison {
   std::string brief() const;
 };
 
-Comparison compare_graphs(const voronoi::Diagram& a, const voronoi::Diagram& b,
+Comparison compare_graphs(const Diagram& a, const Diagram& b,
                           const CompareOptions& options = {});
 
 }  // namespace covmap::recognition

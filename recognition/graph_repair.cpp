@@ -8,13 +8,11 @@
 
 namespace covmap::recognition {
 
-using voronoi::Arc;
-using voronoi::kNone;
 
 Arc reversed(Arc a) {
   std::swap(a.from, a.to);
   std::swap(a.left_site, a.right_site);
-  if (auto* l = std::get_if<voronoi::Line>(&a.curve)) {
+  if (auto* l = std::get_if<Line>(&a.curve)) {
     l->dx = -l->dx;
     l->dy = -l->dy;
   } else {
@@ -26,14 +24,14 @@ Arc reversed(Arc a) {
 namespace {
 
 bool same_curve(const Arc& a, const Arc& b, double tol) {
-  const auto* ca = std::get_if<voronoi::Circle>(&a.curve);
-  const auto* cb = std::get_if<voronoi::Circle>(&b.curve);
+  const auto* ca = std::get_if<Circle>(&a.curve);
+  const auto* cb = std::get_if<Circle>(&b.curve);
   if (ca && cb)
     return a.ccw == b.ccw && std::hypot(ca->cx - cb->cx, ca->cy - cb->cy) <= tol &&
            std::abs(ca->r - cb->r) <= tol;
   if (ca || cb) return false;
-  const auto& la = std::get<voronoi::Line>(a.curve);
-  const auto& lb = std::get<voronoi::Line>(b.curve);
+  const auto& la = std::get<Line>(a.curve);
+  const auto& lb = std::get<Line>(b.curve);
   const double na = std::hypot(la.dx, la.dy), nb = std::hypot(lb.dx, lb.dy);
   const double dot = (la.dx * lb.dx + la.dy * lb.dy) / (na * nb);
   const double offset = std::abs((lb.x - la.x) * la.dy - (lb.y - la.y) * la.dx) / na;
@@ -42,7 +40,7 @@ bool same_curve(const Arc& a, const Arc& b, double tol) {
 
 }  // namespace
 
-std::vector<Repair> merge_degree_two_nodes(voronoi::Diagram& g, double tolerance) {
+std::vector<Repair> merge_degree_two_nodes(Diagram& g, double tolerance) {
   std::vector<Repair> repairs;
   std::vector<char> alive(g.arcs.size(), 1);
   bool changed = true;

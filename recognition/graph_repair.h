@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "voronoi/diagram.h"
+#include "core/diagram.h"
 
 namespace covmap::recognition {
 
@@ -16,9 +16,9 @@ struct Repair {
 // A node where exactly two arcs of one curve meet is no node of a bisector graph (every node has
 // degree ≥ 3): the two arcs are joined into one, the node dropped. Two arcs "of one curve" have
 // centre and radius (or line) equal within `tolerance` (a length). Returns what was done.
-std::vector<Repair> merge_degree_two_nodes(voronoi::Diagram& g, double tolerance);
+std::vector<Repair> merge_degree_two_nodes(Diagram& g, double tolerance);
 
 // The arc reversed: same points, opposite direction of travel, sides swapped.
-voronoi::Arc reversed(voronoi::Arc a);
+Arc reversed(Arc a);
 
 }  // namespace covmap::recognition

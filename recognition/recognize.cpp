@@ -10,37 +10,32 @@
 #include <sstream>
 #include <thread>
 
-#include "recognition/bisector_relation.h"
-#include "recognition/extent.h"
-#include "recognition/feasible_region.h"
-#include "recognition/mobius.h"
-#include "recognition/node_frame.h"
+#include "mobius/bisector_relation.h"
+#include "core/extent.h"
+#include "mobius/feasible_region.h"
+#include "mobius/mobius.h"
+#include "mobius/node_frame.h"
 #include "voronoi/clip.h"
-#include "voronoi/engine/parallel.h"
-#include "voronoi/large_buffer.h"
+#include "core/parallel.h"
+#include "core/large_buffer.h"
 #include "voronoi/engine.h"
 #include "voronoi/faces.h"
 
 namespace covmap::recognition {
 namespace {
 
-using voronoi::LargeVector;
 
-using voronoi::Arc;
-using voronoi::Diagram;
-using voronoi::HalfArc;
-using voronoi::kNone;
 
-GeneralizedCircle curve_of(const Arc& a) {
-  if (const auto* c = std::get_if<voronoi::Circle>(&a.curve)) return GeneralizedCircle::from(*c);
-  return GeneralizedCircle::from(std::get<voronoi::Line>(a.curve));
+mobius::GeneralizedCircle curve_of(const Arc& a) {
+  if (const auto* c = std::get_if<Circle>(&a.curve)) return mobius::GeneralizedCircle::from(*c);
+  return mobius::GeneralizedCircle::from(std::get<Line>(a.curve));
 }
 
 int half_id(const HalfArc& h) { return 2 * h.arc + (h.forward ? 0 : 1); }
 
 // Distance from z to a generalized circle (|value| / |gradient| to first order, exact for circles
 // and lines).
-double distance_to(const GeneralizedCircle& g, Complex z) {
+double distance_to(const mobius::GeneralizedCircle& g, mobius::Complex z) {
   if (g.is_line()) return std::abs(g.value(z)) / (2.0 * std::abs(g.B));
   const auto c = g.centre();
   const auto r = g.radius();
@@ -49,8 +44,8 @@ double distance_to(const GeneralizedCircle& g, Complex z) {
 }
 
 // Intersection points of two generalized circles (0, 1 or 2; empty also when they coincide).
-std::vector<Complex> intersect(GeneralizedCircle a, GeneralizedCircle b) {
-  auto normalise = [](GeneralizedCircle g) {
+std::vector<mobius::Complex> intersect(mobius::GeneralizedCircle a, mobius::GeneralizedCircle b) {
+  auto normalise = [](mobius::GeneralizedCircle g) {
     if (g.A != 0.0) {
       g.B /= g.A;
       g.C /= g.A;
@@ -62,13 +57,13 @@ std::vector<Complex> intersect(GeneralizedCircle a, GeneralizedCircle b) {
   b = normalise(b);
   if (a.is_line() && !b.is_line()) std::swap(a, b);
   // Now a is a circle or both are lines. The radical line of two circles: a - b.
-  GeneralizedCircle line = a;
+  mobius::GeneralizedCircle line = a;
   if (!a.is_line() && !b.is_line()) {
-    line = GeneralizedCircle{0.0, a.B - b.B, a.C - b.C};
+    line = mobius::GeneralizedCircle{0.0, a.B - b.B, a.C - b.C};
   } else if (b.is_line()) {
     line = b;
   }
-  std::vector<Complex> out;
+  std::vector<mobius::Complex> out;
   if (a.is_line()) {  // two lines: 2Re(conj(B) z) + C = 0 each
     const double a1 = 2 * a.B.real(), b1 = 2 * a.B.imag(), a2 = 2 * b.B.real(), b2 = 2 * b.B.imag();
     const double det = a1 * b2 - a2 * b1;
@@ -78,12 +73,12 @@ std::vector<Complex> intersect(GeneralizedCircle a, GeneralizedCircle b) {
   }
   if (std::abs(line.B) == 0.0) return out;  // concentric or identical circles
   // Line 2Re(conj(B) z) + C = 0: direction i·B, nearest point to the origin -C B / (2|B|²).
-  const Complex p0 = -line.C * line.B / (2.0 * std::norm(line.B));
-  const Complex dir = Complex(0, 1) * line.B / std::abs(line.B);
-  const Complex centre = *a.centre();
+  const mobius::Complex p0 = -line.C * line.B / (2.0 * std::norm(line.B));
+  const mobius::Complex dir = mobius::Complex(0, 1) * line.B / std::abs(line.B);
+  const mobius::Complex centre = *a.centre();
   const double r = std::sqrt(std::max(0.0, std::norm(centre) - a.C));
   // |p0 + t dir - c|² = r²
-  const Complex w = p0 - centre;
+  const mobius::Complex w = p0 - centre;
   const double bq = std::real(std::conj(dir) * w);
   const double cq = std::norm(w) - r * r;
   const double disc = bq * bq - cq;
@@ -99,7 +94,7 @@ std::vector<Complex> intersect(GeneralizedCircle a, GeneralizedCircle b) {
 
 // The clip polygon of a clipped graph: its own if stated, else the frame arcs followed from node to
 // node (counter-clockwise, as frame arcs keep the inside on their left).
-std::vector<voronoi::Point> frame_polygon(const Diagram& g) {
+std::vector<Point> frame_polygon(const Diagram& g) {
   if (!g.clip.empty()) return g.clip;
   std::vector<int> next_arc(g.nodes.size(), kNone);
   int first = kNone;
@@ -108,7 +103,7 @@ std::vector<voronoi::Point> frame_polygon(const Diagram& g) {
       next_arc[g.arcs[a].from] = static_cast<int>(a);
       if (first == kNone) first = static_cast<int>(a);
     }
-  std::vector<voronoi::Point> poly;
+  std::vector<Point> poly;
   for (int a = first, guard = 0; a != kNone && guard <= static_cast<int>(g.arcs.size()); ++guard) {
     const auto& n = g.nodes[g.arcs[a].from];
     poly.push_back({n.x, n.y});
@@ -120,11 +115,11 @@ std::vector<voronoi::Point> frame_polygon(const Diagram& g) {
 
 struct FaceSite {
   bool assigned = false;
-  Complex position;
+  mobius::Complex position;
   double weight = 1.0;
 };
 
-RecognitionFailure arc_failure(int arc, int face, Complex where, double amount, std::string message) {
+RecognitionFailure arc_failure(int arc, int face, mobius::Complex where, double amount, std::string message) {
   RecognitionFailure f;
   f.arc = arc;
   f.face = face;
@@ -150,11 +145,11 @@ std::optional<EndOffCurve> first_end_off_curve(const Diagram& g, double tol) {
         if (v == kNone) continue;
         const double x = g.nodes[v].x, y = g.nodes[v].y;
         double off = 0.0, rounding = 0.0;
-        if (const auto* c = std::get_if<voronoi::Circle>(&arc.curve)) {
+        if (const auto* c = std::get_if<Circle>(&arc.curve)) {
           off = std::abs(std::sqrt((x - c->cx) * (x - c->cx) + (y - c->cy) * (y - c->cy)) - c->r);
           rounding = std::abs(c->cx) + std::abs(c->cy) + c->r;
         } else {
-          const auto& l = std::get<voronoi::Line>(arc.curve);
+          const auto& l = std::get<Line>(arc.curve);
           off = std::abs((x - l.x) * l.dy - (y - l.y) * l.dx) / std::sqrt(l.dx * l.dx + l.dy * l.dy);
           rounding = std::abs(l.x) + std::abs(l.y);
         }
@@ -164,9 +159,9 @@ std::optional<EndOffCurve> first_end_off_curve(const Diagram& g, double tol) {
     }
     return std::nullopt;
   };
-  const int workers = voronoi::engine::worker_count(g.arcs.size());
+  const int workers = worker_count(g.arcs.size());
   std::vector<std::optional<EndOffCurve>> found(workers);
-  voronoi::engine::parallel_chunks(g.arcs.size(), workers, [&](std::size_t b, std::size_t e, int w) { found[w] = scan(b, e); });
+  parallel_chunks(g.arcs.size(), workers, [&](std::size_t b, std::size_t e, int w) { found[w] = scan(b, e); });
   for (const auto& f : found)
     if (f) return f;  // chunks are in arc order: the first found is the first arc
   return std::nullopt;
@@ -206,7 +201,7 @@ Reconstruction collect_sites(const LargeVector<FaceSite>& site, double tol, doub
       if (site[f].assigned) by_x.push_back({site[f].position.real(), site[f].position.imag(), f});
     std::sort(by_x.begin(), by_x.end());  // (x, face): no ties
   };
-  if (voronoi::engine::worker_count(site.size()) > 1) {
+  if (worker_count(site.size()) > 1) {
     std::thread other(sort_by_x);
     snap_weights();
     other.join();
@@ -237,8 +232,8 @@ Reconstruction collect_sites(const LargeVector<FaceSite>& site, double tol, doub
   Reconstruction r;
   r.sites.reserve(by_x.size());  // at most one site per assigned face
   r.face_site.reserve(faces);
-  voronoi::advise_huge_pages(r.sites.data(), r.sites.capacity() * sizeof(voronoi::Site));
-  voronoi::advise_huge_pages(r.face_site.data(), r.face_site.capacity() * sizeof(int));
+  advise_huge_pages(r.sites.data(), r.sites.capacity() * sizeof(Site));
+  advise_huge_pages(r.face_site.data(), r.face_site.capacity() * sizeof(int));
   r.face_site.assign(faces, kNone);
   LargeVector<int> first_face;  // per site, the face it is numbered by
   first_face.reserve(by_x.size());
@@ -253,7 +248,7 @@ Reconstruction collect_sites(const LargeVector<FaceSite>& site, double tol, doub
     first_face.push_back(f);
   }
   r.sites.resize(first_face.size());
-  voronoi::engine::parallel_chunks(first_face.size(), voronoi::engine::worker_count(first_face.size()),
+  parallel_chunks(first_face.size(), worker_count(first_face.size()),
                                    [&](std::size_t b, std::size_t e, int) {
                                      for (std::size_t k = b; k < e; ++k) {
                                        const int f = first_face[k];
@@ -277,7 +272,7 @@ SiteRegion root_region(const Diagram& g, const LargeVector<int>& face_of_half,
   for (int f = 0; f < faces && region.face == kNone; ++f)
     if (!outside[f]) region.face = f;
   if (region.face == kNone) return region;
-  LargeVector<Mobius> to_face(faces);
+  LargeVector<mobius::Mobius> to_face(faces);
   LargeVector<char> reached(faces, 0), arc_used(g.arcs.size(), 0);
   std::deque<int> queue{region.face};
   reached[region.face] = 1;
@@ -289,14 +284,14 @@ SiteRegion root_region(const Diagram& g, const LargeVector<int>& face_of_half,
         const Arc& arc = g.arcs[h.arc];
         if (arc.frame || arc_used[h.arc]) continue;
         arc_used[h.arc] = 1;
-        const GeneralizedCircle c = curve_of(arc);
-        const bool f_left_is_inside = std::holds_alternative<voronoi::Line>(arc.curve) ? h.forward : (h.forward == arc.ccw);
-        const GeneralizedCircle side = f_left_is_inside ? c : GeneralizedCircle{-c.A, -c.B, -c.C};
+        const mobius::GeneralizedCircle c = curve_of(arc);
+        const bool f_left_is_inside = std::holds_alternative<Line>(arc.curve) ? h.forward : (h.forward == arc.ccw);
+        const mobius::GeneralizedCircle side = f_left_is_inside ? c : mobius::GeneralizedCircle{-c.A, -c.B, -c.C};
         region.bounds.push_back(to_face[f].inverse().apply(side));
         const int other = face_of_half[half_id({h.arc, !h.forward})];
         if (other == kNone || reached[other]) continue;
         reached[other] = 1;
-        to_face[other] = Mobius::inversion(c).after(to_face[f]);
+        to_face[other] = mobius::Mobius::inversion(c).after(to_face[f]);
         queue.push_back(other);
       }
   }
@@ -326,7 +321,7 @@ Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
       clipped = true;
       break;
     }
-  voronoi::engine::parallel_chunks(g.arcs.size(), voronoi::engine::worker_count(g.arcs.size()), [&](std::size_t b, std::size_t e, int) {
+  parallel_chunks(g.arcs.size(), worker_count(g.arcs.size()), [&](std::size_t b, std::size_t e, int) {
     for (std::size_t a = b; a < e; ++a) g.arcs[a].left_site = g.arcs[a].right_site = kNone;
   });
   const Extent extent = graph_extent(g);
@@ -379,8 +374,8 @@ Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
     int node = kNone;            // the node it comes from
     bool any = false;            // no constraint
     bool is_circle = false;
-    GeneralizedCircle circle;
-    std::vector<Complex> points;
+    mobius::GeneralizedCircle circle;
+    std::vector<mobius::Complex> points;
     // Odd degree, fixed set empty: the two circles whose intersection it is miss each other by
     // this much (how far the node is from being a node of a bisector graph).
     double gap = 0.0;
@@ -392,15 +387,15 @@ Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
   auto node_constraint = [&](int f, int h_out) -> std::optional<Constraint> {
     const Arc& first = g.arcs[h_out / 2];
     const int v = (h_out % 2 == 0) ? first.from : first.to;
-    const Complex at(g.nodes[v].x, g.nodes[v].y);
+    const mobius::Complex at(g.nodes[v].x, g.nodes[v].y);
     const int far_end = (h_out % 2 == 0) ? first.to : first.from;
-    double L = far_end != kNone ? std::abs(Complex(g.nodes[far_end].x, g.nodes[far_end].y) - at) : 0.0;
+    double L = far_end != kNone ? std::abs(mobius::Complex(g.nodes[far_end].x, g.nodes[far_end].y) - at) : 0.0;
     if (!(L > 0)) L = scale;
-    Mobius h_total;
+    mobius::Mobius h_total;
     int h = h_out, face = f, steps = 0;
     do {
       if (h == kNone || g.arcs[h / 2].frame) return std::nullopt;
-      h_total = Mobius::inversion(curve_through_origin(g.arcs[h / 2], at, L)).after(h_total);
+      h_total = mobius::Mobius::inversion(mobius::curve_through_origin(g.arcs[h / 2], at, L)).after(h_total);
       const int twin = h ^ 1;
       face = face_of_half[twin];
       h = next_half[twin];
@@ -412,10 +407,10 @@ Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
     Constraint c;
     if (h_total.conjugated()) {
       const auto forms = h_total.fixed_set_forms();
-      auto size = [](const GeneralizedCircle& x) { return std::abs(x.A) + std::abs(x.B) + std::abs(x.C); };
+      auto size = [](const mobius::GeneralizedCircle& x) { return std::abs(x.A) + std::abs(x.B) + std::abs(x.C); };
       const double n0 = size(forms[0]), n1 = size(forms[1]);
-      const GeneralizedCircle& big = n0 >= n1 ? forms[0] : forms[1];
-      const GeneralizedCircle& small = n0 >= n1 ? forms[1] : forms[0];
+      const mobius::GeneralizedCircle& big = n0 >= n1 ? forms[0] : forms[1];
+      const mobius::GeneralizedCircle& small = n0 >= n1 ? forms[1] : forms[0];
       const double ratio = std::min(n0, n1) / std::max(n0, n1);
       // Proportional forms (or a vanishing one) describe one circle.
       const double lambda = (small.A * big.A + std::real(std::conj(small.B) * big.B) + small.C * big.C) /
@@ -439,26 +434,26 @@ Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
         }
       }
     } else {
-      const Complex a = h_total.a(), b = h_total.b(), cc = h_total.c(), d = h_total.d();
+      const mobius::Complex a = h_total.a(), b = h_total.b(), cc = h_total.c(), d = h_total.d();
       if (std::abs(b) <= mt && std::abs(cc) <= mt && std::abs(a - d) <= mt) {
         c.any = true;  // the identity: this node constrains nothing
       } else if (std::abs(cc) <= mt) {
         if (std::abs(d - a) > mt) c.points.push_back(b / (d - a));
       } else {
         // c z² + (d - a) z - b = 0
-        const Complex disc = std::sqrt((d - a) * (d - a) + 4.0 * cc * b);
+        const mobius::Complex disc = std::sqrt((d - a) * (d - a) + 4.0 * cc * b);
         c.points.push_back((-(d - a) + disc) / (2.0 * cc));
         c.points.push_back((-(d - a) - disc) / (2.0 * cc));
       }
     }
     // Back to the plane.
-    const Mobius to_plane(Complex(L, 0.0), at, Complex(0.0, 0.0), Complex(1.0, 0.0), false);
+    const mobius::Mobius to_plane(mobius::Complex(L, 0.0), at, mobius::Complex(0.0, 0.0), mobius::Complex(1.0, 0.0), false);
     // A solution circle through the node whose radius exceeds L / matrix_tolerance is its tangent
     // line to within the tolerance over the node's neighbourhood: a line (A exactly 0), so that a
     // rounding-level A does not become a circle of radius 1e16 in plane coordinates.
     if (c.is_circle && std::abs(c.circle.A) <= options.matrix_tolerance * std::abs(c.circle.B)) c.circle.A = 0.0;
     if (c.is_circle) c.circle = to_plane.apply(c.circle);
-    for (Complex& p : c.points) p = at + L * p;
+    for (mobius::Complex& p : c.points) p = at + L * p;
     return c;
   };
 
@@ -493,7 +488,7 @@ Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
       out.reason = "the graph has no face that could hold a site";
       return out;
     }
-    const FeasibleRegion fr = feasible_region(region.bounds, Complex(0.5 * (extent.xmin + extent.xmax), 0.5 * (extent.ymin + extent.ymax)),
+    const mobius::FeasibleRegion fr = mobius::feasible_region(region.bounds, mobius::Complex(0.5 * (extent.xmin + extent.xmax), 0.5 * (extent.ymin + extent.ymax)),
                                               std::max(2.0 * scale, 1.0));
     if (fr.empty) {
       RecognitionFailure fail;
@@ -517,10 +512,10 @@ Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
   struct Violation {
     double amount = INFINITY;
     int constraint = -1;
-    Complex at;
+    mobius::Complex at;
   };
   Violation closest;
-  auto satisfies = [&](Complex p) {
+  auto satisfies = [&](mobius::Complex p) {
     Violation v{0.0, -1, p};
     for (std::size_t k = 0; k < constraints.size(); ++k) {
       const Constraint& c = constraints[k];
@@ -528,34 +523,34 @@ Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
       if (c.is_circle) {
         off = distance_to(c.circle, p);
       } else {
-        for (const Complex& q : c.points) off = std::min(off, std::abs(q - p));
+        for (const mobius::Complex& q : c.points) off = std::min(off, std::abs(q - p));
       }
       if (off > v.amount) v.amount = off, v.constraint = static_cast<int>(k);
     }
     if (v.amount < closest.amount) closest = v;
     return v.amount <= tol;
   };
-  std::vector<Complex> candidates;
+  std::vector<mobius::Complex> candidates;
   bool family = free_root.has_value();
   if (free_root) candidates.push_back({free_root->representative.x, free_root->representative.y});
   for (const Constraint& c : constraints)
-    for (const Complex& p : c.points)
+    for (const mobius::Complex& p : c.points)
       if (satisfies(p) && std::none_of(candidates.begin(), candidates.end(),
-                                       [&](Complex q) { return std::abs(q - p) <= tol; }))
+                                       [&](mobius::Complex q) { return std::abs(q - p) <= tol; }))
         candidates.push_back(p);
   if (candidates.empty() && !free_root) {
-    std::vector<GeneralizedCircle> circles;
+    std::vector<mobius::GeneralizedCircle> circles;
     for (const Constraint& c : constraints)
       if (c.is_circle) circles.push_back(c.circle);
     bool distinct_pair = false;
     // Two solution circles that agree within the tolerance are one circle (computed around two
     // nodes of the same three bisectors, e.g.): their "intersection" would be rounding noise.
-    auto same_circle = [&](const GeneralizedCircle& a, const GeneralizedCircle& b) {
+    auto same_circle = [&](const mobius::GeneralizedCircle& a, const mobius::GeneralizedCircle& b) {
       if (a.is_line() != b.is_line()) return false;
       if (a.is_line()) {
-        const Complex ua = a.B / std::abs(a.B), ub = b.B / std::abs(b.B);
+        const mobius::Complex ua = a.B / std::abs(a.B), ub = b.B / std::abs(b.B);
         const double sine = std::abs(std::imag(std::conj(ua) * ub));
-        const Complex pa = -a.C * a.B / (2.0 * std::norm(a.B));
+        const mobius::Complex pa = -a.C * a.B / (2.0 * std::norm(a.B));
         return sine <= options.matrix_tolerance && distance_to(b, pa) <= tol;
       }
       const auto ca = a.centre(), cb = b.centre();
@@ -572,26 +567,26 @@ Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
           const auto ci = circles[i].centre(), cj = circles[j].centre();
           const auto ri = circles[i].radius();
           if (ci && cj && ri && std::abs(*cj - *ci) > 0) {
-            const Complex u = (*cj - *ci) / std::abs(*cj - *ci);
+            const mobius::Complex u = (*cj - *ci) / std::abs(*cj - *ci);
             satisfies(*ci + *ri * u);
             satisfies(*ci - *ri * u);
           }
           continue;
         }
         distinct_pair = true;
-        for (const Complex& p : pts)
+        for (const mobius::Complex& p : pts)
           if (satisfies(p) && std::none_of(candidates.begin(), candidates.end(),
-                                           [&](Complex q) { return std::abs(q - p) <= tol; }))
+                                           [&](mobius::Complex q) { return std::abs(q - p) <= tol; }))
             candidates.push_back(p);
       }
     if (!distinct_pair && !circles.empty()) {
       // All solution circles coincide (a face with at most two nodes, paper §4.2 k = 2): a
       // one-parameter family. Points around the circle are tried in turn; propagation decides.
       family = true;
-      const GeneralizedCircle& c = circles.front();
+      const mobius::GeneralizedCircle& c = circles.front();
       if (c.is_line()) {
-        const Complex p0 = -c.C * c.B / (2.0 * std::norm(c.B));
-        const Complex dir = Complex(0, 1) * c.B / std::abs(c.B);
+        const mobius::Complex p0 = -c.C * c.B / (2.0 * std::norm(c.B));
+        const mobius::Complex dir = mobius::Complex(0, 1) * c.B / std::abs(c.B);
         for (int k = -12; k <= 12; ++k) candidates.push_back(p0 + (0.25 * k * scale) * dir);
       } else if (auto centre = c.centre(); centre && c.radius()) {
         for (int k = 0; k < 24; ++k) candidates.push_back(*centre + std::polar(*c.radius(), (k + 0.5) * 0.2617993877991494));
@@ -600,7 +595,7 @@ Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
   }
   // Gauss-Newton on the distances to the solution circles among `cs`: an intersection of two
   // circles alone can be ill-conditioned when they meet at a shallow angle.
-  auto polish = [&](Complex p, const std::vector<Constraint>& cs) {
+  auto polish = [&](mobius::Complex p, const std::vector<Constraint>& cs) {
     for (int it = 0; it < 4; ++it) {
       double jtj[3] = {0, 0, 0}, jtr[2] = {0, 0};
       int used = 0;
@@ -609,7 +604,7 @@ Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
         const auto centre = c.circle.centre();
         const auto radius = c.circle.radius();
         if (!centre || !radius) continue;
-        const Complex d = p - *centre;
+        const mobius::Complex d = p - *centre;
         const double len = std::abs(d);
         if (len == 0) continue;
         const double res = len - *radius;
@@ -625,12 +620,12 @@ Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
       const double dx = (jtj[2] * jtr[0] - jtj[1] * jtr[1]) / det;
       const double dy = (jtj[0] * jtr[1] - jtj[1] * jtr[0]) / det;
       if (!std::isfinite(dx) || !std::isfinite(dy) || std::hypot(dx, dy) > tol) break;
-      p -= Complex(dx, dy);
+      p -= mobius::Complex(dx, dy);
     }
     return p;
   };
   if (!family)
-    for (Complex& p : candidates) p = polish(p, constraints);
+    for (mobius::Complex& p : candidates) p = polish(p, constraints);
   // The solution circles of the nodes of face f (at most four), for re-anchoring the sites of faces
   // at degenerate nodes (FaceIndex::degenerate_node: rounding of the sites decides their
   // combinatorics, and re-anchoring on the nodes' solution circles lets the recomputed diagram
@@ -707,13 +702,13 @@ Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
       const Arc& arc = g.arcs[a];
       const int left = face_of_half[2 * a], right = face_of_half[2 * a + 1];
       if (arc.frame || left == kNone || right == kNone || !site[left].assigned || !site[right].assigned) continue;
-      const ArcBisector bis = arc_bisector(arc, g.nodes);
+      const mobius::ArcBisector bis = mobius::arc_bisector(arc, g.nodes);
       // The face on the left must hold its site on that side: inside the disk when the arc runs
       // counter-clockwise, on the left of a line; the face on the right the other side.
       const bool left_is_inside = bis.line || arc.ccw;
       for (const int f : {left, right}) {
-        const Complex p = site[f].position;
-        if (strictly_inside(bis, p) == (left_is_inside == (f == left))) continue;
+        const mobius::Complex p = site[f].position;
+        if (mobius::strictly_inside(bis, p) == (left_is_inside == (f == left))) continue;
         const double off = distance_to(curve_of(arc), p);
         if (off > tol) {
           std::ostringstream msg;
@@ -721,7 +716,7 @@ Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
           return arc_failure(static_cast<int>(a), f, p, off, msg.str());
         }
       }
-      const WeightedPoint partner = partner_across(bis, {site[left].position, site[left].weight});
+      const mobius::WeightedPoint partner = mobius::partner_across(bis, {site[left].position, site[left].weight});
       const double off2 = std::norm(site[right].position - partner.position);
       if (!(off2 <= tol2)) {
         const double off = std::sqrt(off2);
@@ -733,7 +728,7 @@ Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
     }
     return std::nullopt;
   };
-  for (const Complex& p : candidates) {
+  for (const mobius::Complex& p : candidates) {
     std::fill(site.begin(), site.end(), FaceSite{});
     // A byte per face (1 MB at 10^6 faces, cache-resident) for the test every half-arc makes.
     std::fill(reached.begin(), reached.end(), 0);
@@ -767,15 +762,15 @@ Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
           const int other = face_of_half[half_id({h.arc, !h.forward})];
           if (other == kNone || reached[other] || g.arcs[h.arc].frame) continue;
           reached[other] = 1;
-          const WeightedPoint partner = partner_across(arc_bisector(g.arcs[h.arc], g.nodes), {here.position, here.weight});
-          const Complex at = at_degenerate_node[other] ? polish(partner.position, face_constraints(other)) : partner.position;
+          const mobius::WeightedPoint partner = mobius::partner_across(mobius::arc_bisector(g.arcs[h.arc], g.nodes), {here.position, here.weight});
+          const mobius::Complex at = at_degenerate_node[other] ? polish(partner.position, face_constraints(other)) : partner.position;
           site[other] = {true, at, partner.weight};
           queue.push_back(other);
         }
     }
-    const int workers = voronoi::engine::worker_count(g.arcs.size());
+    const int workers = worker_count(g.arcs.size());
     std::vector<std::optional<RecognitionFailure>> found(workers);
-    voronoi::engine::parallel_chunks(g.arcs.size(), workers,
+    parallel_chunks(g.arcs.size(), workers,
                                      [&](std::size_t b, std::size_t e, int w) { found[w] = verify_arcs(b, e); });
     std::optional<RecognitionFailure> failure;
     for (auto& f : found)
@@ -810,7 +805,7 @@ Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
   if (options.voronoi_check) {
     // The sites must be distinct for a Voronoi diagram; coinciding sites already answer "no".
     try {
-      voronoi::Diagram recomputed = voronoi::build_diagram(out.sites);
+      Diagram recomputed = voronoi::build_diagram(out.sites);
       if (clipped) recomputed = voronoi::clip_diagram(recomputed, frame_polygon(g));
       CompareOptions co;
       co.relative_tolerance = options.relative_tolerance;

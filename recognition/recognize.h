@@ -26,8 +26,8 @@
 #include <vector>
 
 #include "recognition/compare.h"
-#include "recognition/generalized_circle.h"
-#include "voronoi/diagram.h"
+#include "mobius/generalized_circle.h"
+#include "core/diagram.h"
 
 namespace covmap::recognition {
 
@@ -51,9 +51,9 @@ struct RecognitionOptions {
 
 struct RecognitionFailure {
   std::string message;
-  int arc = voronoi::kNone;
-  int node = voronoi::kNone;
-  int face = voronoi::kNone;
+  int arc = kNone;
+  int node = kNone;
+  int face = kNone;
   double x = 0.0, y = 0.0;  // where
   double amount = 0.0;      // by how much (a length)
 };
@@ -62,9 +62,9 @@ struct RecognitionFailure {
 // bound (the region where the form is negative). Any point of the region propagates to a valid
 // reconstruction; `representative` is the one returned, `margin` its distance to the boundary.
 struct SiteRegion {
-  int face = voronoi::kNone;
-  std::vector<GeneralizedCircle> bounds;
-  voronoi::Point representative;
+  int face = kNone;
+  std::vector<mobius::GeneralizedCircle> bounds;
+  Point representative;
   double margin = 0.0;
 };
 
@@ -81,9 +81,9 @@ struct Reconstruction {
   bool bisector_graph = false;
   bool supported = true;  // false: the input needs a part of the method not implemented yet
   std::string reason;
-  std::vector<voronoi::Site> sites;  // weights normalised so that the largest is 1
+  std::vector<Site> sites;  // weights normalised so that the largest is 1
   std::vector<int> face_site;        // per traced face of the input: index into sites
-  std::vector<std::vector<voronoi::Site>> candidates;  // when two solutions survive
+  std::vector<std::vector<Site>> candidates;  // when two solutions survive
   bool unique = true;  // false: the graph fixes the sites only up to a family (see region)
   std::optional<SiteRegion> region;  // set when the root site ranges over a 2D region (§3)
   std::optional<RecognitionFailure> failure;
@@ -91,11 +91,11 @@ struct Reconstruction {
   // diagram differs from the input when "no".
   std::string voronoi = "unknown";
   std::vector<Difference> voronoi_differences;
-  voronoi::Diagram graph;  // the input with its faces traced (face_site refers to these)
+  Diagram graph;  // the input with its faces traced (face_site refers to these)
   RecognitionTimings timings;
 };
 
 // Takes the graph by value: callers done with theirs move it in (a graph of 10^6 faces is ~200 MB).
-Reconstruction recognize(voronoi::Diagram graph, const RecognitionOptions& options = {});
+Reconstruction recognize(Diagram graph, const RecognitionOptions& options = {});
 
 }  // namespace covmap::recognition

@@ -10,7 +10,7 @@
 #include <limits>
 #include <vector>
 
-#include "voronoi/diagram.h"
+#include "core/diagram.h"
 
 namespace covmap::voronoi {
 

@@ -10,8 +10,6 @@
 namespace covmap::voronoi {
 namespace {
 
-using voronoi::kNone;
-using voronoi::Site;
 
 // The ownership distance of the contract, in one place so every caller computes the same bits.
 inline double weighted_distance(double px, double py, const Site& s) {

@@ -19,7 +19,7 @@
 #include <span>
 #include <vector>
 
-#include "voronoi/diagram.h"
+#include "core/diagram.h"
 
 namespace covmap::voronoi {
 

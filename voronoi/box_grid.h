@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "voronoi/arc_path.h"
-#include "voronoi/engine/parallel.h"
-#include "voronoi/large_buffer.h"
+#include "core/parallel.h"
+#include "core/large_buffer.h"
 
 namespace covmap::voronoi {
 
@@ -70,10 +70,10 @@ BoxGrid make_grid(std::size_t n, BoxOf&& box_of, Box area, std::size_t target, l
   // Counted and filled on both cores, each worker over its own contiguous range of items; within
   // a cell the first range's items come first, so rows are in item order as a sequential fill
   // makes them. `always` is in item order too.
-  const int workers = engine::worker_count(n);
+  const int workers = worker_count(n);
   std::vector<LargeVector<int>> count(workers);
   std::vector<std::vector<int>> unbounded(workers);
-  engine::parallel_chunks(n, workers, [&](std::size_t b, std::size_t e, int w) {
+  parallel_chunks(n, workers, [&](std::size_t b, std::size_t e, int w) {
     count[w].assign(cells, 0);
     for (std::size_t k = b; k < e; ++k) {
       const Box box = box_of(k);
@@ -92,7 +92,7 @@ BoxGrid make_grid(std::size_t n, BoxOf&& box_of, Box area, std::size_t target, l
     g.cell_begin[c + 1] = g.cell_begin[c] + total;
   }
   g.items.resize(g.cell_begin.back());
-  engine::parallel_chunks(n, workers, [&](std::size_t b, std::size_t e, int w) {
+  parallel_chunks(n, workers, [&](std::size_t b, std::size_t e, int w) {
     for (std::size_t k = b; k < e; ++k)
       if (const Box box = box_of(k); gridded(box)) for_cells(box, [&](std::size_t c) { g.items[count[w][c]++] = static_cast<int>(k); });
   });

@@ -12,7 +12,7 @@
 
 #include <vector>
 
-#include "voronoi/diagram.h"
+#include "core/diagram.h"
 
 namespace covmap::voronoi {
 

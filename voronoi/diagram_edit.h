@@ -1,7 +1,7 @@
 // Small edits on a Diagram shared by the engine and by graph repair.
 #pragma once
 
-#include "voronoi/diagram.h"
+#include "core/diagram.h"
 
 namespace covmap::voronoi {
 

@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "voronoi/diagram.h"
+#include "core/diagram.h"
 
 namespace covmap::voronoi {
 

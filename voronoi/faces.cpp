@@ -1,6 +1,6 @@
 #include "voronoi/faces.h"
 
-#include "voronoi/engine/parallel.h"
+#include "core/parallel.h"
 
 #include <algorithm>
 #include <array>
@@ -14,7 +14,7 @@
 
 #include "voronoi/arc_path.h"
 #include "voronoi/box_grid.h"
-#include "voronoi/large_buffer.h"
+#include "core/large_buffer.h"
 #include "voronoi/tolerances.h"
 
 namespace covmap::voronoi {
@@ -181,7 +181,7 @@ TracingGeometry tracing_geometry(const Diagram& d, bool with_boxes) {
   g.segment_area2.assign(arcs, 0.0);
   if (with_boxes) g.box.resize(arcs);
   // Independent per arc: both cores share it (engine/parallel.h).
-  engine::parallel_chunks(arcs, engine::worker_count(arcs), [&](std::size_t b, std::size_t e, int) {
+  parallel_chunks(arcs, worker_count(arcs), [&](std::size_t b, std::size_t e, int) {
     for (std::size_t a = b; a < e; ++a) {
       const Arc& arc = d.arcs[a];
       const Node none{};
@@ -330,7 +330,7 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
   // The continuation of every half-arc, computed once (in parallel; next_of only reads).
   LargeVector<int> next_half(halves, -1);
   if (by_sites) {
-    engine::parallel_chunks(static_cast<std::size_t>(halves), engine::worker_count(halves), [&](std::size_t b, std::size_t e, int) {
+    parallel_chunks(static_cast<std::size_t>(halves), worker_count(halves), [&](std::size_t b, std::size_t e, int) {
       for (int h = static_cast<int>(b); h < static_cast<int>(e); ++h)
         if (label(h) != kNone) next_half[h] = next_of(h);
     });
@@ -339,7 +339,7 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
     // each half-arc arriving at v is the twin of one leaving it, and all the data is v's own.
     const std::size_t nodes = d.nodes.size();
     if (index) index->degenerate_node.resize(nodes);
-    engine::parallel_chunks(nodes, engine::worker_count(nodes), [&](std::size_t b, std::size_t e, int) {
+    parallel_chunks(nodes, worker_count(nodes), [&](std::size_t b, std::size_t e, int) {
       for (std::size_t v = b; v < e; ++v) {
         const auto out = outgoing(static_cast<int>(v));
         for (int c : out) next_half[c ^ 1] = turn_at(out, c ^ 1, [](int) { return true; });
@@ -355,7 +355,7 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
         index->degenerate_node[v] = degenerate;
       }
     });
-    engine::parallel_chunks(static_cast<std::size_t>(halves), engine::worker_count(halves), [&](std::size_t b, std::size_t e, int) {
+    parallel_chunks(static_cast<std::size_t>(halves), worker_count(halves), [&](std::size_t b, std::size_t e, int) {
       for (int h = static_cast<int>(b); h < static_cast<int>(e); ++h)
         if (info(d, h).end == kNone) next_half[h] = next_of(h);
     });
@@ -412,11 +412,11 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
   // one. Anything but a permutation (a dangling end, a walk that does not come back) is left to the
   // sequential walk.
   auto walk_in_parallel = [&]() {
-    const int workers = engine::worker_count(static_cast<std::size_t>(halves));
+    const int workers = worker_count(static_cast<std::size_t>(halves));
     std::vector<LargeVector<Cycle>> found(workers);
     std::vector<LargeVector<int>> walked(workers);
     std::atomic<bool> malformed{false};
-    engine::parallel_chunks(static_cast<std::size_t>(halves), workers, [&](std::size_t b, std::size_t e, int w) {
+    parallel_chunks(static_cast<std::size_t>(halves), workers, [&](std::size_t b, std::size_t e, int w) {
       LargeVector<int>& out = walked[w];
       out.reserve(e - b + 64);  // the cycles owned by a range have about as many half-arcs as it
       found[w].reserve((e - b) / 2);
@@ -462,7 +462,7 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
     return true;
   };
   if (by_sites || !walk_in_parallel()) walk_sequentially();
-  engine::parallel_chunks(cycles.size(), engine::worker_count(cycles.size()), [&](std::size_t b, std::size_t e, int) {
+  parallel_chunks(cycles.size(), worker_count(cycles.size()), [&](std::size_t b, std::size_t e, int) {
     for (std::size_t c = b; c < e; ++c) {
       Cycle& cyc = cycles[c];
       // Orientation by signed area: chords (shoelace about the first node, against cancellation
@@ -492,7 +492,7 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
   pool->reserve(cycle_halves.size());
   advise_huge_pages(pool->data(), pool->capacity() * sizeof(HalfArc));
   pool->resize(cycle_halves.size());
-  engine::parallel_chunks(cycle_halves.size(), engine::worker_count(cycle_halves.size()), [&](std::size_t b, std::size_t e, int) {
+  parallel_chunks(cycle_halves.size(), worker_count(cycle_halves.size()), [&](std::size_t b, std::size_t e, int) {
     for (std::size_t k = b; k < e; ++k) (*pool)[k] = half_of(cycle_halves[k]);
   });
   auto add_cycle = [&](Face& face, const Cycle& c) {

@@ -12,8 +12,8 @@
 
 #include <span>
 
-#include "voronoi/diagram.h"
-#include "voronoi/large_buffer.h"
+#include "core/diagram.h"
+#include "core/large_buffer.h"
 
 namespace covmap::voronoi {
 

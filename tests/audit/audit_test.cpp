@@ -1,4 +1,4 @@
-// covmap audit on generated maps (datasets/generate): raster best-server maps of known sensors,
+// covmap audit on generated maps (tools/mapgen): raster best-server maps of known sensors,
 // polygonized, rounded and jittered, with reported sensors carrying small errors and a known set
 // of gross ones. The maps go through the same files and readers as a user's (GeoJSON → io →
 // audit), planar and in lon/lat. Asserted: reconstructed positions within a stated multiple of the
@@ -10,12 +10,12 @@
 #include <map>
 #include <random>
 
-#include "datasets/generate/coverage_map_files.h"
-#include "datasets/generate/coverage_map_generator.h"
-#include "datasets/generate/site_layouts.h"
+#include "tools/mapgen/coverage_map_files.h"
+#include "tools/mapgen/coverage_map_generator.h"
+#include "tools/mapgen/site_layouts.h"
 #include "io/coverage_map.h"
 #include "io/reported_sensors.h"
-#include "recognition/audit.h"
+#include "audit/audit.h"
 
 namespace covmap {
 namespace {
@@ -38,11 +38,11 @@ struct TempDir {
 struct AuditRun {
   mapgen::CoverageMap generated;
   io::CoverageMap map;
-  recognition::AuditResult result;
+  audit::AuditResult result;
 };
 
 // Generates a map, writes it, reads it back like `covmap audit` does and audits it.
-AuditRun run(const mapgen::CoverageMapOptions& options, const std::vector<voronoi::Site>& sites, double alpha) {
+AuditRun run(const mapgen::CoverageMapOptions& options, const std::vector<Site>& sites, double alpha) {
   AuditRun r;
   r.generated = mapgen::generate_coverage_map(sites, options);
   TempDir dir;
@@ -54,12 +54,12 @@ AuditRun run(const mapgen::CoverageMapOptions& options, const std::vector<vorono
   so.alpha = alpha;
   so.planar = mo.planar;
   so.projection = r.map.projection ? &*r.map.projection : nullptr;
-  std::vector<recognition::ReportedSensorValues> reported;
+  std::vector<audit::ReportedSensorValues> reported;
   for (const auto& s : io::read_reported_sensors(dir.path / mapgen::kSensorsFileName, so))
     reported.push_back({s.id, s.position, s.weight, s.tx_power_dbm, s.position_sigma_m, s.power_sigma_db});
-  recognition::AuditOptions ao;
+  audit::AuditOptions ao;
   ao.alpha = alpha;
-  r.result = recognition::audit(r.map.cells, reported, ao);
+  r.result = audit::audit(r.map.cells, reported, ao);
   return r;
 }
 
@@ -73,7 +73,7 @@ mapgen::CoverageMapOptions base_options(std::uint64_t seed) {
   return o;
 }
 
-std::vector<voronoi::Site> sensors(int n, std::uint64_t seed) {
+std::vector<Site> sensors(int n, std::uint64_t seed) {
   mapgen::RandomSitesOptions ro;
   ro.count = n;
   ro.width_m = 20'000.0;
@@ -86,14 +86,14 @@ std::vector<voronoi::Site> sensors(int n, std::uint64_t seed) {
 // The reconstruction is measured in bins: how far each sensor that owns a cell of at least
 // 20 bins lies from the truth (smaller cells carry too little boundary to fix a position).
 std::vector<double> position_errors_in_bins(const AuditRun& r, double bin) {
-  std::map<std::string, voronoi::Point> truth;
+  std::map<std::string, Point> truth;
   std::map<std::string, std::size_t> bins;
   for (const auto& t : r.generated.truth) truth[t.id] = t.position, bins[t.id] = t.bins;
   std::vector<double> out;
   for (const auto& s : r.result.sensors) {
     if (!s.in_map || bins[s.id] < 20) continue;
-    voronoi::Point p = s.position;
-    voronoi::Point q = truth[s.id];
+    Point p = s.position;
+    Point q = truth[s.id];
     if (r.generated.projection) {
       // Truth is in the generator's plane, the audit's in io's: compare through lon/lat.
       const auto ll = r.map.projection->inverse(p);

@@ -1,13 +1,13 @@
 // Constructions of the checker's arc geometry against closed forms.
-#include "voronoi/check/arc_geometry.h"
+#include "check/arc_geometry.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "tests/check/hand_diagrams.h"
+#include "../check/hand_diagrams.h"
 
-namespace covmap::voronoi::check_detail {
+namespace covmap::check::detail {
 namespace {
 
 using testing::circle_arc;
@@ -86,4 +86,4 @@ TEST(ArcGeometry, ClipHugeCircleToSmallBox) {
 }
 
 }  // namespace
-}  // namespace covmap::voronoi::check_detail
+}  // namespace covmap::check::detail

@@ -1,10 +1,10 @@
 // Options validation, kind names and report summaries.
 #include <gtest/gtest.h>
 
-#include "tests/check/hand_diagrams.h"
-#include "voronoi/check/check.h"
+#include "../check/hand_diagrams.h"
+#include "check/check.h"
 
-namespace covmap::voronoi {
+namespace covmap::check {
 namespace {
 
 TEST(CheckOptions, DefaultsAreValid) {
@@ -76,4 +76,4 @@ TEST(CheckDiagram, EmptyAndSingleSiteAreFine) {
 }
 
 }  // namespace
-}  // namespace covmap::voronoi
+}  // namespace covmap::check

@@ -6,9 +6,9 @@
 #include <cmath>
 #include <optional>
 
-#include "voronoi/check/check.h"
+#include "check/check.h"
 
-namespace covmap::voronoi::testing {
+namespace covmap::check::testing {
 
 // The first reported violation of kind, if any.
 inline std::optional<Violation> first_of(const CheckReport& r, ViolationKind kind) {
@@ -27,4 +27,4 @@ inline ::testing::AssertionResult is_ok(const CheckReport& r) {
   return ::testing::AssertionFailure() << r.brief();
 }
 
-}  // namespace covmap::voronoi::testing
+}  // namespace covmap::check::testing

@@ -1,10 +1,10 @@
 // Hand-built correct diagrams must pass every check, and the checks must actually have run.
 #include <gtest/gtest.h>
 
-#include "tests/check/check_test_util.h"
-#include "tests/check/hand_diagrams.h"
+#include "../check/check_test_util.h"
+#include "../check/hand_diagrams.h"
 
-namespace covmap::voronoi::testing {
+namespace covmap::check::testing {
 namespace {
 
 void expect_clean(const Diagram& d, std::size_t nodes) {
@@ -73,4 +73,4 @@ TEST(CorrectDiagrams, WithinToleranceIsAccepted) {
 }
 
 }  // namespace
-}  // namespace covmap::voronoi::testing
+}  // namespace covmap::check::testing

@@ -2,10 +2,10 @@
 // place. Expected places come from the construction, never from the checker.
 #include <gtest/gtest.h>
 
-#include "tests/check/check_test_util.h"
-#include "tests/check/hand_diagrams.h"
+#include "../check/check_test_util.h"
+#include "../check/hand_diagrams.h"
 
-namespace covmap::voronoi::testing {
+namespace covmap::check::testing {
 namespace {
 
 TEST(CorruptedDiagrams, MovedNodeIsNotEquidistant) {
@@ -283,4 +283,4 @@ TEST(CorruptedDiagrams, ReportIsCappedButCounted) {
 }
 
 }  // namespace
-}  // namespace covmap::voronoi::testing
+}  // namespace covmap::check::testing

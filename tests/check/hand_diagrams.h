@@ -6,9 +6,9 @@
 #include <cmath>
 #include <utility>
 
-#include "voronoi/diagram.h"
+#include "core/diagram.h"
 
-namespace covmap::voronoi::testing {
+namespace covmap::check::testing {
 
 inline Site site(double x, double y, double w = 1.0) { return Site{"", x, y, w}; }
 
@@ -232,4 +232,4 @@ inline Diagram lattice(int k) {
   return d;
 }
 
-}  // namespace covmap::voronoi::testing
+}  // namespace covmap::check::testing

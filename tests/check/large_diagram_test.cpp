@@ -1,10 +1,10 @@
 // The checker must handle 10^5-site diagrams in well under a minute.
 #include <gtest/gtest.h>
 
-#include "tests/check/check_test_util.h"
-#include "tests/check/hand_diagrams.h"
+#include "../check/check_test_util.h"
+#include "../check/hand_diagrams.h"
 
-namespace covmap::voronoi::testing {
+namespace covmap::check::testing {
 namespace {
 
 TEST(LargeDiagram, LatticeOfHundredThousandSites) {
@@ -26,4 +26,4 @@ TEST(LargeDiagram, OneWrongSideAmongHundredThousand) {
 }
 
 }  // namespace
-}  // namespace covmap::voronoi::testing
+}  // namespace covmap::check::testing

@@ -1,11 +1,11 @@
 // The kd-tree ownership queries must agree exactly with a linear scan written here.
-#include "voronoi/check/weighted_owner.h"
+#include "check/weighted_owner.h"
 
 #include <gtest/gtest.h>
 
 #include <random>
 
-namespace covmap::voronoi::check_detail {
+namespace covmap::check::detail {
 namespace {
 
 std::vector<Site> random_sites(int n, double max_weight, std::mt19937_64& rng) {
@@ -100,4 +100,4 @@ TEST(WeightedOwner, BisectorOffsetStaysAccurateFarAway) {
 }
 
 }  // namespace
-}  // namespace covmap::voronoi::check_detail
+}  // namespace covmap::check::detail

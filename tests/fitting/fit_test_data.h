@@ -16,16 +16,16 @@
 namespace covmap::fitting::testing {
 
 struct MapData {
-  std::vector<voronoi::Site> sites;     // the truth
+  std::vector<Site> sites;     // the truth
   std::vector<BoundarySample> samples;  // exact points on its bisector arcs, sigma 1, chain = arc index
 };
 
 // n sites in the unit square, at least `separation` apart, weights uniform in [w_min, w_max].
-inline std::vector<voronoi::Site> random_sites(int n, std::uint64_t seed, double w_min, double w_max,
+inline std::vector<Site> random_sites(int n, std::uint64_t seed, double w_min, double w_max,
                                                double separation = 0.15) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::vector<voronoi::Site> sites;
+  std::vector<Site> sites;
   while (static_cast<int>(sites.size()) < n) {
     const double x = unit(rng), y = unit(rng), w = w_min + (w_max - w_min) * unit(rng);
     bool far = true;
@@ -40,13 +40,13 @@ inline std::vector<voronoi::Site> random_sites(int n, std::uint64_t seed, double
 
 // per_arc points evenly spread (midpoints of equal parameter steps) along every bisector arc of the
 // sites' diagram inside the square [-0.5, 1.5]²; frame arcs are skipped.
-inline std::vector<BoundarySample> boundary_samples(const std::vector<voronoi::Site>& sites, int per_arc) {
-  const voronoi::Diagram full = voronoi::build_diagram(sites);
-  const voronoi::Diagram d = voronoi::clip_diagram(full, {{-0.5, -0.5}, {1.5, -0.5}, {1.5, 1.5}, {-0.5, 1.5}});
+inline std::vector<BoundarySample> boundary_samples(const std::vector<Site>& sites, int per_arc) {
+  const Diagram full = voronoi::build_diagram(sites);
+  const Diagram d = voronoi::clip_diagram(full, {{-0.5, -0.5}, {1.5, -0.5}, {1.5, 1.5}, {-0.5, 1.5}});
   std::vector<BoundarySample> samples;
   for (std::size_t i = 0; i < d.arcs.size(); ++i) {
-    const voronoi::Arc& arc = d.arcs[i];
-    if (arc.frame || arc.left_site == voronoi::kNone || arc.right_site == voronoi::kNone) continue;
+    const Arc& arc = d.arcs[i];
+    if (arc.frame || arc.left_site == kNone || arc.right_site == kNone) continue;
     const voronoi::ArcPathView path = voronoi::arc_path(arc, d.nodes);
     if (!std::isfinite(path.s0) || !std::isfinite(path.s1)) continue;
     for (int j = 0; j < per_arc; ++j) {
@@ -65,7 +65,7 @@ inline MapData make_map(int n, std::uint64_t seed, double w_min, double w_max, i
 }
 
 // The truth moved by up to ±shift in x and y and its weights scaled by up to e^±log_shift.
-inline std::vector<voronoi::Site> perturbed(std::vector<voronoi::Site> sites, std::uint64_t seed, double shift,
+inline std::vector<Site> perturbed(std::vector<Site> sites, std::uint64_t seed, double shift,
                                             double log_shift) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);

@@ -21,7 +21,7 @@ struct Errors {
   double weight = 0.0;
 };
 
-Errors compare(const std::vector<voronoi::Site>& fitted, const std::vector<voronoi::Site>& truth) {
+Errors compare(const std::vector<Site>& fitted, const std::vector<Site>& truth) {
   double max_true = 0.0;
   for (const auto& s : truth) max_true = std::max(max_true, s.weight);
   Errors e;
@@ -79,7 +79,7 @@ TEST(ExactRecovery, ProjectedCoordinatesInMetres) {
   // A map 1 km across, 500 km from the origin (projected coordinates): the same relative accuracy.
   const auto map = make_map(7, 2, 1.0, 2.0, 8);
   const auto to_metres = [](double v) { return 5e5 + 1000.0 * v; };
-  std::vector<voronoi::Site> truth = map.sites;
+  std::vector<Site> truth = map.sites;
   for (auto& s : truth) {
     s.x = to_metres(s.x);
     s.y = to_metres(s.y);

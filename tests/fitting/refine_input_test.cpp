@@ -11,11 +11,11 @@
 namespace covmap::fitting {
 namespace {
 
-const std::vector<voronoi::Site> kSites = {{"a", 0, 0, 1}, {"b", 1, 0, 1}, {"c", 0, 1, 2}};
+const std::vector<Site> kSites = {{"a", 0, 0, 1}, {"b", 1, 0, 1}, {"c", 0, 1, 2}};
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // The message of the invalid_argument refine_sites throws ("" if it does not throw).
-std::string rejection(std::vector<voronoi::Site> sites, std::vector<BoundarySample> samples,
+std::string rejection(std::vector<Site> sites, std::vector<BoundarySample> samples,
                       std::vector<SitePrior> priors = {}, RefineOptions options = {}) {
   try {
     refine_sites(sites, samples, priors, options);

@@ -19,7 +19,7 @@ using testing::noisy;
 constexpr double kNoise = 1e-3;  // σ of the sample noise, in x and y; the sites span ~1
 
 // Per site: x, y and log(w / w_reference), the quantities the uncertainties describe.
-std::array<double, 3> parameters(const RefineResult& result, const std::vector<voronoi::Site>& sites, int i) {
+std::array<double, 3> parameters(const RefineResult& result, const std::vector<Site>& sites, int i) {
   const int ref = result.uncertainty[i].log_weight_reference;
   return {sites[i].x, sites[i].y, std::log(sites[i].weight / sites[ref].weight)};
 }

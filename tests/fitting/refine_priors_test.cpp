@@ -42,7 +42,7 @@ TEST(Priors, SiteWithoutSamplesKeepsItsInitialValues) {
   EXPECT_FALSE(result.uncertainty[k].available);
   // Its weight keeps its ratio to the reference site (whose log weight is held).
   const int ref = result.uncertainty[0].log_weight_reference;
-  ASSERT_NE(ref, voronoi::kNone);
+  ASSERT_NE(ref, kNone);
   EXPECT_NEAR(result.sites[k].weight / result.sites[ref].weight, start[k].weight / start[ref].weight, 1e-12);
   for (int i = 0; i < 7; ++i) {
     if (i != k) {
@@ -137,7 +137,7 @@ TEST(Priors, SiteWithTwoSamplesIsUndeterminedUnlessAPriorFixesIt) {
 TEST(Priors, TwoSitesSeenOnlyThroughTheirBisectorAreUndetermined) {
   // One Apollonius circle fixes 3 numbers of the 5 free ones: each site alone (the other held) is
   // pinned, so only the joint (dense) diagnosis finds that neither is determined.
-  const std::vector<voronoi::Site> sites = {{"a", 0.0, 0.0, 1.5}, {"b", 1.0, 0.2, 1.0}};
+  const std::vector<Site> sites = {{"a", 0.0, 0.0, 1.5}, {"b", 1.0, 0.2, 1.0}};
   const auto samples = testing::boundary_samples(sites, 40);
   ASSERT_GT(samples.size(), 30u);
   const RefineResult result = refine_sites(sites, samples);
@@ -155,7 +155,7 @@ TEST(Priors, WeightPriorsFixTheScaleInsteadOfTheReferenceSite) {
   const std::vector<SitePrior> priors = {{1, {}, 0.0, std::log(map.sites[1].weight), 0.2}};
   const RefineResult result = refine_sites(map.sites, samples, priors);
   for (std::size_t i = 0; i < map.sites.size(); ++i) {
-    EXPECT_EQ(result.uncertainty[i].log_weight_reference, voronoi::kNone);
+    EXPECT_EQ(result.uncertainty[i].log_weight_reference, kNone);
     // Absolute log weights: every one carries (about) the prior's σ, none is exactly 0.
     EXPECT_GT(result.uncertainty[i].sigma_log_weight, 0.19);
     EXPECT_LT(result.uncertainty[i].sigma_log_weight, 0.21);

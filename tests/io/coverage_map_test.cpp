@@ -19,7 +19,6 @@ namespace {
 
 using Json = nlohmann::json;
 using testing::input_error_from;
-using voronoi::Point;
 
 // ---- building GeoJSON ----
 

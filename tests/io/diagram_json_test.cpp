@@ -14,12 +14,11 @@ namespace covmap::io {
 namespace {
 
 using testing::input_error_from;
-using voronoi::kNone;
 
 // Bit-level equality, so 0.0 vs -0.0 or a last-digit change counts as different.
 bool same(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
 
-void expect_identical(const voronoi::Diagram& a, const voronoi::Diagram& b) {
+void expect_identical(const Diagram& a, const Diagram& b) {
   ASSERT_EQ(a.sites.size(), b.sites.size());
   for (std::size_t i = 0; i < a.sites.size(); ++i) {
     EXPECT_EQ(a.sites[i].id, b.sites[i].id);
@@ -40,11 +39,11 @@ void expect_identical(const voronoi::Diagram& a, const voronoi::Diagram& b) {
     EXPECT_EQ(x.right_site, y.right_site) << "arc " << i;
     EXPECT_EQ(x.frame, y.frame) << "arc " << i;
     ASSERT_EQ(x.curve.index(), y.curve.index()) << "arc " << i;
-    if (const auto* c = std::get_if<voronoi::Circle>(&x.curve)) {
-      const auto& d = std::get<voronoi::Circle>(y.curve);
+    if (const auto* c = std::get_if<Circle>(&x.curve)) {
+      const auto& d = std::get<Circle>(y.curve);
       EXPECT_TRUE(same(c->cx, d.cx) && same(c->cy, d.cy) && same(c->r, d.r)) << "arc " << i;
     } else {
-      const auto &l = std::get<voronoi::Line>(x.curve), &m = std::get<voronoi::Line>(y.curve);
+      const auto &l = std::get<Line>(x.curve), &m = std::get<Line>(y.curve);
       EXPECT_TRUE(same(l.x, m.x) && same(l.y, m.y) && same(l.dx, m.dx) && same(l.dy, m.dy)) << "arc " << i;
     }
   }
@@ -69,17 +68,17 @@ void expect_identical(const voronoi::Diagram& a, const voronoi::Diagram& b) {
 
 // Not a real Voronoi diagram (the reader checks structure, not geometry), but it has every feature
 // the format can express, and doubles chosen to break a careless printer.
-voronoi::Diagram sample() {
-  voronoi::Diagram d;
+Diagram sample() {
+  Diagram d;
   d.sites = {{"a", 0.1, -0.0, 1.0 / 3.0}, {"b", 5e-324, 1e300, 2.0}, {"c & <d>", -7.25, std::nextafter(1.0, 2.0), DBL_MAX}};
   d.nodes = {{1.0 / 3.0, 2.0 / 3.0}, {-1e-300, 123456789.123456789}, {0.30000000000000004, 0.0}};
   d.arcs = {
-      {kNone, kNone, voronoi::Circle{-1, 0, 2}, true, 0, 1, false},                   // full circle
-      {0, 1, voronoi::Circle{0.1, 0.2, std::sqrt(2.0)}, false, 1, 2, false},         // clockwise arc
-      {kNone, kNone, voronoi::Line{1, 0, 0, 1}, true, 0, 2, false},                  // whole line
-      {2, kNone, voronoi::Line{0.1, 0.7, -std::sqrt(0.5), std::sqrt(0.5)}, true, 2, 1, false},  // ray
-      {kNone, 0, voronoi::Line{3, 3, 1, 0}, true, 1, 0, false},                      // ray from infinity
-      {1, 2, voronoi::Line{0, 0, 1, 1}, true, 2, kNone, true},                       // frame
+      {kNone, kNone, Circle{-1, 0, 2}, true, 0, 1, false},                   // full circle
+      {0, 1, Circle{0.1, 0.2, std::sqrt(2.0)}, false, 1, 2, false},         // clockwise arc
+      {kNone, kNone, Line{1, 0, 0, 1}, true, 0, 2, false},                  // whole line
+      {2, kNone, Line{0.1, 0.7, -std::sqrt(0.5), std::sqrt(0.5)}, true, 2, 1, false},  // ray
+      {kNone, 0, Line{3, 3, 1, 0}, true, 1, 0, false},                      // ray from infinity
+      {1, 2, Line{0, 0, 1, 1}, true, 2, kNone, true},                       // frame
   };
   d.faces = {{0, true, false, {{{0, true}}}},
              {1, false, false, {{{0, false}}, {{3, false}, {4, true}}}},
@@ -88,7 +87,7 @@ voronoi::Diagram sample() {
   return d;
 }
 
-std::string to_json(const voronoi::Diagram& d) {
+std::string to_json(const Diagram& d) {
   std::ostringstream out;
   write_diagram_json(d, out);
   return out.str();

@@ -27,7 +27,7 @@ LonLat geodesic_step(LonLat from, double azimuth_deg, double metres) {
   return to;
 }
 
-double planar_m(voronoi::Point a, voronoi::Point b) { return std::hypot(a.x - b.x, a.y - b.y); }
+double planar_m(Point a, Point b) { return std::hypot(a.x - b.x, a.y - b.y); }
 
 TEST(LocalProjection, CentreMapsToOriginWithScaleOne) {
   const auto p = LocalProjection::about(8.0084, 47.1044);

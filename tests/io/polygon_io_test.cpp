@@ -12,7 +12,6 @@ namespace {
 
 using testing::input_error_from;
 using testing::TempDir;
-using voronoi::Point;
 
 double signed_area(const std::vector<Point>& ring) {
   double twice = 0;

@@ -246,7 +246,7 @@ TEST(ReadSites, UnreadableFile) {
 // ---- writing ----
 
 TEST(WriteSitesJson, RoundTripsBitExactly) {
-  const std::vector<voronoi::Site> sites = {{"a", 0.1, -0.0, 1.0 / 3.0},
+  const std::vector<Site> sites = {{"a", 0.1, -0.0, 1.0 / 3.0},
                                             {"b \"quoted\" \xC3\xA9", 5e-324, DBL_MAX, std::nextafter(1.0, 2.0)},
                                             {"7", -123456789.123456789, 1e-300, 1e300}};
   std::ostringstream out;

@@ -11,8 +11,6 @@
 namespace covmap::recognition {
 namespace {
 
-using voronoi::Diagram;
-using voronoi::Site;
 
 Diagram sample(int seed) {
   std::mt19937_64 rng(seed);
@@ -29,8 +27,8 @@ TEST(Compare, EqualToARenumberedCopy) {
   const int n = static_cast<int>(b.nodes.size());
   std::reverse(b.nodes.begin(), b.nodes.end());
   for (auto& arc : b.arcs) {
-    if (arc.from != voronoi::kNone) arc.from = n - 1 - arc.from;
-    if (arc.to != voronoi::kNone) arc.to = n - 1 - arc.to;
+    if (arc.from != kNone) arc.from = n - 1 - arc.from;
+    if (arc.to != kNone) arc.to = n - 1 - arc.to;
   }
   std::reverse(b.arcs.begin(), b.arcs.end());
   const Comparison c = compare_graphs(a, b);
@@ -61,7 +59,7 @@ TEST(Compare, MissingArcMovedNodeAndWrongRadiusAreLocated) {
   {
     Diagram b = a;
     for (auto& arc : b.arcs)
-      if (auto* circle = std::get_if<voronoi::Circle>(&arc.curve)) {
+      if (auto* circle = std::get_if<Circle>(&arc.curve)) {
         circle->r *= 1.001;
         break;
       }

@@ -15,19 +15,19 @@ namespace {
 TEST(GraphRepair, SplitArcsAreJoinedBack) {
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(0.0, 1.0), w(1.0, 2.0);
-  std::vector<voronoi::Site> sites;
+  std::vector<Site> sites;
   for (int i = 0; i < 25; ++i) sites.push_back({std::to_string(i), u(rng), u(rng), w(rng)});
-  const voronoi::Diagram d = voronoi::build_diagram(sites);
-  voronoi::Diagram split = d;
+  const Diagram d = voronoi::build_diagram(sites);
+  Diagram split = d;
   int splits = 0;
   for (std::size_t a = 0; a < d.arcs.size() && splits < 10; ++a) {
-    const voronoi::Arc arc = d.arcs[a];
-    if (arc.from == voronoi::kNone || arc.to == voronoi::kNone || arc.from == arc.to) continue;
+    const Arc arc = d.arcs[a];
+    if (arc.from == kNone || arc.to == kNone || arc.from == arc.to) continue;
     const voronoi::ArcPathView p = voronoi::arc_path(arc, d.nodes);
-    const voronoi::Point mid = p.at(0.5 * (p.s0 + p.s1));
+    const Point mid = p.at(0.5 * (p.s0 + p.s1));
     const int node = static_cast<int>(split.nodes.size());
     split.nodes.push_back({mid.x, mid.y});
-    voronoi::Arc second = arc;
+    Arc second = arc;
     split.arcs[a].to = node;
     second.from = node;
     // Store the second half reversed, to exercise orientation handling.

@@ -18,12 +18,6 @@
 namespace covmap::recognition {
 namespace {
 
-using voronoi::Arc;
-using voronoi::Diagram;
-using voronoi::HalfArc;
-using voronoi::kNone;
-using voronoi::Point;
-using voronoi::Site;
 
 // f's boundary as a polygon of points sampled along its arcs.
 std::vector<Point> sampled_boundary(const Diagram& d, std::span<const HalfArc> cycle) {
@@ -55,7 +49,7 @@ struct Instance {
 // D with orphan face `face` replaced as described above, when f is a triangle between three
 // distinct other sites whose common node lies inside f.
 std::optional<Instance> without_face(const Diagram& d, const std::vector<Site>& sites, int face) {
-  const voronoi::Face& f = d.faces[face];
+  const Face& f = d.faces[face];
   if (!f.orphan || f.boundaries.size() != 1 || f.boundaries[0].size() != 3) return std::nullopt;
   const auto& cycle = f.boundaries[0];
   std::vector<int> corners, neighbours;

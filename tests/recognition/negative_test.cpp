@@ -14,11 +14,6 @@
 namespace covmap::recognition {
 namespace {
 
-using voronoi::Arc;
-using voronoi::Diagram;
-using voronoi::kNone;
-using voronoi::Point;
-using voronoi::Site;
 
 std::vector<Site> random_sites(std::mt19937_64& rng, int n) {
   std::uniform_real_distribution<double> u(0.0, 1.0), w(1.0, 3.0);
@@ -28,14 +23,14 @@ std::vector<Site> random_sites(std::mt19937_64& rng, int n) {
 }
 
 // The circle through a, m, b, travelled from a via m to b.
-std::optional<std::pair<voronoi::Circle, bool>> circle_through(Point a, Point m, Point b) {
+std::optional<std::pair<Circle, bool>> circle_through(Point a, Point m, Point b) {
   const double d = 2 * (a.x * (m.y - b.y) + m.x * (b.y - a.y) + b.x * (a.y - m.y));
   if (std::abs(d) < 1e-14) return std::nullopt;
   const double a2 = a.x * a.x + a.y * a.y, m2 = m.x * m.x + m.y * m.y, b2 = b.x * b.x + b.y * b.y;
   const double cx = (a2 * (m.y - b.y) + m2 * (b.y - a.y) + b2 * (a.y - m.y)) / d;
   const double cy = (a2 * (b.x - m.x) + m2 * (a.x - b.x) + b2 * (m.x - a.x)) / d;
   const bool ccw = (m.x - a.x) * (b.y - a.y) - (m.y - a.y) * (b.x - a.x) < 0;  // a→m→b turns left
-  return std::make_pair(voronoi::Circle{cx, cy, std::hypot(a.x - cx, a.y - cy)}, ccw);
+  return std::make_pair(Circle{cx, cy, std::hypot(a.x - cx, a.y - cy)}, ccw);
 }
 
 int degree(const Diagram& d, int v) {
@@ -58,7 +53,7 @@ TEST(Negative, ShiftedNodeIsRejected) {
       bool ok = true;
       for (const Arc& a : d.arcs)
         if ((a.from == static_cast<int>(n) || a.to == static_cast<int>(n)) &&
-            (!std::holds_alternative<voronoi::Circle>(a.curve) || a.from == kNone || a.to == kNone || a.from == a.to))
+            (!std::holds_alternative<Circle>(a.curve) || a.from == kNone || a.to == kNone || a.from == a.to))
           ok = false;
       if (ok) v = static_cast<int>(n);
     }
@@ -136,20 +131,20 @@ TEST(Negative, ArcWhoseEndsAreOffItsCircleIsNamed) {
   int checked = 0;
   for (int trial = 0; trial < 20; ++trial) {
     std::uniform_real_distribution<double> u(0.0, 1.0), w(1.0, 2.0);
-    std::vector<voronoi::Site> sites;
+    std::vector<Site> sites;
     for (int i = 0; i < 15; ++i) sites.push_back({std::to_string(i), u(rng), u(rng), w(rng)});
-    voronoi::Diagram d = voronoi::build_diagram(sites);
+    Diagram d = voronoi::build_diagram(sites);
     int changed = -1;
     double old_r = 0;
     for (std::size_t a = 0; a < d.arcs.size(); ++a)
-      if (auto* c = std::get_if<voronoi::Circle>(&d.arcs[a].curve); c && d.arcs[a].from != voronoi::kNone && c->r < 10) {
+      if (auto* c = std::get_if<Circle>(&d.arcs[a].curve); c && d.arcs[a].from != kNone && c->r < 10) {
         old_r = c->r;
         c->r *= 1.01;
         changed = static_cast<int>(a);
         break;
       }
     if (changed < 0) continue;
-    const voronoi::Arc arc = d.arcs[changed];
+    const Arc arc = d.arcs[changed];
     const Reconstruction r = recognize(d);
     ASSERT_FALSE(r.bisector_graph) << "trial " << trial;
     ASSERT_TRUE(r.failure.has_value());

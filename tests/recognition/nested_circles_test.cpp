@@ -8,15 +8,13 @@
 #include <cmath>
 #include <random>
 
-#include "recognition/feasible_region.h"
+#include "mobius/feasible_region.h"
 #include "recognition/recognize.h"
 #include "voronoi/engine.h"
 
 namespace covmap::recognition {
 namespace {
 
-using voronoi::Diagram;
-using voronoi::Site;
 
 // Islands: each new site sits near a parent site, lighter, so that its region is a small disk
 // inside the parent's region; children nest inside children up to three levels (each level is
@@ -49,8 +47,8 @@ std::vector<Site> nested_sites(std::mt19937_64& rng, int roots, int islands) {
 }
 
 // The site that owns the face on the left of a half-arc, read from the engine's labels.
-int owner_on_left(const Diagram& labelled, const voronoi::HalfArc& h) {
-  const voronoi::Arc& a = labelled.arcs[h.arc];
+int owner_on_left(const Diagram& labelled, const HalfArc& h) {
+  const Arc& a = labelled.arcs[h.arc];
   return h.forward ? a.left_site : a.right_site;
 }
 
@@ -74,15 +72,15 @@ int run_round_trips(int roots, int trials, std::uint64_t seed) {
     const auto& face = r.graph.faces[r.region->face];
     if (!face.boundaries.empty() && !face.boundaries.front().empty()) {
       const int truth = owner_on_left(d, face.boundaries.front().front());
-      EXPECT_NE(truth, voronoi::kNone);
-      if (truth == voronoi::kNone) continue;
-      const Complex z(sites[truth].x, sites[truth].y);
-      for (const GeneralizedCircle& b : r.region->bounds)
+      EXPECT_NE(truth, kNone);
+      if (truth == kNone) continue;
+      const mobius::Complex z(sites[truth].x, sites[truth].y);
+      for (const mobius::GeneralizedCircle& b : r.region->bounds)
         EXPECT_GT(signed_distance_inside(b, z), -1e-9 * 100.0 * roots) << "trial " << trial;
     }
     // The representative is inside every bound by the stated margin.
-    const Complex rep(r.region->representative.x, r.region->representative.y);
-    for (const GeneralizedCircle& b : r.region->bounds)
+    const mobius::Complex rep(r.region->representative.x, r.region->representative.y);
+    for (const mobius::GeneralizedCircle& b : r.region->bounds)
       EXPECT_GE(signed_distance_inside(b, rep), r.region->margin * (1 - 1e-9)) << "trial " << trial;
     ++checked;
   }
@@ -97,10 +95,10 @@ TEST(NestedCircles, IslandsBetweenParallelLinesRoundTrip) {
   EXPECT_GT(run_round_trips(3, 300, 22), 150);
 }
 
-Diagram circles_only(const std::vector<voronoi::Circle>& circles) {
+Diagram circles_only(const std::vector<Circle>& circles) {
   Diagram g;
   for (const auto& c : circles) {
-    voronoi::Arc a;
+    Arc a;
     a.curve = c;
     g.arcs.push_back(a);
   }
@@ -115,7 +113,7 @@ TEST(NestedCircles, DisjointSolutionSetsAreRejected) {
   const Reconstruction r = recognize(g);
   EXPECT_FALSE(r.bisector_graph);
   ASSERT_TRUE(r.failure.has_value());
-  EXPECT_NE(r.failure->face, voronoi::kNone);
+  EXPECT_NE(r.failure->face, kNone);
   EXPECT_NE(r.reason.find("face"), std::string::npos) << r.reason;
 }
 
@@ -126,11 +124,11 @@ TEST(NestedCircles, OverlappingSolutionSetsAreAccepted) {
   const Reconstruction r = recognize(g);
   ASSERT_TRUE(r.bisector_graph) << r.reason;
   ASSERT_TRUE(r.region.has_value());
-  const Complex rep(r.region->representative.x, r.region->representative.y);
+  const mobius::Complex rep(r.region->representative.x, r.region->representative.y);
   EXPECT_GT(std::abs(rep), 1.0);
   EXPECT_LT(std::abs(rep), 2.0);
-  EXPECT_GT(std::abs(rep - Complex(2.5, 0)), 1.0);
-  EXPECT_LT(std::abs(rep - Complex(2.5, 0)), 2.0);
+  EXPECT_GT(std::abs(rep - mobius::Complex(2.5, 0)), 1.0);
+  EXPECT_LT(std::abs(rep - mobius::Complex(2.5, 0)), 2.0);
   EXPECT_EQ(r.voronoi, "yes");
   EXPECT_EQ(r.sites.size(), 5u);
 }

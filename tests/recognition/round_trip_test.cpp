@@ -14,8 +14,6 @@
 namespace covmap::recognition {
 namespace {
 
-using voronoi::Diagram;
-using voronoi::Site;
 
 std::vector<Site> random_sites(std::mt19937_64& rng, int n, bool equal_weights) {
   std::uniform_real_distribution<double> u(0.0, 1.0), w(1.0, 2.0);
@@ -98,9 +96,9 @@ TEST(RoundTrip, OrphanRichDiagramsAreRecovered) {
     // Each traced face's site is the one the engine labelled it with (matched by position).
     for (std::size_t f = 0; f < r.graph.faces.size(); ++f) {
       const auto& face = r.graph.faces[f];
-      if (face.boundaries.empty() || face.boundaries.front().empty() || r.face_site[f] == voronoi::kNone) continue;
-      const voronoi::HalfArc h = face.boundaries.front().front();
-      const voronoi::Arc& a = d.arcs[h.arc];
+      if (face.boundaries.empty() || face.boundaries.front().empty() || r.face_site[f] == kNone) continue;
+      const HalfArc h = face.boundaries.front().front();
+      const Arc& a = d.arcs[h.arc];
       const int truth = h.forward ? a.left_site : a.right_site;
       const Site& got = r.sites[r.face_site[f]];
       EXPECT_LT(std::hypot(got.x - sites[truth].x, got.y - sites[truth].y), 1e-8) << "trial " << trial << " face " << f;
@@ -123,7 +121,7 @@ TEST(Negative, ShiftedArcIsRejected) {
     Diagram d = voronoi::build_diagram(sites);
     // Enlarge one circle arc's radius by 1%: it is then no bisector of mirror-image sites.
     for (auto& a : d.arcs)
-      if (auto* c = std::get_if<voronoi::Circle>(&a.curve); c && a.from != voronoi::kNone) {
+      if (auto* c = std::get_if<Circle>(&a.curve); c && a.from != kNone) {
         c->r *= 1.01;
         break;
       }
@@ -132,7 +130,7 @@ TEST(Negative, ShiftedArcIsRejected) {
     EXPECT_FALSE(r.bisector_graph) << "trial " << trial;
     if (!r.bisector_graph) {
       ASSERT_TRUE(r.failure.has_value());
-      EXPECT_TRUE(r.failure->arc != voronoi::kNone || r.failure->face != voronoi::kNone);
+      EXPECT_TRUE(r.failure->arc != kNone || r.failure->face != kNone);
       ++rejected;
     }
   }
@@ -152,7 +150,7 @@ namespace {
 // check clips the recomputed diagram to the same frame.
 TEST(RoundTrip, ClippedDiagramsAreRecovered) {
   std::mt19937_64 rng(31);
-  const std::vector<voronoi::Point> window = {{0.2, 0.2}, {0.8, 0.2}, {0.8, 0.8}, {0.2, 0.8}};
+  const std::vector<Point> window = {{0.2, 0.2}, {0.8, 0.2}, {0.8, 0.8}, {0.2, 0.8}};
   int recognised = 0;
   for (int trial = 0; trial < 100; ++trial) {
     const auto sites = random_sites(rng, 40, trial % 3 == 0);
@@ -207,7 +205,7 @@ TEST(RoundTrip, GridSitesWithHighDegreeNodesAreRecovered) {
     std::vector<int> degree(d.nodes.size(), 0);
     for (const auto& a : d.arcs)
       for (int v : {a.from, a.to})
-        if (v != voronoi::kNone) ++degree[v];
+        if (v != kNone) ++degree[v];
     if (std::any_of(degree.begin(), degree.end(), [](int k) { return k > 3; })) ++high_degree;
     const Reconstruction r = recognize(d);
     if (!r.supported) continue;

@@ -1,6 +1,6 @@
 // The engine against an independent brute-force oracle on tiny inputs (2..7 sites).
 //
-// The oracle shares no code with the engine (nor with voronoi/check); it works straight from the
+// The oracle shares no code with the engine (nor with check/); it works straight from the
 // MWVD definition (p belongs to the site minimising |p - s| / w), in long double:
 //  1. Nodes: for every triple of sites, intersect two of its bisectors (Apollonius circle, or the
 //     perpendicular bisector line for equal weights): 0, 1 (tangent) or 2 points. Keep those where
@@ -31,7 +31,7 @@
 #include <variant>
 #include <vector>
 
-#include "voronoi/diagram.h"
+#include "core/diagram.h"
 #include "voronoi/engine.h"
 
 namespace covmap::voronoi {

@@ -7,7 +7,7 @@
 #include <random>
 
 #include "site_families.h"
-#include "voronoi/check/check.h"
+#include "check/check.h"
 #include "voronoi/clip.h"
 #include "voronoi/engine.h"
 #include "voronoi/faces.h"
@@ -38,9 +38,9 @@ TEST_P(ClipChecked, CheckerAndOwnershipAgree) {
     for (int seed = 1; seed <= 12; ++seed) {
       const auto sites = testing::make_sites(GetParam(), 30, seed);
       const Diagram clipped = clip_diagram(build_diagram(sites), *polygon);
-      CheckOptions options;
+      check::CheckOptions options;
       options.boundary_probes = 500;
-      const CheckReport report = check_diagram(clipped, options);
+      const check::CheckReport report = check::check_diagram(clipped, options);
       ASSERT_TRUE(report.ok()) << "seed " << seed << ": " << report.brief();
       // Frame arcs lie on the polygon and their total length is its perimeter.
       double frame = 0, perimeter = 0;

@@ -1,4 +1,4 @@
-// The engine against the independent checker (voronoi/check), on random instances of every input
+// The engine against the independent checker (check/), on random instances of every input
 // family. The checker shares no code with the engine: it tests the MWVD definition directly.
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <tuple>
 
 #include "site_families.h"
-#include "voronoi/check/check.h"
+#include "check/check.h"
 #include "voronoi/engine.h"
 
 namespace covmap::voronoi {
@@ -24,13 +24,13 @@ class EngineChecked : public ::testing::TestWithParam<Case> {};
 
 TEST_P(EngineChecked, CheckerFindsNoViolation) {
   const Case c = GetParam();
-  CheckOptions options;
+  check::CheckOptions options;
   options.boundary_probes = 600;
   options.samples_per_arc = 8;
   for (int seed = 1; seed <= c.seeds; ++seed) {
     const auto sites = testing::make_sites(c.family, c.n, seed);
     const Diagram d = build_diagram(sites);
-    const CheckReport report = check_diagram(d, options);
+    const check::CheckReport report = check::check_diagram(d, options);
     ASSERT_TRUE(report.ok()) << testing::family_name(c.family) << " n=" << sites.size()
                              << " seed=" << seed << ": " << report.brief();
     if (sites.size() >= 3 && c.family != Family::Collinear) {
@@ -101,7 +101,7 @@ TEST(EngineSpecialCases, CocircularWeightedSitesMeetInOneNode) {
     for (int end : {a.from, a.to})
       if (end != kNone && std::hypot(d.nodes[end].x, d.nodes[end].y) < 1e-9) ++arcs_at_origin;
   EXPECT_GE(arcs_at_origin, 3);
-  const CheckReport report = check_diagram(d);
+  const check::CheckReport report = check::check_diagram(d);
   EXPECT_TRUE(report.ok()) << report.brief();
 }
 
@@ -140,10 +140,10 @@ TEST(EngineLarge, ParallelExtractionIsComplete) {
   for (const Arc& a : d.arcs) keys.emplace_back(a.left_site, a.right_site, a.from, a.to);
   std::sort(keys.begin(), keys.end());
   EXPECT_EQ(std::adjacent_find(keys.begin(), keys.end()), keys.end());
-  CheckOptions options;
+  check::CheckOptions options;
   options.boundary_probes = 3000;
   options.samples_per_arc = 3;
-  const CheckReport report = check_diagram(d, options);
+  const check::CheckReport report = check::check_diagram(d, options);
   EXPECT_TRUE(report.ok()) << report.brief();
 }
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "voronoi/diagram.h"
+#include "core/diagram.h"
 
 namespace covmap::voronoi::testing {
 

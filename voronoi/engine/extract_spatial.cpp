@@ -14,7 +14,7 @@
 #include "voronoi/engine/edge_pattern.h"
 #include "voronoi/engine/extractors.h"
 #include "voronoi/engine/facet_walk.h"
-#include "voronoi/engine/parallel.h"
+#include "core/parallel.h"
 #include "voronoi/tolerances.h"
 
 namespace covmap::voronoi::engine {

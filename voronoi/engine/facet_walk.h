@@ -6,7 +6,7 @@
 #include <array>
 #include <vector>
 
-#include "voronoi/diagram.h"
+#include "core/diagram.h"
 #include "voronoi/engine/power_geometry.h"
 
 namespace covmap::voronoi::engine {

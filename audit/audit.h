@@ -1,0 +1,112 @@
+// audit::audit — does a coverage map agree with the sensors that drew it?
+//
+// Pipeline (issue 4): clean the map into an arc graph (map_cleaning.h); estimate every sensor's
+// position and weight from the fitted bisectors with the recognition machinery run with
+// tolerances (tolerant_sites.h); refine all of them by robust least squares on points sampled along
+// the boundaries (fitting/refine.h); recompute the MWVD of the refined sensors and of the reported
+// ones and compare each with the map cell by cell; judge every reported sensor.
+//
+// Contract: the input is planar (metres; io projects lon/lat first). Sensors reported but absent
+// from the map are listed with verdict "not_in_map"; cells whose sensor was not reported get no
+// verdict. Never throws for a bad fit: a failed stage is reported in the result (stage messages)
+// and the later stages work with what they have. Throws std::invalid_argument for an empty map.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/coverage_cells.h"
+#include "cleaning/map_cleaning.h"
+#include "core/diagram.h"
+
+namespace covmap::audit {
+
+// A sensor as the operator reported it (planar position; weight already derived from the power
+// when a path-loss exponent was given).
+struct ReportedSensorValues {
+  std::string id;
+  Point position;
+  std::optional<double> weight;
+  std::optional<double> tx_power_dbm;
+  std::optional<double> position_sigma_m;  // stated precision
+  std::optional<double> power_sigma_db;
+};
+
+struct AuditOptions {
+  cleaning::CleaningOptions cleaning;
+  // Path-loss exponent: weight = 10^(P / (10 alpha)). Needed to turn weights into powers (dB).
+  std::optional<double> alpha;
+  // Judge a reported sensor inconsistent when its reported values are this unlikely given the map
+  // (a chi-square quantile with 3 degrees of freedom: position x, y and log weight). 16.27 is the
+  // 99.9 % quantile, so about one consistent sensor in 1000 is flagged by chance.
+  double inconsistency_chi2 = 16.27;
+  // Model floors added (in quadrature) to the statistical uncertainties before judging. The
+  // statistical σ treats the staircase as independent noise; its systematic part (a boundary that
+  // is only a few bins from a junction, a cell a few bins wide) is not in it. Measured on generated
+  // maps (docs/ACCURACY.md), reconstruction errors stay within about one bin and one dB where the
+  // statistical σ alone would flag consistent sensors as bins get coarse; one bin and one dB keep
+  // false alarms rare without hiding gross errors (≥ 5 bins, ≥ 6 dB).
+  double position_floor_bins = 1.0;
+  double power_floor_db = 1.0;
+  // Called with (stage name, fraction done in [0, 1]) on long runs; may be empty.
+  std::function<void(const std::string&, double)> progress;
+  // Worker threads of the least-squares refinement. Until the refinement is made independent of
+  // thread scheduling (issue 12), only one thread gives the same numbers on every run.
+  int threads = 2;
+};
+
+struct SensorAudit {
+  std::string id;
+  bool in_map = true;                 // false: reported, but no cell of the map names it
+  Point position;            // reconstructed (refined), map units
+  double weight = 1.0;                // largest = 1
+  std::optional<double> tx_power_dbm; // reconstructed, when reported powers (and alpha) fix the scale
+  // With alpha: the power relative to the strongest sensor, 10·alpha·log10(weight) (≤ 0 dB); known
+  // even when no power was reported, since the map fixes weights up to one common factor.
+  std::optional<double> relative_power_db;
+  double sigma_x = 0.0, sigma_y = 0.0, cov_xy = 0.0;
+  double sigma_position_m = 0.0;      // 1-σ: sqrt of the larger eigenvalue of the 2×2 covariance
+  double sigma_log_weight = 0.0;
+  bool uncertainty_available = false;
+  // Reported values and the comparison, when the sensor was reported.
+  std::optional<ReportedSensorValues> reported;
+  double position_error_m = 0.0;      // |reported - reconstructed|
+  std::optional<double> power_error_db;  // reported - reconstructed power
+  std::optional<double> weight_ratio;    // reported / reconstructed weight, both normalised alike
+  double chi2 = 0.0;                  // the Mahalanobis distance² behind the verdict
+  std::string verdict;                // "consistent", "inconsistent", "not_in_map", "" (not reported)
+  std::string reason;                 // one sentence
+  // Agreement of this sensor's cell with the map (intersection over union of areas), for the
+  // refined and the reported sensors' diagrams (nullopt when not computed).
+  std::optional<double> iou_refined;
+  std::optional<double> iou_reported;
+};
+
+struct DiagramAgreement {
+  double mean_iou = 0.0;          // area-weighted over the map's cells
+  double hausdorff_m = 0.0;       // between the map's boundaries and the recomputed diagram's
+  std::vector<std::string> vanished;  // sensors with a cell in the map but none recomputed
+  std::vector<std::string> appeared;  // sensors with a recomputed cell but none in the map
+};
+
+struct AuditResult {
+  std::vector<SensorAudit> sensors;   // map sensors first (map order), then reported-only ones
+  cleaning::CleanedMap cleaned;
+  Diagram refined_diagram;   // MWVD of the refined sensors, clipped to the map's frame
+  std::optional<Diagram> reported_diagram;  // same for the reported sensors
+  DiagramAgreement refined_agreement;
+  std::optional<DiagramAgreement> reported_agreement;
+  double bin_size_m = 0.0;
+  std::size_t boundary_samples = 0;
+  std::string refinement_summary;     // fitting's brief report
+  std::vector<std::string> messages;  // notable events of each stage, for the report
+  double seconds = 0.0;
+};
+
+AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSensorValues> reported,
+                  const AuditOptions& options = {});
+
+}  // namespace covmap::audit

@@ -1,0 +1,288 @@
+#include "audit/start_values.h"
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <optional>
+
+#include "mobius/bisector_relation.h"
+#include "mobius/mobius.h"
+#include "mobius/node_frame.h"
+#include "audit/tolerances.h"
+#include "voronoi/arc_path.h"
+
+namespace covmap::audit {
+namespace {
+
+
+struct SiteConstraint {
+  bool circle = true;
+  mobius::Complex centre;  // circle centre, or the point
+  double radius = 0.0;
+};
+
+mobius::GeneralizedCircle plane_curve(const Arc& a) {
+  if (const auto* c = std::get_if<Circle>(&a.curve)) return mobius::GeneralizedCircle::from(*c);
+  return mobius::GeneralizedCircle::from(std::get<Line>(a.curve));
+}
+
+// The arcs at each node, in counter-clockwise order of their leaving direction, with the sensor in
+// the sector that follows each one (on the left of the leaving direction).
+struct Spoke {
+  int arc;
+  double angle;
+  int sector_site;
+};
+
+std::vector<std::vector<Spoke>> spokes_at_nodes(const Diagram& g) {
+  std::vector<std::vector<Spoke>> at(g.nodes.size());
+  for (std::size_t a = 0; a < g.arcs.size(); ++a) {
+    const Arc& arc = g.arcs[a];
+    if (arc.from == kNone && arc.to == kNone) continue;
+    const voronoi::ArcPathView p = voronoi::arc_path(arc, g.nodes);
+    if (arc.from != kNone) {
+      const Point t = p.tangent(p.s0);
+      at[arc.from].push_back({static_cast<int>(a), std::atan2(t.y, t.x), arc.left_site});
+    }
+    if (arc.to != kNone) {
+      const Point t = p.tangent(p.s1);
+      at[arc.to].push_back({static_cast<int>(a), std::atan2(-t.y, -t.x), arc.right_site});
+    }
+  }
+  for (auto& s : at) std::sort(s.begin(), s.end(), [](const Spoke& x, const Spoke& y) { return x.angle < y.angle; });
+  return at;
+}
+
+// The solution circle (or point) of the sensor in sector k at node v, in plane coordinates.
+std::optional<SiteConstraint> junction_constraint(const Diagram& g, int v, const std::vector<Spoke>& spokes,
+                                                 std::size_t k) {
+  const mobius::Complex at(g.nodes[v].x, g.nodes[v].y);
+  // The frame's scale: the distance to the nearest other end of the arcs here.
+  double L = INFINITY;
+  for (const Spoke& s : spokes) {
+    const Arc& a = g.arcs[s.arc];
+    for (int e : {a.from, a.to})
+      if (e != kNone && e != v) L = std::min(L, std::abs(mobius::Complex(g.nodes[e].x, g.nodes[e].y) - at));
+  }
+  if (!std::isfinite(L) || !(L > 0)) L = 1.0;
+  mobius::Mobius m;
+  const std::size_t n = spokes.size();
+  for (std::size_t step = 1; step <= n; ++step) {
+    const Arc& a = g.arcs[spokes[(k + step) % n].arc];
+    m = mobius::Mobius::inversion(mobius::curve_through_origin(a, at, L)).after(m);
+  }
+  if (m.conjugated()) {
+    const auto forms = m.fixed_set_forms();
+    Eigen::Matrix<double, 2, 4> rows;
+    for (int r = 0; r < 2; ++r)
+      rows.row(r) << forms[r].A, forms[r].B.real(), forms[r].B.imag(), forms[r].C;
+    Eigen::JacobiSVD<Eigen::Matrix<double, 2, 4>> svd(rows, Eigen::ComputeFullV);
+    const Eigen::Vector4d f = svd.matrixV().col(0);
+    mobius::GeneralizedCircle local{f(0), mobius::Complex(f(1), f(2)), f(3)};
+    if (std::abs(local.A) <= tolerance::kEstimateLineCurvature * std::abs(local.B)) {
+      // A solution line through the junction: as a circle of a radius far beyond the map.
+      local.A = tolerance::kEstimateLineCurvature * std::abs(local.B);
+    }
+    const auto c = local.centre();
+    const auto r = local.radius();
+    if (!c || !r) return std::nullopt;
+    return SiteConstraint{true, at + L * *c, L * *r};
+  }
+  // Even degree: the fixed points of a Möbius map; the junction itself is one of them.
+  const mobius::Complex a = m.a(), b = m.b(), c = m.c(), d = m.d();
+  const double norm = std::max({std::abs(a), std::abs(b), std::abs(c), std::abs(d)});
+  if (std::abs(c) <= tolerance::kEstimateIdentity * norm) return std::nullopt;  // fixes only the junction (and ∞)
+  // c z² + (d - a) z - b = 0; b ≈ 0 (the origin is fixed): the other root is (a - d) / c.
+  const mobius::Complex other = (a - d) / c;
+  if (std::abs(other) < tolerance::kEstimateIdentity) return std::nullopt;
+  return SiteConstraint{false, at + L * other, 0.0};
+}
+
+double cost(const std::vector<SiteConstraint>& cs, mobius::Complex p) {
+  double sum = 0;
+  for (const auto& c : cs) {
+    const double e = c.circle ? std::abs(p - c.centre) - c.radius : std::abs(p - c.centre);
+    sum += e * e;
+  }
+  return sum;
+}
+
+mobius::Complex gauss_newton(const std::vector<SiteConstraint>& cs, mobius::Complex p) {
+  for (int it = 0; it < 20; ++it) {
+    Eigen::Matrix2d jtj = Eigen::Matrix2d::Zero();
+    Eigen::Vector2d jtr = Eigen::Vector2d::Zero();
+    for (const auto& c : cs) {
+      const mobius::Complex d = p - c.centre;
+      const double len = std::abs(d);
+      if (len == 0) continue;
+      const Eigen::Vector2d grad(d.real() / len, d.imag() / len);
+      if (c.circle) {
+        jtj += grad * grad.transpose();
+        jtr += grad * (len - c.radius);
+      } else {
+        jtj += Eigen::Matrix2d::Identity();
+        jtr += Eigen::Vector2d(d.real(), d.imag());
+      }
+    }
+    const Eigen::Vector2d step = jtj.ldlt().solve(jtr);
+    if (!step.allFinite()) break;
+    p -= mobius::Complex(step(0), step(1));
+    if (step.norm() <= tolerance::kEstimateStepStop * (std::abs(p) + 1.0)) break;
+  }
+  return p;
+}
+
+// Points where two constraints meet (or come closest), as starting points.
+void starts_from(const SiteConstraint& x, const SiteConstraint& y, std::vector<mobius::Complex>& out) {
+  if (!x.circle) return out.push_back(x.centre);
+  if (!y.circle) return out.push_back(y.centre);
+  const mobius::Complex d = y.centre - x.centre;
+  const double dist = std::abs(d);
+  if (dist == 0) return;
+  const mobius::Complex u = d / dist;
+  const double a = (x.radius * x.radius - y.radius * y.radius + dist * dist) / (2 * dist);
+  const double h2 = x.radius * x.radius - a * a;
+  const double h = std::sqrt(std::max(0.0, h2));
+  out.push_back(x.centre + a * u + h * mobius::Complex(0, 1) * u);
+  if (h > 0) out.push_back(x.centre + a * u - h * mobius::Complex(0, 1) * u);
+}
+
+}  // namespace
+
+std::string to_string(EstimateSource s) {
+  switch (s) {
+    case EstimateSource::kJunctions: return "junctions";
+    case EstimateSource::kNeighbour: return "neighbour";
+    case EstimateSource::kCentroid: return "centroid";
+  }
+  return "?";
+}
+
+SiteEstimates estimate_sites(const cleaning::CleanedMap& map, std::span<const Point> centroids) {
+  const Diagram& g = map.graph;
+  const std::size_t n = map.sensors.size();
+  SiteEstimates out;
+  out.sites.resize(n);
+  out.how.assign(n, EstimateSource::kCentroid);
+  out.residual.assign(n, 0.0);
+  out.constraints.assign(n, 0);
+
+  // 1. Solution circles of every sensor at every interior junction.
+  std::vector<std::vector<SiteConstraint>> constraints(n);
+  const auto spokes = spokes_at_nodes(g);
+  for (std::size_t v = 0; v < g.nodes.size(); ++v) {
+    const auto& s = spokes[v];
+    if (s.size() < 3) continue;
+    bool frame = false;
+    for (const Spoke& k : s) frame = frame || g.arcs[k.arc].frame;
+    if (frame) continue;  // where the map was cut, not where sensors meet
+    for (std::size_t k = 0; k < s.size(); ++k) {
+      const int site = s[k].sector_site;
+      if (site == kNone || static_cast<std::size_t>(site) >= n) continue;
+      if (auto c = junction_constraint(g, static_cast<int>(v), s, k)) constraints[site].push_back(*c);
+    }
+  }
+  // 2. Least-squares intersection per sensor.
+  std::vector<char> located(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const mobius::Complex centroid = i < centroids.size() ? mobius::Complex(centroids[i].x, centroids[i].y) : mobius::Complex(0, 0);
+    out.sites[i] = {map.sensors[i], centroid.real(), centroid.imag(), 1.0};
+    const auto& cs = constraints[i];
+    out.constraints[i] = static_cast<int>(cs.size());
+    if (cs.empty()) continue;
+    std::vector<mobius::Complex> starts{centroid};
+    const std::size_t m = std::min<std::size_t>(cs.size(), 6);
+    for (std::size_t a = 0; a < m; ++a)
+      for (std::size_t b = a + 1; b < m; ++b) starts_from(cs[a], cs[b], starts);
+    if (cs.size() == 1 && cs[0].circle) {
+      // One circle: the point of it nearest to the centroid.
+      const mobius::Complex d = centroid - cs[0].centre;
+      if (std::abs(d) > 0) starts.push_back(cs[0].centre + cs[0].radius * d / std::abs(d));
+    }
+    mobius::Complex best = centroid;
+    double best_cost = INFINITY;
+    for (const mobius::Complex& s0 : starts) {
+      const mobius::Complex p = cs.size() >= 2 ? gauss_newton(cs, s0) : s0;
+      // Ties in the residual (two intersections of two circles) go to the one nearer the cell.
+      const double c = cost(cs, p) + tolerance::kEstimateCentroidPull * std::norm(p - centroid);
+      if (std::isfinite(c) && c < best_cost) best_cost = c, best = p;
+    }
+    out.sites[i].x = best.real();
+    out.sites[i].y = best.imag();
+    out.residual[i] = std::sqrt(cost(cs, best) / static_cast<double>(cs.size()));
+    out.how[i] = EstimateSource::kJunctions;
+    located[i] = 1;
+  }
+  // 3. Sensors no junction constrains: the inversion of a located neighbour, breadth first.
+  std::vector<std::vector<std::pair<int, int>>> neighbours(n);  // (neighbour, arc)
+  for (std::size_t a = 0; a < g.arcs.size(); ++a) {
+    const Arc& arc = g.arcs[a];
+    if (arc.frame || arc.left_site == kNone || arc.right_site == kNone || arc.left_site == arc.right_site) continue;
+    neighbours[arc.left_site].push_back({arc.right_site, static_cast<int>(a)});
+    neighbours[arc.right_site].push_back({arc.left_site, static_cast<int>(a)});
+  }
+  std::deque<int> queue;
+  for (std::size_t i = 0; i < n; ++i)
+    if (located[i]) queue.push_back(static_cast<int>(i));
+  while (!queue.empty()) {
+    const int i = queue.front();
+    queue.pop_front();
+    for (auto [j, a] : neighbours[i]) {
+      if (located[j]) continue;
+      const mobius::WeightedPoint partner = mobius::partner_across(plane_curve(g.arcs[a]), {mobius::Complex(out.sites[i].x, out.sites[i].y), 1.0});
+      if (!std::isfinite(partner.position.real()) || !std::isfinite(partner.position.imag())) continue;
+      out.sites[j].x = partner.position.real();
+      out.sites[j].y = partner.position.imag();
+      out.how[j] = EstimateSource::kNeighbour;
+      located[j] = 1;
+      queue.push_back(j);
+    }
+  }
+  // 4. Log weights by least squares over the chains (Lemma 1 ratios), one gauge per component.
+  std::vector<Eigen::Triplet<double>> t;
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
+  std::vector<double> diag(n, 0.0);
+  for (std::size_t a = 0; a < g.arcs.size(); ++a) {
+    const Arc& arc = g.arcs[a];
+    if (arc.frame || arc.left_site == kNone || arc.right_site == kNone || arc.left_site == arc.right_site) continue;
+    const std::size_t chain = a < map.arc_chain.size() ? static_cast<std::size_t>(map.arc_chain[a]) : map.chains.size();
+    const double w = chain < map.chains.size() ? std::max<double>(1.0, static_cast<double>(map.chains[chain].points.size())) : 1.0;
+    double log_ratio = 0.0;  // log(w_left / w_right)
+    if (const auto* c = std::get_if<Circle>(&arc.curve)) {
+      const int in = arc.ccw ? arc.left_site : arc.right_site;  // the disk is on the left of ccw travel
+      const int out_site = in == arc.left_site ? arc.right_site : arc.left_site;
+      const mobius::Complex centre(c->cx, c->cy);
+      const double din = std::abs(mobius::Complex(out.sites[in].x, out.sites[in].y) - centre);
+      const double dout = std::abs(mobius::Complex(out.sites[out_site].x, out.sites[out_site].y) - centre);
+      if (!(din > 0) || !(dout > 0) || !std::isfinite(din / dout)) continue;
+      // Lemma 1: w_in / w_out = |c - s_in| / r = r / |c - s_out|; their geometric mean, clamped
+      // below 1 (the inside sensor is the lighter one).
+      const double r = std::min(0.5 * std::log(din / dout), 0.0);
+      log_ratio = in == arc.left_site ? r : -r;
+    }
+    const int l = arc.left_site, rgt = arc.right_site;
+    t.emplace_back(l, rgt, -w);
+    t.emplace_back(rgt, l, -w);
+    diag[l] += w, diag[rgt] += w;
+    rhs(l) += w * log_ratio;
+    rhs(rgt) -= w * log_ratio;
+  }
+  // The gauge: a small pull of every log weight to 0 keeps each component's system regular
+  // without biasing differences (it shifts a component's mean, which normalisation removes).
+  for (std::size_t i = 0; i < n; ++i) t.emplace_back(static_cast<int>(i), static_cast<int>(i), diag[i] + tolerance::kEstimateGaugePull);
+  Eigen::SparseMatrix<double> lap(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+  lap.setFromTriplets(t.begin(), t.end());
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(lap);
+  Eigen::VectorXd logw = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
+  if (solver.info() == Eigen::Success) {
+    logw = solver.solve(rhs);
+    if (!logw.allFinite()) logw.setZero();
+  }
+  const double top = n ? logw.maxCoeff() : 0.0;
+  for (std::size_t i = 0; i < n; ++i) out.sites[i].weight = std::exp(logw(static_cast<Eigen::Index>(i)) - top);
+  return out;
+}
+
+}  // namespace covmap::audit

@@ -1,0 +1,58 @@
+#include "cleaning/neighbour_grid.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace covmap::cleaning {
+
+UniformGrid::UniformGrid(double cell) : cell_(cell) {
+  if (!(cell > 0.0) || !std::isfinite(cell)) throw std::invalid_argument("UniformGrid: cell size must be positive");
+}
+
+void UniformGrid::add_point(int item, Point p) { entries_.emplace_back(key(index(p.x), index(p.y)), item); }
+
+void UniformGrid::add_segment(int item, Point a, Point b) {
+  // Pieces no longer than a cell: each piece's bounding box spans at most 2×2 cells and contains
+  // every cell the piece passes through, so their union covers the segment's cells.
+  const double length = std::hypot(b.x - a.x, b.y - a.y);
+  const int pieces = std::max(1, static_cast<int>(std::ceil(length / cell_)));
+  const std::size_t first = entries_.size();
+  for (int k = 0; k < pieces; ++k) {
+    const double t0 = static_cast<double>(k) / pieces, t1 = static_cast<double>(k + 1) / pieces;
+    const double x0 = a.x + (b.x - a.x) * t0, y0 = a.y + (b.y - a.y) * t0;
+    const double x1 = a.x + (b.x - a.x) * t1, y1 = a.y + (b.y - a.y) * t1;
+    for (std::int64_t iy = index(std::min(y0, y1)); iy <= index(std::max(y0, y1)); ++iy)
+      for (std::int64_t ix = index(std::min(x0, x1)); ix <= index(std::max(x0, x1)); ++ix)
+        entries_.emplace_back(key(ix, iy), item);
+  }
+  // Consecutive pieces share cells: keep each cell once for this segment.
+  std::sort(entries_.begin() + static_cast<std::ptrdiff_t>(first), entries_.end());
+  entries_.erase(std::unique(entries_.begin() + static_cast<std::ptrdiff_t>(first), entries_.end()), entries_.end());
+}
+
+void UniformGrid::finish() {
+  // Stable: within a cell, items keep insertion order (which is deterministic).
+  std::stable_sort(entries_.begin(), entries_.end(),
+                   [](const auto& l, const auto& r) { return l.first < r.first; });
+  std::size_t cells = 0;
+  for (std::size_t k = 0; k < entries_.size(); ++k) cells += k == 0 || entries_[k].first != entries_[k - 1].first;
+  std::size_t capacity = 16;
+  while (capacity < 2 * cells) capacity *= 2;  // load factor at most 1/2
+  slots_.assign(capacity, kEmpty);
+  for (std::size_t k = 0; k < entries_.size(); ++k) {
+    if (k > 0 && entries_[k].first == entries_[k - 1].first) continue;
+    std::size_t slot = mix(entries_[k].first) & (capacity - 1);
+    while (slots_[slot] != kEmpty) slot = (slot + 1) & (capacity - 1);
+    slots_[slot] = static_cast<std::uint32_t>(k);
+  }
+}
+
+std::size_t UniformGrid::find(std::uint64_t k) const {
+  if (slots_.empty()) return entries_.size();
+  const std::size_t mask = slots_.size() - 1;
+  for (std::size_t slot = mix(k) & mask; slots_[slot] != kEmpty; slot = (slot + 1) & mask)
+    if (entries_[slots_[slot]].first == k) return slots_[slot];
+  return entries_.size();
+}
+
+}  // namespace covmap::cleaning

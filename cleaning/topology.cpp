@@ -1,0 +1,381 @@
+#include "cleaning/tolerances.h"
+#include "cleaning/topology.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace covmap::cleaning {
+namespace {
+
+
+// One ring's samples walked from a starting sample: offset o is sample (start + o) mod n, at an
+// arc length that keeps increasing past the perimeter, so stretches never wrap.
+struct Walk {
+  const std::vector<Sample>& samples;
+  std::size_t start = 0;
+  double perimeter = 0.0;
+  std::size_t n() const { return samples.size(); }
+  const Sample& at(std::size_t o) const { return samples[(start + o) % n()]; }
+  double s(std::size_t o) const {
+    return at(o).s + perimeter * static_cast<double>((start + o) / n());
+  }
+};
+
+struct Run {
+  int label = kOutside;
+  std::size_t first = 0, count = 0;  // offsets in the walk
+  double begin = 0.0, end = 0.0;     // walk arc lengths of the label changes around it
+  double length() const { return end - begin; }
+};
+
+// A junction candidate: where one ring's label changes, with the short runs there.
+struct Zone {
+  int ring = 0;
+  std::vector<Point> points;
+};
+
+Point mean(const std::vector<Point>& points) {
+  Point m{0.0, 0.0};
+  for (const Point& p : points) m.x += p.x, m.y += p.y;
+  const double n = static_cast<double>(std::max<std::size_t>(points.size(), 1));
+  return {m.x / n, m.y / n};
+}
+
+struct PendingChain {
+  RawChain chain;
+  int zone_from = kNone, zone_to = kNone;
+};
+
+class UnionFind {
+ public:
+  explicit UnionFind(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
+  std::size_t find(std::size_t x) {
+    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
+    return x;
+  }
+  void unite(std::size_t a, std::size_t b) {
+    a = find(a), b = find(b);
+    if (a != b) parent_[std::max(a, b)] = std::min(a, b);  // the smaller index is the root
+  }
+
+ private:
+  std::vector<std::size_t> parent_;
+};
+
+class Builder {
+ public:
+  Builder(const BoundaryIndex& index, double min_length) : index_(index), min_length_(min_length) {}
+
+  void read_ring(int r, const std::vector<Sample>& samples);
+  Topology finish();
+
+ private:
+  // Whether ring `own`'s run with this label yields a chain: frame runs always, boundaries from
+  // the side of the smaller sensor index only.
+  static bool reads(int own, int label) { return label == kOutside || (label >= 0 && own < label); }
+  void count_short_run(int own, int label, bool between_cells);
+  void add_chain(int r, const Walk& walk, std::size_t o_begin, std::size_t o_end, double t_begin,
+                 double t_end, int label, int zone_from, int zone_to, bool loop);
+  void frame_points(const BoundaryRing& ring, double t_begin, double t_end, bool loop, std::vector<Point>& out) const;
+  void join_degree_two(std::vector<RawChain>& chains, std::size_t junctions);
+
+  const BoundaryIndex& index_;
+  double min_length_;
+  std::vector<Zone> zones_;
+  std::vector<PendingChain> pending_;
+  Topology out_;
+};
+
+void Builder::count_short_run(int own, int label, bool between_cells) {
+  if (label == kOutside) {
+    // A little outside between two cells is a gap at a junction; on the frame, a frame piece too
+    // short to keep.
+    if (between_cells) ++out_.gaps_closed;
+    else ++out_.short_chains_dropped;
+  } else if (label >= 0 && own < label) {
+    ++out_.short_chains_dropped;
+  }
+}
+
+void Builder::frame_points(const BoundaryRing& ring, double t_begin, double t_end, bool loop,
+                           std::vector<Point>& out) const {
+  const std::size_t nv = ring.size();
+  if (loop) {
+    out.insert(out.end(), ring.points.begin(), ring.points.end());
+    return;
+  }
+  const double perimeter = ring.perimeter();
+  double base = std::floor(t_begin / perimeter) * perimeter;
+  std::size_t v = static_cast<std::size_t>(
+      std::upper_bound(ring.arc.begin(), ring.arc.begin() + static_cast<std::ptrdiff_t>(nv), t_begin - base) -
+      ring.arc.begin());
+  for (std::size_t guard = 0; guard <= nv; ++guard) {
+    if (v == nv) v = 0, base += perimeter;
+    if (base + ring.arc[v] >= t_end) break;
+    out.push_back(ring.points[v]);
+    ++v;
+  }
+}
+
+void Builder::add_chain(int r, const Walk& walk, std::size_t o_begin, std::size_t o_end, double t_begin,
+                        double t_end, int label, int zone_from, int zone_to, bool loop) {
+  const BoundaryRing& ring = index_.rings()[r];
+  const int own = ring.sensor;
+  if (label == kSelf) {
+    ++out_.seams;
+    return;
+  }
+  if (!reads(own, label)) return;
+  PendingChain p;
+  p.chain.sensor_a = own;
+  p.chain.sensor_b = label == kOutside ? kNone : label;
+  p.zone_from = zone_from;
+  p.zone_to = zone_to;
+  if (label == kOutside) {
+    frame_points(ring, t_begin, t_end, loop, p.chain.points);
+  } else {
+    // Midpoints between the two copies: gaps and overlaps are split evenly.
+    Contact previous = Contact::kTouching;
+    for (std::size_t o = o_begin; o < o_end; ++o) {
+      const Sample& s = walk.at(o);
+      const double radius = (s.label == label ? 1.0 : tolerance::kRelabelRadius) * index_.snap();
+      const Across a = index_.across_at(r, s.edge, s.p, label, radius);
+      if (a.label != label) continue;
+      p.chain.points.push_back({0.5 * (s.p.x + a.q.x), 0.5 * (s.p.y + a.q.y)});
+      if (a.contact != previous) {
+        if (a.contact == Contact::kGap) ++out_.gaps_closed;
+        if (a.contact == Contact::kOverlap) ++out_.overlaps_resolved;
+      }
+      previous = a.contact;
+    }
+  }
+  pending_.push_back(std::move(p));
+}
+
+void Builder::read_ring(int r, const std::vector<Sample>& samples) {
+  const BoundaryRing& ring = index_.rings()[r];
+  const int own = ring.sensor;
+  const std::size_t n = samples.size();
+  if (n == 0) return;
+  std::size_t start = n;
+  for (std::size_t k = 0; k < n && start == n; ++k)
+    if (samples[k].label != samples[(k + n - 1) % n].label) start = k;
+  const Walk walk{samples, start == n ? 0 : start, ring.perimeter()};
+
+  if (start == n) {  // one neighbour all around: a closed loop (an island, or a lone cell's frame)
+    const int label = samples[0].label;
+    if (ring.perimeter() < min_length_) count_short_run(own, label, false);
+    else add_chain(r, walk, 0, n, 0.0, ring.perimeter(), label, kNone, kNone, true);
+    return;
+  }
+
+  std::vector<Run> runs;
+  for (std::size_t o = 0; o < n; ++o) {
+    if (o == 0 || walk.at(o).label != walk.at(o - 1).label) runs.push_back({walk.at(o).label, o, 0, 0.0, 0.0});
+    ++runs.back().count;
+  }
+  const std::size_t m = runs.size();
+  for (Run& run : runs) {
+    const std::size_t o = run.first;
+    const double before = o == 0 ? walk.s(n - 1) - walk.perimeter : walk.s(o - 1);
+    const int label_before = o == 0 ? walk.at(n - 1).label : walk.at(o - 1).label;
+    run.begin = locate_transition(index_, r, before, walk.s(o), label_before);
+  }
+  for (std::size_t j = 0; j < m; ++j) runs[j].end = j + 1 < m ? runs[j + 1].begin : runs[0].begin + walk.perimeter;
+
+  std::vector<std::size_t> longs;
+  for (std::size_t j = 0; j < m; ++j)
+    if (runs[j].length() >= min_length_) longs.push_back(j);
+
+  if (longs.empty()) {  // a cell too small for any boundary of its own: one junction
+    Zone zone{r, {}};
+    for (const Run& run : runs) {
+      zone.points.push_back(ring.at(run.begin));
+      count_short_run(own, run.label, false);
+    }
+    for (const Sample& s : samples) zone.points.push_back(s.p);
+    zones_.push_back(std::move(zone));
+    return;
+  }
+
+  // Zones between consecutive long runs (cyclically): dissolved when both runs have one label.
+  const std::size_t q = longs.size();
+  std::vector<int> zone_id(q, kNone);
+  for (std::size_t z = 0; z < q; ++z) {
+    const Run& before = runs[longs[z]];
+    const Run& after = runs[longs[(z + 1) % q]];
+    // Dissolved: the same neighbour on both sides, and nothing but outside (a gap) or the sensor
+    // itself (a seam) in between. A third cell in between, however small, is a real contact.
+    bool dissolve = before.label == after.label;
+    for (std::size_t j = (longs[z] + 1) % m; j != longs[(z + 1) % q]; j = (j + 1) % m)
+      if (runs[j].label >= 0) dissolve = false;
+    const bool between_cells = before.label != kOutside && after.label != kOutside;
+    Zone zone{r, {ring.at(before.end)}};
+    for (std::size_t j = (longs[z] + 1) % m; j != longs[(z + 1) % q]; j = (j + 1) % m) {
+      count_short_run(own, runs[j].label, between_cells);
+      for (std::size_t o = runs[j].first; o < runs[j].first + runs[j].count; ++o) zone.points.push_back(walk.at(o).p);
+    }
+    zone.points.push_back(ring.at(after.begin));
+    if (dissolve) continue;
+    zone_id[z] = static_cast<int>(zones_.size());
+    zones_.push_back(std::move(zone));
+  }
+
+  // Chains: from one kept zone to the next, through dissolved ones.
+  const auto first_kept = std::find_if(zone_id.begin(), zone_id.end(), [](int id) { return id != kNone; });
+  if (first_kept == zone_id.end()) {  // every zone dissolved: one boundary all around
+    const Run& first = runs[longs[0]];
+    add_chain(r, walk, first.first, first.first + n, first.begin, first.begin + walk.perimeter, first.label, kNone,
+              kNone, true);
+    return;
+  }
+  const std::size_t z0 = static_cast<std::size_t>(first_kept - zone_id.begin());
+  std::size_t z = z0;
+  do {
+    std::size_t next = (z + 1) % q;
+    while (zone_id[next] == kNone) next = (next + 1) % q;
+    const Run& first = runs[longs[(z + 1) % q]];
+    const Run& last = runs[longs[next]];
+    const bool wraps = longs[next] < longs[(z + 1) % q];
+    const std::size_t o_end = last.first + last.count + (wraps ? n : 0);
+    const double t_end = last.end + (wraps ? walk.perimeter : 0.0);
+    add_chain(r, walk, first.first, o_end, first.begin, t_end, first.label, zone_id[z], zone_id[next], false);
+    z = next;
+  } while (z != z0);
+}
+
+void Builder::join_degree_two(std::vector<RawChain>& chains, std::size_t junctions) {
+  // A junction where exactly two pieces of one boundary meet (one arriving, one leaving) is no
+  // junction: the pieces are joined. Repeated until no such junction is left.
+  std::vector<char> alive(chains.size(), 1);
+  bool changed = true;
+  while (changed) {
+    changed = false;
+    std::vector<std::vector<std::size_t>> ends(junctions);
+    for (std::size_t c = 0; c < chains.size(); ++c) {
+      if (!alive[c]) continue;
+      if (chains[c].from != kNone) ends[chains[c].from].push_back(c);
+      if (chains[c].to != kNone) ends[chains[c].to].push_back(c);
+    }
+    std::vector<char> touched(chains.size(), 0);
+    for (std::size_t j = 0; j < junctions; ++j) {
+      if (ends[j].size() != 2) continue;
+      std::size_t in = ends[j][0], out = ends[j][1];
+      if (touched[in] || touched[out]) continue;
+      RawChain& a = chains[in];
+      RawChain& b = chains[out];
+      if (a.sensor_a != b.sensor_a || a.sensor_b != b.sensor_b) continue;
+      const int jj = static_cast<int>(j);
+      if (in == out) {  // a loop through the junction: a closed loop
+        a.from = a.to = kNone;
+      } else {
+        if (a.to != jj) std::swap(in, out);
+        RawChain& arriving = chains[in];
+        RawChain& leaving = chains[out];
+        if (arriving.to != jj || leaving.from != jj) continue;  // both arrive or both leave: keep
+        arriving.points.insert(arriving.points.end(), leaving.points.begin(), leaving.points.end());
+        arriving.to = leaving.to;
+        alive[out] = 0;
+      }
+      touched[in] = touched[out] = 1;
+      ++out_.junctions_merged;
+      changed = true;
+    }
+  }
+  std::vector<RawChain> kept;
+  for (std::size_t c = 0; c < chains.size(); ++c)
+    if (alive[c]) kept.push_back(std::move(chains[c]));
+  chains = std::move(kept);
+}
+
+Topology Builder::finish() {
+  // Zones whose points come close are one junction.
+  const double merge = tolerance::kJunctionMerge * index_.snap();
+  std::vector<Point> points;
+  std::vector<std::size_t> owner;
+  for (std::size_t z = 0; z < zones_.size(); ++z)
+    for (const Point& p : zones_[z].points) points.push_back(p), owner.push_back(z);
+  UniformGrid grid(merge);
+  for (std::size_t k = 0; k < points.size(); ++k) grid.add_point(static_cast<int>(k), points[k]);
+  grid.finish();
+  UnionFind sets(zones_.size());
+  for (std::size_t k = 0; k < points.size(); ++k)
+    grid.for_each_near(points[k], [&](int other) {
+      const Point o = points[static_cast<std::size_t>(other)];
+      if (std::hypot(o.x - points[k].x, o.y - points[k].y) <= merge) sets.unite(owner[k], owner[static_cast<std::size_t>(other)]);
+    });
+
+  // Junctions in order of their first zone; the position is the mean of the zones' positions.
+  std::vector<int> junction_of(zones_.size(), kNone);
+  std::vector<std::vector<std::size_t>> members;
+  for (std::size_t z = 0; z < zones_.size(); ++z) {
+    const std::size_t root = sets.find(z);
+    if (junction_of[root] == kNone) {
+      junction_of[root] = static_cast<int>(members.size());
+      members.emplace_back();
+    }
+    junction_of[z] = junction_of[root];
+    members[static_cast<std::size_t>(junction_of[z])].push_back(z);
+  }
+  std::vector<Point> junctions;
+  for (const auto& group : members) {
+    std::vector<Point> positions;
+    std::vector<int> rings;
+    for (std::size_t z : group) positions.push_back(mean(zones_[z].points)), rings.push_back(zones_[z].ring);
+    junctions.push_back(mean(positions));
+    std::sort(rings.begin(), rings.end());
+    // One candidate per ring around a junction is expected; more are junctions merged into one.
+    out_.junctions_merged += group.size() - static_cast<std::size_t>(std::unique(rings.begin(), rings.end()) - rings.begin());
+  }
+
+  std::vector<RawChain> chains;
+  for (PendingChain& p : pending_) {
+    RawChain c = std::move(p.chain);
+    c.from = p.zone_from == kNone ? kNone : junction_of[static_cast<std::size_t>(p.zone_from)];
+    c.to = p.zone_to == kNone ? kNone : junction_of[static_cast<std::size_t>(p.zone_to)];
+    if (c.from != kNone && c.from == c.to) {
+      // Both ends at one junction: a real loop through it, or a sliver between merged candidates.
+      const Point j = junctions[static_cast<std::size_t>(c.from)];
+      double reach = 0.0;
+      for (const Point& q : c.points) reach = std::max(reach, std::hypot(q.x - j.x, q.y - j.y));
+      if (reach < tolerance::kSelfLoopReach * min_length_) {
+        ++out_.short_chains_dropped;
+        continue;
+      }
+    }
+    chains.push_back(std::move(c));
+  }
+  join_degree_two(chains, junctions.size());
+
+  // Junctions no chain reaches (a tiny cell whose neighbours' boundary was joined across it).
+  std::vector<int> renumber(junctions.size(), kNone);
+  for (const RawChain& c : chains) {
+    if (c.from != kNone) renumber[static_cast<std::size_t>(c.from)] = 0;
+    if (c.to != kNone) renumber[static_cast<std::size_t>(c.to)] = 0;
+  }
+  for (std::size_t j = 0; j < junctions.size(); ++j)
+    if (renumber[j] == 0) {
+      renumber[j] = static_cast<int>(out_.junctions.size());
+      out_.junctions.push_back(junctions[j]);
+    }
+  for (RawChain& c : chains) {
+    if (c.from != kNone) c.from = renumber[static_cast<std::size_t>(c.from)];
+    if (c.to != kNone) c.to = renumber[static_cast<std::size_t>(c.to)];
+  }
+  out_.chains = std::move(chains);
+  return std::move(out_);
+}
+
+}  // namespace
+
+Topology build_topology(const BoundaryIndex& index, double min_length) {
+  Builder builder(index, min_length);
+  for (std::size_t r = 0; r < index.rings().size(); ++r) {
+    const int ring = static_cast<int>(r);
+    builder.read_ring(ring, sample_ring(index, ring));
+  }
+  return builder.finish();
+}
+
+}  // namespace covmap::cleaning

@@ -1,0 +1,106 @@
+#include "core/large_buffer.h"
+
+#include <cstdint>
+#include <map>
+#include <mutex>
+#include <unordered_map>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
+namespace covmap {
+namespace {
+
+// Released large blocks are kept for the next large allocation: already faulted in, they cost
+// nothing to touch again. Tracing and recognition free and allocate arrays of the same few sizes
+// stage after stage (and run after run in a benchmark or a service).
+struct BlockCache {
+  std::mutex mutex;
+  std::multimap<std::size_t, void*> free_blocks;    // size -> block
+  std::unordered_map<void*, std::size_t> size_of;  // every live or cached large block
+  std::size_t cached = 0;
+};
+
+BlockCache& block_cache() {
+  static BlockCache cache;
+  return cache;
+}
+
+// At most this much memory is kept; a cached block serves requests down to a quarter of its size.
+constexpr std::size_t kMaxCached = std::size_t{1} << 30;
+constexpr std::size_t kMaxWaste = 4;
+
+void advise(void* p, std::size_t bytes) {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  // Advice only: a kernel without transparent huge pages leaves the range as it is.
+  const auto begin = (reinterpret_cast<std::uintptr_t>(p) + kHugePage - 1) / kHugePage * kHugePage;
+  const auto end = (reinterpret_cast<std::uintptr_t>(p) + bytes) / kHugePage * kHugePage;
+  if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+#else
+  (void)p, (void)bytes;
+#endif
+}
+
+}  // namespace
+
+void advise_huge_pages(void* p, std::size_t bytes) {
+  if (bytes >= kLargeBlock) advise(p, bytes);
+}
+
+void* allocate_large(std::size_t bytes) {
+  if (bytes < kLargeBlock) {
+    void* p = std::malloc(bytes > 0 ? bytes : 1);
+    if (!p) throw std::bad_alloc();
+    return p;
+  }
+  const std::size_t rounded = (bytes + kHugePage - 1) / kHugePage * kHugePage;
+  BlockCache& cache = block_cache();
+  {
+    const std::lock_guard lock(cache.mutex);
+    const auto it = cache.free_blocks.lower_bound(rounded);
+    if (it != cache.free_blocks.end() && it->first / kMaxWaste <= rounded) {
+      void* p = it->second;
+      cache.cached -= it->first;
+      cache.free_blocks.erase(it);
+      return p;
+    }
+  }
+  void* p = std::aligned_alloc(kHugePage, rounded);
+  if (!p) throw std::bad_alloc();
+  advise(p, rounded);
+  const std::lock_guard lock(cache.mutex);
+  cache.size_of[p] = rounded;
+  return p;
+}
+
+void deallocate_large(void* p, std::size_t bytes) noexcept {
+  if (!p) return;
+  if (bytes < kLargeBlock) {
+    std::free(p);
+    return;
+  }
+  BlockCache& cache = block_cache();
+  const std::lock_guard lock(cache.mutex);
+  const std::size_t size = cache.size_of.at(p);
+  if (cache.cached + size <= kMaxCached) {
+    cache.free_blocks.emplace(size, p);
+    cache.cached += size;
+    return;
+  }
+  cache.size_of.erase(p);
+  std::free(p);
+}
+
+void release_large_buffers() noexcept {
+  BlockCache& cache = block_cache();
+  const std::lock_guard lock(cache.mutex);
+  for (const auto& [size, p] : cache.free_blocks) {
+    cache.size_of.erase(p);
+    std::free(p);
+  }
+  cache.free_blocks.clear();
+  cache.cached = 0;
+}
+
+}  // namespace covmap

@@ -1,0 +1,57 @@
+// A minimal fork–join loop for the engine's independent per-cell and per-facet work. The machine
+// has few cores; plain std::thread keeps covmap free of a thread-pool dependency.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <functional>
+#include <iterator>
+#include <thread>
+#include <vector>
+
+#include "core/large_buffer.h"
+
+namespace covmap {
+
+
+inline int worker_count(std::size_t items) {
+  const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
+  if (items < 20000) return 1;  // thread start-up costs more than small loops
+  return static_cast<int>(std::min<unsigned>(hw, 8));
+}
+
+// Calls f(begin, end, worker) on `workers` contiguous chunks of [0, n), concurrently.
+template <class F>
+void parallel_chunks(std::size_t n, int workers, F&& f) {
+  if (workers <= 1) {
+    f(std::size_t{0}, n, 0);
+    return;
+  }
+  std::vector<std::thread> threads;
+  for (int w = 0; w < workers; ++w) {
+    const std::size_t begin = n * w / workers, end = n * (w + 1) / workers;
+    threads.emplace_back([&f, begin, end, w] { f(begin, end, w); });
+  }
+  for (auto& t : threads) t.join();
+}
+
+// Sorts [first, last) on two cores: the halves concurrently, then one merge. Same result as
+// std::sort for keys without ties (both orders are then the unique sorted one).
+template <class It, class Less = std::less<>>
+void parallel_sort(It first, It last, Less less = {}) {
+  const auto n = static_cast<std::size_t>(last - first);
+  if (worker_count(n) <= 1) {
+    std::sort(first, last, less);
+    return;
+  }
+  const It mid = first + static_cast<std::ptrdiff_t>(n / 2);
+  std::thread left([&] { std::sort(first, mid, less); });
+  std::sort(mid, last, less);
+  left.join();
+  // Merged through a copy of the left half (a large buffer: no fresh 4 KiB pages for it).
+  LargeVector<typename std::iterator_traits<It>::value_type> buffer(std::make_move_iterator(first), std::make_move_iterator(mid));
+  std::merge(std::make_move_iterator(buffer.begin()), std::make_move_iterator(buffer.end()), std::make_move_iterator(mid),
+             std::make_move_iterator(last), first, less);
+}
+
+}  // namespace covmap

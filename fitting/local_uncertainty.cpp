@@ -1,0 +1,71 @@
+#include "fitting/local_uncertainty.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <ceres/jet.h>
+#include <cmath>
+
+#include "fitting/residuals.h"
+#include "fitting/tolerances.h"
+
+namespace covmap::fitting {
+
+std::vector<LocalUncertainty> local_uncertainty(std::span<const Site> sites,
+                                                std::span<const fitting::BoundarySample> samples,
+                                                double loss_scale) {
+  using Jet = ceres::Jet<double, 6>;
+  const std::size_t n = sites.size();
+  std::vector<double> residual(samples.size(), 0.0);
+  std::vector<Eigen::Matrix<double, 1, 6>> gradient(samples.size());
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    const auto& s = samples[k];
+    const auto& a = sites[s.site_a];
+    const auto& b = sites[s.site_b];
+    Jet pa[3] = {Jet(a.x, 0), Jet(a.y, 1), Jet(std::log(a.weight), 2)};
+    Jet pb[3] = {Jet(b.x, 3), Jet(b.y, 4), Jet(std::log(b.weight), 5)};
+    Jet r;
+    fitting::BoundaryResidual(s.p.x, s.p.y, 1.0)(pa, pb, &r);
+    residual[k] = r.a;
+    gradient[k] = r.v.transpose();
+  }
+  // Robust noise level: 1.4826 × the median absolute residual.
+  std::vector<double> absolute(residual.size());
+  for (std::size_t k = 0; k < residual.size(); ++k) absolute[k] = std::abs(residual[k]);
+  double noise = 0.0;
+  if (!absolute.empty()) {
+    std::nth_element(absolute.begin(), absolute.begin() + absolute.size() / 2, absolute.end());
+    noise = 1.4826 * absolute[absolute.size() / 2];
+  }
+  std::vector<Eigen::Matrix3d> info(n, Eigen::Matrix3d::Zero());
+  // Boundaries with at least two different neighbours: along a single boundary the site can slide
+  // with its weight (Lemma 1 fixes only its mirror relation to that one neighbour), and the 3×3
+  // block is then nearly singular however many samples it holds.
+  std::vector<int> first_neighbour(n, -1);
+  std::vector<char> two_neighbours(n, 0);
+  for (const auto& s : samples)
+    for (auto [me, other] : {std::pair{s.site_a, s.site_b}, std::pair{s.site_b, s.site_a}}) {
+      if (first_neighbour[me] < 0) first_neighbour[me] = other;
+      else if (first_neighbour[me] != other) two_neighbours[me] = 1;
+    }
+  const double c = loss_scale * noise;
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    if (!gradient[k].allFinite() || !std::isfinite(residual[k])) continue;
+    const double u = c > 0 ? residual[k] / c : 0.0;
+    const double w = 1.0 / (1.0 + u * u);
+    const Eigen::Vector3d ga = gradient[k].head<3>().transpose(), gb = gradient[k].tail<3>().transpose();
+    info[samples[k].site_a] += w * ga * ga.transpose();
+    info[samples[k].site_b] += w * gb * gb.transpose();
+  }
+  std::vector<LocalUncertainty> out(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(info[i]);
+    if (!two_neighbours[i] || eig.info() != Eigen::Success || !(eig.eigenvalues()(0) > tolerance::kLocalInformationConditioning * eig.eigenvalues()(2)) ||
+        !(noise > 0))
+      continue;
+    const Eigen::Matrix3d cov = noise * noise * info[i].inverse();
+    out[i] = {std::sqrt(cov(0, 0)), std::sqrt(cov(1, 1)), cov(0, 1), std::sqrt(cov(2, 2)), true};
+  }
+  return out;
+}
+
+}  // namespace covmap::fitting

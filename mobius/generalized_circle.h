@@ -1,0 +1,36 @@
+// A generalized circle of the Riemann sphere — a circle or a line — in Hermitian form
+//   A |z|² + B̄ z + B z̄ + C = 0,   A, C real, B complex,
+// i.e. v* H v = 0 for v = (z, 1) and H = [[A, B], [B̄, C]]. A = 0 is a line (through ∞). The form is
+// defined up to a real factor; the sign fixes an inside: points with A|z|²+2Re(B̄z)+C < 0.
+#pragma once
+
+#include <complex>
+#include <optional>
+
+#include "core/diagram.h"
+
+namespace covmap::mobius {
+
+using Complex = std::complex<double>;
+
+struct GeneralizedCircle {
+  double A = 0.0;
+  Complex B{0.0, 0.0};
+  double C = 0.0;
+
+  // The circle with centre c and radius r (inside = the disk).
+  static GeneralizedCircle circle(Complex centre, double radius);
+  // The line through p with direction d (inside = the left side of d).
+  static GeneralizedCircle line(Complex p, Complex d);
+  static GeneralizedCircle from(const Circle& c);
+  static GeneralizedCircle from(const Line& l);
+
+  bool is_line() const { return A == 0.0; }
+  // Signed value of the form at z: negative inside, zero on it.
+  double value(Complex z) const;
+  // Centre and radius (circles only; nullopt for lines or an empty/imaginary circle).
+  std::optional<Complex> centre() const;
+  std::optional<double> radius() const;
+};
+
+}  // namespace covmap::mobius

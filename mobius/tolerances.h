@@ -1,0 +1,20 @@
+// Every fixed approximate comparison of the Möbius machinery, in one place.
+#pragma once
+
+#include <cstddef>
+
+namespace covmap::mobius::tolerance {
+
+// feasible_region: how many of the facets where the paraboloid leaves the lifted polyhedron are
+// probed for a representative point. Each probe costs O(m); any one probe already yields a valid
+// point, more only a deeper one.
+inline constexpr std::size_t kMaxProbedFacets = 64;
+// ... and the shortest step (a fraction of the search window's half-size) tried from a boundary
+// point into the region: regions thinner than this are reported as having no interior.
+inline constexpr double kSmallestProbeStep = 1e-9;
+// A facet whose unit normal has a t-component below this fraction of its (x, y) part is vertical: it
+// meets the paraboloid in a line (a line constraint or a side of the window; the normal of an
+// exactly vertical facet, computed from its rounded vertices, is ~1e-17 off).
+inline constexpr double kVerticalFacet = 1e-14;
+
+}  // namespace covmap::mobius::tolerance

@@ -1,0 +1,148 @@
+// sensors.geojson and diagram.geojson (docs/FORMATS.md, "Audit reports"). Geographic maps give
+// RFC 7946 [lon, lat] positions; planar maps give [x, y] in the map's metres (valid GeoJSON
+// syntax, but a GIS must be told the coordinates are not WGS84).
+#include <cmath>
+#include <ostream>
+#include <stdexcept>
+
+#include "report/audit_geometry.h"
+#include "report/audit_json.h"
+#include "report/audit_report.h"
+
+namespace covmap::report {
+namespace {
+
+using detail::number_or_null;
+using json = detail::OrderedJson;
+
+bool finite(Point p) { return std::isfinite(p.x) && std::isfinite(p.y); }
+
+// A point feature's position: lon in [-180, 180].
+json point_position(Point p, const io::CoverageMap& map) {
+  if (!map.projection) return json::array({p.x, p.y});
+  const io::LonLat g = detail::to_lonlat(*map.projection, p);
+  return json::array({g.lon, g.lat});
+}
+
+// A vertex of a line or ring: lon kept continuous across the antimeridian.
+json vertex_position(Point p, const io::CoverageMap& map) {
+  if (!map.projection) return json::array({p.x, p.y});
+  const io::LonLat g = detail::to_lonlat_continuous(*map.projection, p);
+  return json::array({g.lon, g.lat});
+}
+
+json closed_ring(const Ring& ring, const io::CoverageMap& map) {
+  json a = json::array();
+  for (const Point& p : ring) a.push_back(vertex_position(p, map));
+  a.push_back(vertex_position(ring.front(), map));  // RFC 7946: the last position repeats the first
+  return a;
+}
+
+json polygon_coordinates(const io::MapPolygon& polygon, const io::CoverageMap& map) {
+  json rings = json::array({closed_ring(polygon.outer, map)});
+  for (const Ring& hole : polygon.holes) rings.push_back(closed_ring(hole, map));
+  return rings;
+}
+
+json feature(json geometry, json properties) {
+  return {{"type", "Feature"}, {"geometry", std::move(geometry)}, {"properties", std::move(properties)}};
+}
+
+json sensor_properties(const audit::SensorAudit& s, const io::CoverageMap& map) {
+  const bool compared = s.reported && s.in_map;
+  const bool sigma = s.in_map && s.uncertainty_available;
+  json p = {{"kind", "sensor"},
+            {"id", s.id},
+            {"position_source", s.in_map ? "reconstructed" : "reported"},
+            {"in_map", s.in_map},
+            {"weight", s.in_map ? number_or_null(s.weight) : json()},
+            {"tx_power_dbm", s.in_map ? number_or_null(s.tx_power_dbm) : json()},
+            {"sigma_position_m", sigma ? number_or_null(s.sigma_position_m) : json()},
+            {"sigma_log_weight", sigma ? number_or_null(s.sigma_log_weight) : json()},
+            {"verdict", s.verdict.empty() ? json() : json(s.verdict)},
+            {"reason", s.reason},
+            {"position_error_m", compared ? number_or_null(s.position_error_m) : json()},
+            {"power_error_db", compared ? number_or_null(s.power_error_db) : json()},
+            {"chi2", compared ? number_or_null(s.chi2) : json()},
+            {"iou_refined", number_or_null(s.iou_refined)},
+            {"iou_reported", number_or_null(s.iou_reported)}};
+  // Reported position under the names a GIS user expects for the map's coordinates.
+  const char* kx = map.projection ? "reported_lon" : "reported_x";
+  const char* ky = map.projection ? "reported_lat" : "reported_y";
+  if (s.reported && finite(s.reported->position)) {
+    const json at = point_position(s.reported->position, map);
+    p[kx] = at[0];
+    p[ky] = at[1];
+  } else {
+    p[kx] = nullptr;
+    p[ky] = nullptr;
+  }
+  p["reported_weight"] = s.reported ? number_or_null(s.reported->weight) : json();
+  p["reported_tx_power_dbm"] = s.reported ? number_or_null(s.reported->tx_power_dbm) : json();
+  return p;
+}
+
+void check_options(const AuditReportContext& c, const char* who) {
+  if (std::string why; !c.render.is_valid(&why)) throw std::invalid_argument(std::string(who) + ": " + why);
+}
+
+}  // namespace
+
+void write_sensors_geojson(const AuditReportContext& c, std::ostream& out) {
+  check_options(c, "write_sensors_geojson");
+  json features = json::array();
+  for (const auto& s : c.result.sensors) {
+    // Where the sensor is: reconstructed if the map has it, else where it was reported.
+    std::optional<Point> at;
+    if (s.in_map && finite(s.position)) at = s.position;
+    if (!s.in_map && s.reported && finite(s.reported->position)) at = s.reported->position;
+    json geometry = at ? json{{"type", "Point"}, {"coordinates", point_position(*at, c.map)}} : json();
+    features.push_back(feature(std::move(geometry), sensor_properties(s, c.map)));
+  }
+  if (c.render.shift_lines) {
+    for (const auto& s : c.result.sensors) {
+      if (!s.in_map || !s.reported || !finite(s.position) || !finite(s.reported->position)) continue;
+      json line = {{"type", "LineString"},
+                   {"coordinates", json::array({vertex_position(s.reported->position, c.map),
+                                                vertex_position(s.position, c.map)})}};
+      features.push_back(feature(std::move(line), {{"kind", "shift"},
+                                                   {"id", s.id},
+                                                   {"verdict", s.verdict.empty() ? json() : json(s.verdict)},
+                                                   {"position_error_m", number_or_null(s.position_error_m)}}));
+    }
+  }
+  detail::write_json({{"type", "FeatureCollection"}, {"features", std::move(features)}}, out, -1);
+}
+
+void write_diagram_geojson(const AuditReportContext& c, std::ostream& out) {
+  check_options(c, "write_diagram_geojson");
+  const Diagram& d = c.result.refined_diagram;
+  const detail::ArcSampling sampling =
+      detail::arc_sampling(c.render, detail::diagram_extent(d), c.map.projection.has_value());
+  const detail::DiagramRegions regions = detail::diagram_regions(d, sampling);
+  json features = json::array();
+  for (const auto& region : regions.regions) {
+    json geometry;
+    if (region.polygons.size() == 1) {
+      geometry = {{"type", "Polygon"}, {"coordinates", polygon_coordinates(region.polygons.front(), c.map)}};
+    } else {
+      json polygons = json::array();
+      for (const auto& polygon : region.polygons) polygons.push_back(polygon_coordinates(polygon, c.map));
+      geometry = {{"type", "MultiPolygon"}, {"coordinates", std::move(polygons)}};
+    }
+    const bool known = region.site >= 0 && static_cast<std::size_t>(region.site) < d.sites.size();
+    json properties = {{"sensor", known ? json(d.sites[region.site].id) : json()},
+                       {"weight", known ? number_or_null(d.sites[region.site].weight) : json()},
+                       {"faces", region.polygons.size()},
+                       {"orphan_faces", region.orphan_faces},
+                       {"area_m2", number_or_null(region.area)}};
+    features.push_back(feature(std::move(geometry), std::move(properties)));
+  }
+  detail::write_json({{"type", "FeatureCollection"},
+                      {"omitted_unbounded_faces", regions.unbounded_faces},
+                      {"omitted_degenerate_faces", regions.degenerate_faces},
+                      {"features", std::move(features)}},
+                     out, -1);
+}
+
+}  // namespace covmap::report

@@ -1,0 +1,108 @@
+// covmap::io audit reports: the four files `covmap audit MAP -o OUTDIR/` writes from an
+// AuditResult (audit/audit.h) and the map it audited (io/coverage_map.h). docs/FORMATS.md,
+// "Audit reports", documents every member and property.
+//
+//   report.json      write_audit_json       covmap.audit/1: every number of the audit, for programs
+//   sensors.geojson  write_sensors_geojson  reconstructed sensors (Points) and their shifts from the
+//                                           reported positions (LineStrings), for GIS
+//   diagram.geojson  write_diagram_geojson  the recomputed diagram, one (Multi)Polygon per sensor
+//   report.html      write_audit_html       one self-contained page for people
+//
+// Contract
+//  - Accepted: any AuditResult, including partial ones (a failed stage leaves defaults behind) and
+//    non-finite numbers; any strings (ids may hold markup, quotes, control characters or bytes
+//    that are not UTF-8). The map's cells are planar metres; map.projection set means the map was
+//    lon/lat and geographic output is wanted. result.refined_diagram is expected clipped to the
+//    map (all its faces bounded); unbounded faces are left out of diagram.geojson and the HTML and
+//    counted (diagram.geojson's "omitted_unbounded_faces").
+//  - Guaranteed: valid JSON (RFC 8259) and GeoJSON (RFC 7946) whose numbers are the doubles of the
+//    result in the shortest form that reads back to the same bits; a NaN or infinite value is
+//    written as null, never as a number. Strings that are not UTF-8 have the bad bytes replaced by
+//    U+FFFD. Geographic output is [lon, lat] on WGS84 through the map's LocalProjection; planar
+//    output is [x, y] in the map's metres. Polygon rings are closed (last position = first), outer
+//    rings counter-clockwise and holes clockwise, with at least 4 positions. The HTML needs no
+//    network (CSS, JavaScript and SVG inline, no URL), HTML-escapes every string that came from
+//    input, and rounds its picture to render.html_grid_px so its size follows what can be seen,
+//    not the map's vertex count.
+//  - Rejected: invalid render options (AuditRenderOptions::is_valid) throw std::invalid_argument
+//    before anything is written. Stream failures are the caller's to check (write through
+//    io/atomic_file.h to get all-or-nothing files).
+#pragma once
+
+#include <cstddef>
+#include <iosfwd>
+#include <optional>
+#include <span>
+#include <string>
+
+#include "io/coverage_map.h"
+#include "audit/audit.h"
+
+namespace covmap::report {
+
+// How curves become polylines and how the HTML picture is drawn. The defaults suit maps from a
+// city to a region; every field is a tolerance or a size, none changes what is reported.
+struct AuditRenderOptions {
+  // Circle arcs of the recomputed diagram become polylines with at most this angle per segment
+  // (degrees), so a small circle still looks round.
+  double arc_step_degrees = 1.0;
+  // ... and no segment farther than this from its arc, as a fraction of the diagram's extent (the
+  // diagonal of its clip polygon's bounding box). 1e-5 of a 50 km map is 0.5 m, well below any
+  // raster bin, so the polygons' areas match the true regions to about 1e-5.
+  double arc_deviation = 1e-5;
+  // Geographic output only: straight arcs are cut into pieces no longer than this fraction of the
+  // extent, because a straight line of the projection plane is slightly curved in lon/lat.
+  double geographic_line_step = 0.01;
+  // sensors.geojson: also write one LineString per reported sensor from its reported to its
+  // reconstructed position (property kind = "shift").
+  bool shift_lines = true;
+  // report.html: width of the map picture in CSS pixels; the height follows the map's aspect ratio.
+  double html_width_px = 960.0;
+  // report.html: space around the map's bounding box, as a fraction of its larger side.
+  double html_margin = 0.03;
+  // report.html: picture coordinates are integers on a grid of this many pixels (0.1 px: finer
+  // than any screen shows at the nominal size, still sharp when zoomed in 10 times).
+  double html_grid_px = 0.1;
+  // report.html: polylines are simplified (Douglas-Peucker) so that no dropped vertex lies farther
+  // than this from the drawn line, in pixels. This is what keeps a map of 10^4 raster cells small.
+  double html_simplify_px = 0.25;
+
+  // True if every field is usable; otherwise false, with the reason in *why if why is not null.
+  bool is_valid(std::string* why = nullptr) const;
+};
+
+struct AuditReportContext {
+  const audit::AuditResult& result;
+  const io::CoverageMap& map;
+  std::string map_file;                // as the user named it
+  std::string sensors_file;            // empty: no --sensors
+  std::optional<double> alpha;         // --alpha, the path-loss exponent, if given
+  std::string command_line;            // for the record; written as is (escaped in HTML)
+  // The options the audit ran with, for the "thresholds" of the reports; null: written as null.
+  const audit::AuditOptions* options = nullptr;
+  AuditRenderOptions render{};
+};
+
+void write_audit_json(const AuditReportContext& context, std::ostream& out);       // report.json
+void write_audit_html(const AuditReportContext& context, std::ostream& out);       // report.html
+void write_sensors_geojson(const AuditReportContext& context, std::ostream& out);  // sensors.geojson
+void write_diagram_geojson(const AuditReportContext& context, std::ostream& out);  // diagram.geojson
+
+// How the audited sensors came out, as the summaries of report.json and report.html count them.
+struct AuditVerdictCounts {
+  std::size_t sensors = 0;       // all entries of AuditResult::sensors
+  std::size_t in_map = 0;        // with a cell in the map
+  std::size_t reported = 0;      // with reported values
+  std::size_t consistent = 0;    // verdict "consistent"
+  std::size_t inconsistent = 0;  // verdict "inconsistent"
+  std::size_t not_in_map = 0;    // reported, but no cell of the map names them
+  std::size_t unreported = 0;    // in the map, not reported (no verdict)
+  std::size_t other = 0;         // any other verdict text (none today)
+};
+AuditVerdictCounts count_verdicts(std::span<const audit::SensorAudit> sensors);
+
+// Every repair the cleaning made: merged junctions, closed gaps, resolved overlaps, dropped short
+// chains and snapped nodes.
+std::size_t cleaning_repairs(const cleaning::CleaningReport& report);
+
+}  // namespace covmap::report

@@ -1,0 +1,73 @@
+#include "tools/mapgen/lonlat_sites_csv.h"
+
+#include <gtest/gtest.h>
+
+#include "io/input_error.h"
+
+namespace covmap::mapgen {
+namespace {
+
+io::InputError error_of(const std::string& text) {
+  try {
+    parse_lonlat_sites_csv(text, "towns.csv");
+  } catch (const io::InputError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "expected an InputError for:\n" << text;
+  return io::InputError("", 0, "", "none");
+}
+
+TEST(LonLatSitesCsv, ReadsColumnsInAnyOrderAndSkipsComments) {
+  const auto table = parse_lonlat_sites_csv(
+      "# made by hand\n"
+      "name,LAT,lon,weight,id,population\n"
+      "\n"
+      "Bern, 46.94809 ,7.44744,1.5,2661552,121631\r\n"
+      "# a comment\n"
+      "Thun,46.75118,7.62166,1.0,2658377,42136\n",
+      "towns.csv");
+  ASSERT_EQ(table.sites.size(), 2u);
+  EXPECT_EQ(table.sites[0].id, "2661552");
+  EXPECT_EQ(table.sites[0].lon, 7.44744);
+  EXPECT_EQ(table.sites[0].lat, 46.94809);
+  EXPECT_EQ(table.sites[0].weight, 1.5);
+  EXPECT_EQ(table.line, (std::vector<int>{4, 6}));
+}
+
+TEST(LonLatSitesCsv, ReportsEveryBadLineWithFileLineAndId) {
+  const auto e = error_of(
+      "id,lon,lat,weight\n"
+      "a,7.4,46.9,1\n"
+      "b,7.4,91,1\n"
+      "c,east,46.9,1\n"
+      "a,7.5,46.9,1\n"
+      "d,7.4,46.9,0\n"
+      "e,7.4,46.9,2\n"
+      "f,7.4\n");
+  ASSERT_EQ(e.problems.size(), 7u) << e.what();
+  EXPECT_EQ(format_problem(e.file, e.problems[0]), "towns.csv:3: sensor 'b': lat must be in (-90, 90) (got 91)");
+  EXPECT_EQ(format_problem(e.file, e.problems[1]), "towns.csv:4: sensor 'c': lon is not a number (got 'east')");
+  EXPECT_EQ(format_problem(e.file, e.problems[2]), "towns.csv:5: sensor 'a': id already used on line 2");
+  EXPECT_EQ(format_problem(e.file, e.problems[3]), "towns.csv:6: sensor 'd': weight must be finite and positive (got 0)");
+  EXPECT_EQ(format_problem(e.file, e.problems[4]), "towns.csv:7: sensor 'e': same lon/lat as the sensor on line 2");
+  EXPECT_EQ(e.problems[5].line, 8);
+  EXPECT_NE(e.problems[5].message.find("missing lat"), std::string::npos);
+  EXPECT_NE(e.problems[6].message.find("missing weight"), std::string::npos);
+}
+
+TEST(LonLatSitesCsv, RejectsBadHeadersAndEmptyFiles) {
+  EXPECT_NE(error_of("id,x,y,weight\n1,2,3,4\n").message().find("missing column 'lon'"), std::string::npos);
+  EXPECT_NE(error_of("id,lon,lat,weight,lon\n").message().find("repeated column 'lon'"), std::string::npos);
+  EXPECT_NE(error_of("# nothing\n").message().find("no header"), std::string::npos);
+  EXPECT_NE(error_of("id,lon,lat,weight\n").message().find("no sensors"), std::string::npos);
+  EXPECT_NE(error_of("id,lon,lat,weight\n\"a\",1,2,3\n").message().find("quoted"), std::string::npos);
+  try {
+    read_lonlat_sites_csv("/nonexistent/towns.csv");
+    ADD_FAILURE();
+  } catch (const io::InputError& e) {
+    EXPECT_EQ(e.file, "/nonexistent/towns.csv");
+  }
+}
+
+}  // namespace
+}  // namespace covmap::mapgen

@@ -1,0 +1,34 @@
+// covmap::mapgen output documents: the three files of a generated coverage map, as JSON values.
+//
+//  map.geojson      FeatureCollection, one Feature per serving sensor, in sensor order:
+//                   properties {"sensor": id}; geometry Polygon, or MultiPolygon when the sensor's
+//                   bins form several 4-connected cells; rings closed, outer counter-clockwise,
+//                   holes clockwise; coordinates [lon, lat] (RFC 7946) or, for planar output,
+//                   metres with a "crs" member naming the local plane (GeoJSON 2008 style, which
+//                   GDAL/QGIS read).
+//  sensors.geojson  FeatureCollection of Points, the sensors as the operator reports them:
+//                   properties id, tx_power_dbm, weight, position_sigma_m, power_sigma_db (the
+//                   stated one-sigma accuracy; gross errors are not flagged, as in real lists).
+//  truth.json       {"format":"covmap.mapgen-truth/1", ...}: generator settings, projection,
+//                   raster, counts, and per sensor the true and the reported values and any gross
+//                   error (docs in datasets/maps/README.md).
+// Numbers are written as the shortest text that reads back to the same double, so rounded
+// coordinates appear with at most coordinate_digits decimals.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "tools/mapgen/coverage_map_generator.h"
+
+namespace covmap::mapgen {
+
+using OrderedJson = nlohmann::ordered_json;
+
+OrderedJson map_geojson(const CoverageMap& map);
+OrderedJson sensors_geojson(const CoverageMap& map);
+OrderedJson truth_json(const CoverageMap& map);
+
+// A FeatureCollection as text with one feature per line: diffable and still valid JSON.
+std::string feature_collection_text(const OrderedJson& collection);
+
+}  // namespace covmap::mapgen
