@@ -390,12 +390,12 @@ AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSen
       vi.logw_floor = options.power_floor_db * logw_per_db;
       vi.alpha = options.alpha;
       if (!u.available || s.sigma_position_m > 0.5 * prior_position_sigma) {
-        s.verdict = "undetermined";
+        s.verdict = SensorVerdict::kUndetermined;
         s.reason = "the map does not determine this sensor (too few boundary points); not judged";
       } else {
-        const Verdict v = judge(vi, options.inconsistency_chi2);
+        const Judgement v = judge(vi, options.inconsistency_chi2);
         s.chi2 = v.chi2;
-        s.verdict = v.inconsistent ? "inconsistent" : "consistent";
+        s.verdict = v.inconsistent ? SensorVerdict::kInconsistent : SensorVerdict::kConsistent;
         s.reason = v.reason;
       }
     }
@@ -408,7 +408,7 @@ AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSen
     s.in_map = false;
     s.position = r.position;
     s.reported = r;
-    s.verdict = "not_in_map";
+    s.verdict = SensorVerdict::kNotInMap;
     s.reason = "reported, but no cell of the map names it";
     out.sensors.push_back(std::move(s));
   }

@@ -7,7 +7,7 @@
 // ones and compare each with the map cell by cell; judge every reported sensor.
 //
 // Contract: the input is planar (metres; io projects lon/lat first). Sensors reported but absent
-// from the map are listed with verdict "not_in_map"; cells whose sensor was not reported get no
+// from the map are listed with verdict kNotInMap; cells whose sensor was not reported get no
 // verdict. Never throws for a bad fit: a failed stage is reported in the result (stage messages)
 // and the later stages work with what they have. Throws std::invalid_argument for an empty map.
 #pragma once
@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "audit/sensor_verdict.h"
 #include "core/coverage_cells.h"
 #include "cleaning/map_cleaning.h"
 #include "core/diagram.h"
@@ -77,7 +78,7 @@ struct SensorAudit {
   std::optional<double> power_error_db;  // reported - reconstructed power
   std::optional<double> weight_ratio;    // reported / reconstructed weight, both normalised alike
   double chi2 = 0.0;                  // the Mahalanobis distance² behind the verdict
-  std::string verdict;                // "consistent", "inconsistent", "not_in_map", "" (not reported)
+  SensorVerdict verdict = SensorVerdict::kUnreported;
   std::string reason;                 // one sentence
   // Agreement of this sensor's cell with the map (intersection over union of areas), for the
   // refined and the reported sensors' diagrams (nullopt when not computed).

@@ -14,8 +14,8 @@ double chi2_3_tail(double t) {
 
 }  // namespace
 
-Verdict judge(const VerdictInput& in, double threshold3) {
-  Verdict v;
+Judgement judge(const VerdictInput& in, double threshold3) {
+  Judgement v;
   const double pos_var = in.reported_position_sigma * in.reported_position_sigma + in.position_floor * in.position_floor;
   const bool with_weight = in.dlogw.has_value();
   v.dof = with_weight ? 3 : 2;

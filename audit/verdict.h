@@ -25,7 +25,7 @@ struct VerdictInput {
   std::optional<double> alpha;        // to state log-weight differences in dB
 };
 
-struct Verdict {
+struct Judgement {
   double chi2 = 0.0;
   int dof = 0;
   bool inconsistent = false;
@@ -34,6 +34,6 @@ struct Verdict {
 
 // threshold3: the χ² threshold for 3 degrees of freedom; the 2-dof threshold is the same
 // probability's quantile (computed from it).
-Verdict judge(const VerdictInput& in, double threshold3);
+Judgement judge(const VerdictInput& in, double threshold3);
 
 }  // namespace covmap::audit

@@ -134,9 +134,9 @@ int main(int argc, char** argv) {
         pos_spacing.push_back(e / spacing);
         weight_db.push_back(std::abs(10.0 * alpha * (std::log(s.weight / t.weight) - offset) / std::log(10.0)));
       }
-      if (!s.reported || s.verdict == "undetermined") continue;
+      if (!s.reported || s.verdict == audit::SensorVerdict::kUndetermined) continue;
       ++judged;
-      const bool flagged = s.verdict == "inconsistent";
+      const bool flagged = s.verdict == audit::SensorVerdict::kInconsistent;
       flagged_total += flagged;
       if (is_gross[s.id]) ++gross_total, gross_flagged += flagged;
     }

@@ -140,7 +140,7 @@ int main(int argc, char** argv) {
       nlohmann::json row = {{"n", n},          {"dist", dist->name()},
                             {"faces", r1.graph.faces.size()}, {"arcs", d.arcs.size()},
                             {"recognize_s", s1}, {"with_check_s", s2},
-                            {"bisector_graph", r1.bisector_graph}, {"voronoi", r2.voronoi},
+                            {"bisector_graph", r1.bisector_graph}, {"voronoi", std::string(covmap::recognition::to_string(r2.voronoi))},
                             {"voronoi_differences", r2.voronoi_differences.size()},
                             {"worst_position_error", worst_position}, {"worst_weight_error", worst_weight},
                             {"stages_s", {{"faces", st.faces}, {"start", st.start},
@@ -148,7 +148,7 @@ int main(int argc, char** argv) {
       std::cout << row.dump() << "\n";
     } else {
       std::printf("%8zu %8zu %8zu %12.3f %13.3f %6s %10s %7.0f  (%.3f %.3f %.3f %.3f)\n", n,
-                  r1.graph.faces.size(), d.arcs.size(), s1, s2, r2.voronoi.c_str(),
+                  r1.graph.faces.size(), d.arcs.size(), s1, s2, std::string(covmap::recognition::to_string(r2.voronoi)).c_str(),
                   r1.bisector_graph ? "yes" : "no", 1e9 * s1 / static_cast<double>(d.arcs.size()),
                   st.faces, st.start, st.propagate, st.sites);
       if (verify) std::printf("         worst position error %.2e, worst weight error %.2e\n", worst_position, worst_weight);

@@ -126,7 +126,7 @@ int run_audit(const AuditCommandOptions& options) {
       std::cout << " (reported sensors: " << 100.0 * result.reported_agreement->mean_iou << " %)";
     std::cout << " -> " << options.output_dir << "\n";
     for (const auto& s : result.sensors)
-      if (s.verdict == "inconsistent") std::cout << "  " << s.id << ": " << s.reason << "\n";
+      if (s.verdict == audit::SensorVerdict::kInconsistent) std::cout << "  " << s.id << ": " << s.reason << "\n";
     return kOk;
   });
 }

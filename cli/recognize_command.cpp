@@ -57,10 +57,6 @@ int run_recognize(const RecognizeOptions& options) {
       io::write_file_atomically(options.output_path, [&](std::ostream& o) { o << json.str(); });
     if (!options.svg_path.empty() && r.bisector_graph)
       io::write_file_atomically(options.svg_path, [&](std::ostream& o) { o << svg.str(); });
-    if (!r.supported) {
-      std::cout << options.graph_path << ": not handled yet: " << r.reason << "\n";
-      return kNotHandledYet;
-    }
     if (!r.bisector_graph) {
       std::cout << options.graph_path << ": not a bisector graph: " << r.reason << "\n";
       return kNotBisectorGraph;
@@ -72,8 +68,8 @@ int run_recognize(const RecognizeOptions& options) {
                 << r.region->bounds.size() << " bounds; one choice given)";
     else if (!r.unique)
       std::cout << " (not unique: a one-parameter family; one member given)";
-    std::cout << "; MWVD: " << r.voronoi;
-    if (r.voronoi == "no" && !r.voronoi_differences.empty())
+    std::cout << "; MWVD: " << recognition::to_string(r.voronoi);
+    if (r.voronoi == recognition::MwvdAnswer::kNo && !r.voronoi_differences.empty())
       std::cout << " (" << r.voronoi_differences.size() << " differences; first: "
                 << r.voronoi_differences.front().message << ")";
     std::cout << "\n";

@@ -810,10 +810,10 @@ Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
       CompareOptions co;
       co.relative_tolerance = options.relative_tolerance;
       const Comparison c = compare_graphs(g, recomputed, co);
-      out.voronoi = c.equal() ? "yes" : "no";
+      out.voronoi = c.equal() ? MwvdAnswer::kYes : MwvdAnswer::kNo;
       out.voronoi_differences = c.differences;
     } catch (const voronoi::InvalidSites& e) {
-      out.voronoi = "no";
+      out.voronoi = MwvdAnswer::kNo;
       out.voronoi_differences.push_back({DifferenceKind::NodeOnlyInA, kNone, 0, 0, e.what()});
     }
     out.timings.voronoi_check = lap();

@@ -23,6 +23,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "recognition/compare.h"
@@ -77,9 +78,16 @@ struct RecognitionTimings {
   double voronoi_check = 0.0;
 };
 
+// Is the graph the MWVD of its reconstructed sites (paper 5, §5)? kUnknown: the check was not run,
+// or the graph is no bisector graph.
+enum class MwvdAnswer { kUnknown, kYes, kNo };
+// "unknown", "yes", "no" (covmap.reconstruction/1 and the CLI's summary line).
+std::string_view to_string(MwvdAnswer answer);
+// The answer named `name` (as written by to_string); nullopt for any other text.
+std::optional<MwvdAnswer> mwvd_answer_from_string(std::string_view name);
+
 struct Reconstruction {
   bool bisector_graph = false;
-  bool supported = true;  // false: the input needs a part of the method not implemented yet
   std::string reason;
   std::vector<Site> sites;  // weights normalised so that the largest is 1
   std::vector<int> face_site;        // per traced face of the input: index into sites
@@ -87,9 +95,9 @@ struct Reconstruction {
   bool unique = true;  // false: the graph fixes the sites only up to a family (see region)
   std::optional<SiteRegion> region;  // set when the root site ranges over a 2D region (§3)
   std::optional<RecognitionFailure> failure;
-  // "yes" / "no" / "unknown" (check not run, or not a bisector graph), and where the recomputed
-  // diagram differs from the input when "no".
-  std::string voronoi = "unknown";
+  // Whether the graph is the MWVD of the sites, and where the recomputed diagram differs from the
+  // input when it is not.
+  MwvdAnswer voronoi = MwvdAnswer::kUnknown;
   std::vector<Difference> voronoi_differences;
   Diagram graph;  // the input with its faces traced (face_site refers to these)
   RecognitionTimings timings;

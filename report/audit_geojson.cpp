@@ -59,7 +59,7 @@ json sensor_properties(const audit::SensorAudit& s, const io::CoverageMap& map) 
             {"tx_power_dbm", s.in_map ? number_or_null(s.tx_power_dbm) : json()},
             {"sigma_position_m", sigma ? number_or_null(s.sigma_position_m) : json()},
             {"sigma_log_weight", sigma ? number_or_null(s.sigma_log_weight) : json()},
-            {"verdict", s.verdict.empty() ? json() : json(s.verdict)},
+            {"verdict", detail::verdict_json(s.verdict)},
             {"reason", s.reason},
             {"position_error_m", compared ? number_or_null(s.position_error_m) : json()},
             {"power_error_db", compared ? number_or_null(s.power_error_db) : json()},
@@ -107,7 +107,7 @@ void write_sensors_geojson(const AuditReportContext& c, std::ostream& out) {
                                                 vertex_position(s.position, c.map)})}};
       features.push_back(feature(std::move(line), {{"kind", "shift"},
                                                    {"id", s.id},
-                                                   {"verdict", s.verdict.empty() ? json() : json(s.verdict)},
+                                                   {"verdict", detail::verdict_json(s.verdict)},
                                                    {"position_error_m", number_or_null(s.position_error_m)}}));
     }
   }

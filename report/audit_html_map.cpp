@@ -217,25 +217,30 @@ std::string grid_path(std::span<const GridPoint> points, bool closed) {
   return d;
 }
 
-std::string verdict_colour(const std::string& verdict) {
-  if (verdict == "consistent") return "#1a9850";
-  if (verdict == "inconsistent") return "#d73027";
-  if (verdict == "not_in_map") return "#e08000";
-  if (verdict.empty()) return "#2b6cb0";
+std::string verdict_colour(audit::SensorVerdict verdict) {
+  switch (verdict) {
+    case audit::SensorVerdict::kConsistent: return "#1a9850";
+    case audit::SensorVerdict::kInconsistent: return "#d73027";
+    case audit::SensorVerdict::kNotInMap: return "#e08000";
+    case audit::SensorVerdict::kUnreported: return "#2b6cb0";
+    case audit::SensorVerdict::kUndetermined: return "#555555";
+  }
   return "#555555";
 }
 
-std::string verdict_label(const std::string& verdict) {
-  if (verdict == "not_in_map") return "not in map";
-  if (verdict.empty()) return "unreported";
-  return verdict;
+std::string verdict_label(audit::SensorVerdict verdict) {
+  if (verdict == audit::SensorVerdict::kNotInMap) return "not in map";
+  return std::string(audit::to_string(verdict));
 }
 
-std::string verdict_class(const std::string& verdict) {
-  if (verdict == "consistent") return "v-consistent";
-  if (verdict == "inconsistent") return "v-inconsistent";
-  if (verdict == "not_in_map") return "v-not-in-map";
-  if (verdict.empty()) return "v-unreported";
+std::string verdict_class(audit::SensorVerdict verdict) {
+  switch (verdict) {
+    case audit::SensorVerdict::kConsistent: return "v-consistent";
+    case audit::SensorVerdict::kInconsistent: return "v-inconsistent";
+    case audit::SensorVerdict::kNotInMap: return "v-not-in-map";
+    case audit::SensorVerdict::kUnreported: return "v-unreported";
+    case audit::SensorVerdict::kUndetermined: return "v-other";  // no style of its own yet (issue 13)
+  }
   return "v-other";
 }
 
@@ -257,7 +262,10 @@ void write_audit_map_svg(const AuditReportContext& c, std::ostream& out) {
       << "\" height=\"" << human_number(static_cast<double>(f.height) * o.html_grid_px, 10)
       << "\" preserveAspectRatio=\"xMidYMid meet\" role=\"img\" aria-label=\"coverage map\">\n";
   out << "<defs>\n";
-  for (const std::string verdict : {"consistent", "inconsistent", "not_in_map", "", "other"}) {
+  // One arrow head per class (undetermined draws as "v-other").
+  for (const audit::SensorVerdict verdict : {audit::SensorVerdict::kConsistent, audit::SensorVerdict::kInconsistent,
+                                             audit::SensorVerdict::kNotInMap, audit::SensorVerdict::kUnreported,
+                                             audit::SensorVerdict::kUndetermined}) {
     out << "<marker id=\"arrow-" << verdict_class(verdict) << "\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerUnits=\"userSpaceOnUse\" markerWidth=\""
         << units(kArrowHeadPx) << "\" markerHeight=\"" << units(kArrowHeadPx)
         << "\" orient=\"auto\"><path d=\"M0 0L10 5L0 10z\" fill=\"" << verdict_colour(verdict) << "\"/></marker>\n";

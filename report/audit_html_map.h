@@ -48,11 +48,11 @@ void write_audit_map_svg(const AuditReportContext& context, std::ostream& out);
 
 // Verdict colours shared by the map and the table: green consistent, red inconsistent, orange
 // not in map, blue unreported.
-std::string verdict_colour(const std::string& verdict);
-// "consistent", "inconsistent", "not in map", "unreported" (empty verdict) or the verdict itself.
-std::string verdict_label(const std::string& verdict);
+std::string verdict_colour(audit::SensorVerdict verdict);
+// "consistent", "inconsistent", "undetermined", "not in map", "unreported".
+std::string verdict_label(audit::SensorVerdict verdict);
 // A CSS class name for the verdict: "v-consistent", "v-inconsistent", "v-not-in-map",
 // "v-unreported", "v-other".
-std::string verdict_class(const std::string& verdict);
+std::string verdict_class(audit::SensorVerdict verdict);
 
 }  // namespace covmap::report::detail

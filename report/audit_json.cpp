@@ -5,6 +5,11 @@
 
 namespace covmap::report::detail {
 
+OrderedJson verdict_json(audit::SensorVerdict verdict) {
+  if (verdict == audit::SensorVerdict::kUnreported) return nullptr;
+  return std::string(audit::to_string(verdict));
+}
+
 OrderedJson number_or_null(double value) { return std::isfinite(value) ? OrderedJson(value) : OrderedJson(); }
 
 OrderedJson number_or_null(const std::optional<double>& value) {

@@ -1,10 +1,12 @@
-// JSON building blocks shared by the audit writers (internal to io/): numbers that are never
+// JSON building blocks shared by the audit writers (internal to report/): numbers that are never
 // written as NaN or infinity, and output that survives ids which are not UTF-8.
 #pragma once
 
 #include <iosfwd>
 #include <nlohmann/json.hpp>
 #include <optional>
+
+#include "audit/sensor_verdict.h"
 
 namespace covmap::report::detail {
 
@@ -15,6 +17,9 @@ using OrderedJson = nlohmann::ordered_json;
 OrderedJson number_or_null(double value);
 // The number, or null when absent, NaN or infinite.
 OrderedJson number_or_null(const std::optional<double>& value);
+
+// A verdict as the reports write it: its name, or null for a sensor that was not reported.
+OrderedJson verdict_json(audit::SensorVerdict verdict);
 
 // Writes `value` and a newline. indent < 0: one line. Bytes that are not UTF-8 in strings become
 // U+FFFD instead of making the whole report fail.

@@ -97,7 +97,9 @@ struct AuditVerdictCounts {
   std::size_t inconsistent = 0;  // verdict "inconsistent"
   std::size_t not_in_map = 0;    // reported, but no cell of the map names them
   std::size_t unreported = 0;    // in the map, not reported (no verdict)
-  std::size_t other = 0;         // any other verdict text (none today)
+  // Reported, but not determined by the map. report.json's summary still calls this count "other"
+  // and report.html "other verdict" (kept unchanged by the restructuring; issue 13 renames it).
+  std::size_t undetermined = 0;
 };
 AuditVerdictCounts count_verdicts(std::span<const audit::SensorAudit> sensors);
 

@@ -30,16 +30,12 @@ AuditVerdictCounts count_verdicts(std::span<const audit::SensorAudit> sensors) {
   for (const auto& s : sensors) {
     c.in_map += s.in_map ? 1 : 0;
     c.reported += s.reported ? 1 : 0;
-    if (s.verdict == "consistent") {
-      ++c.consistent;
-    } else if (s.verdict == "inconsistent") {
-      ++c.inconsistent;
-    } else if (s.verdict == "not_in_map") {
-      ++c.not_in_map;
-    } else if (s.verdict.empty() && !s.reported) {
-      ++c.unreported;
-    } else {
-      ++c.other;
+    switch (s.verdict) {
+      case audit::SensorVerdict::kConsistent: ++c.consistent; break;
+      case audit::SensorVerdict::kInconsistent: ++c.inconsistent; break;
+      case audit::SensorVerdict::kNotInMap: ++c.not_in_map; break;
+      case audit::SensorVerdict::kUnreported: ++c.unreported; break;
+      case audit::SensorVerdict::kUndetermined: ++c.undetermined; break;
     }
   }
   return c;

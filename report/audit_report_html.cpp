@@ -154,7 +154,7 @@ void summary(std::ostream& out, const AuditReportContext& c) {
   card(out, "count-inconsistent", "v-inconsistent", n.inconsistent, "inconsistent");
   card(out, "count-not-in-map", "v-not-in-map", n.not_in_map, "reported, not in map");
   card(out, "count-unreported", "v-unreported", n.unreported, "in map, unreported");
-  if (n.other) card(out, "count-other", "", n.other, "other verdict");
+  if (n.undetermined) card(out, "count-other", "", n.undetermined, "other verdict");
   out << "</div>\n<div class=\"details\">\n";
   agreement_table(out, "Recomputed (refined) sensors vs map", &r.refined_agreement);
   agreement_table(out, "Reported sensors vs map", r.reported_agreement ? &*r.reported_agreement : nullptr);
@@ -216,7 +216,9 @@ void map_section(std::ostream& out, const AuditReportContext& c) {
       << "<label><input type=\"checkbox\" data-layer=\"layer-sensors\" checked> sensors</label></div>\n";
   detail::write_audit_map_svg(c, out);
   out << "<p class=\"legend\">";
-  for (const std::string verdict : {"consistent", "inconsistent", "not_in_map", ""}) {
+  // Undetermined sensors have no legend entry yet (issue 13 redesigns the page).
+  for (const audit::SensorVerdict verdict : {audit::SensorVerdict::kConsistent, audit::SensorVerdict::kInconsistent,
+                                             audit::SensorVerdict::kNotInMap, audit::SensorVerdict::kUnreported}) {
     out << "<span><i style=\"background:" << detail::verdict_colour(verdict) << "\"></i>" << detail::verdict_label(verdict)
         << "</span>";
   }

@@ -71,7 +71,7 @@ json sensor_json(const audit::SensorAudit& s, const io::CoverageMap& map) {
   j["power_error_db"] = compared ? number_or_null(s.power_error_db) : json();
   j["weight_ratio"] = compared ? number_or_null(s.weight_ratio) : json();
   j["chi2"] = compared ? number_or_null(s.chi2) : json();
-  j["verdict"] = s.verdict.empty() ? json() : json(s.verdict);
+  j["verdict"] = detail::verdict_json(s.verdict);
   j["reason"] = s.reason;
   j["iou_refined"] = number_or_null(s.iou_refined);
   j["iou_reported"] = number_or_null(s.iou_reported);
@@ -143,7 +143,7 @@ void write_audit_json(const AuditReportContext& c, std::ostream& out) {
   j["summary"] = {{"sensors", counts.sensors},       {"in_map", counts.in_map},
                   {"reported", counts.reported},     {"consistent", counts.consistent},
                   {"inconsistent", counts.inconsistent}, {"not_in_map", counts.not_in_map},
-                  {"unreported", counts.unreported}, {"other", counts.other}};
+                  {"unreported", counts.unreported}, {"other", counts.undetermined}};
   j["cleaning"] = cleaning_json(r.cleaned.report);
   j["bin_size_m"] = number_or_null(r.bin_size_m);
   j["boundary_samples"] = r.boundary_samples;

@@ -36,8 +36,8 @@ void write_reconstruction_json(const recognition::Reconstruction& r, std::ostrea
   nlohmann::json j;
   j["format"] = "covmap.reconstruction/1";
   j["bisector_graph"] = r.bisector_graph;
-  j["voronoi"] = r.voronoi;
-  j["supported"] = r.supported;
+  j["voronoi"] = std::string(recognition::to_string(r.voronoi));
+  j["supported"] = true;  // covmap.reconstruction/1 keeps the member; every graph is handled now
   j["reason"] = r.reason;
   j["sites"] = sites_json(r.sites);
   j["unique"] = r.unique;

@@ -120,14 +120,14 @@ TEST(Audit, PlanarMapReconstructsSensorsAndFlagsGrossErrors) {
   for (const auto& s : r.generated.reported) gross[s.id] = s.error.gross != mapgen::GrossErrorKind::kNone;
   int gross_count = 0, flagged_gross = 0, clean_count = 0, false_alarms = 0;
   for (const auto& s : r.result.sensors) {
-    if (!s.reported || !s.in_map || s.verdict == "undetermined") continue;
+    if (!s.reported || !s.in_map || s.verdict == audit::SensorVerdict::kUndetermined) continue;
     if (gross[s.id]) {
       ++gross_count;
-      flagged_gross += s.verdict == "inconsistent";
-      EXPECT_EQ(s.verdict, "inconsistent") << s.id << ": " << s.reason;
+      flagged_gross += s.verdict == audit::SensorVerdict::kInconsistent;
+      EXPECT_EQ(s.verdict, audit::SensorVerdict::kInconsistent) << s.id << ": " << s.reason;
     } else {
       ++clean_count;
-      false_alarms += s.verdict == "inconsistent";
+      false_alarms += s.verdict == audit::SensorVerdict::kInconsistent;
     }
   }
   EXPECT_GT(gross_count, 3);
@@ -151,7 +151,7 @@ TEST(Audit, LonLatMapGivesTheSameAnswers) {
   double worst = 0;
   for (std::size_t k = 0; k < ea.size(); ++k) worst = std::max(worst, std::abs(ea[k] - eb[k]));
   EXPECT_LT(worst, 0.25) << "position errors differ by up to " << worst << " bins";
-  std::map<std::string, std::string> va;
+  std::map<std::string, audit::SensorVerdict> va;
   for (const auto& s : a.result.sensors) va[s.id] = s.verdict;
   int differ = 0;
   for (const auto& s : b.result.sensors) differ += va[s.id] != s.verdict;

@@ -123,7 +123,7 @@ TEST(MissingFace, BisectorGraphWithoutAnOrphanFaceIsNotTheVoronoiDiagram) {
         EXPECT_LT(best, 1e-8) << "trial " << trial << " site " << s.id;
         if (m) EXPECT_NEAR(m->weight, s.weight / wmax, 1e-8) << "trial " << trial;
       }
-      EXPECT_EQ(r.voronoi, "no") << "trial " << trial;
+      EXPECT_EQ(r.voronoi, MwvdAnswer::kNo) << "trial " << trial;
       // Some difference lies at the missing face.
       double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;
       for (const Point& p : instance->f)

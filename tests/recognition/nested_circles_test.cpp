@@ -64,7 +64,7 @@ int run_round_trips(int roots, int trials, std::uint64_t seed) {
     if (!r.bisector_graph) continue;
     EXPECT_FALSE(r.unique);
     EXPECT_TRUE(r.region.has_value()) << "trial " << trial;
-    EXPECT_EQ(r.voronoi, "yes") << "trial " << trial << ": "
+    EXPECT_EQ(r.voronoi, MwvdAnswer::kYes) << "trial " << trial << ": "
                                 << (r.voronoi_differences.empty() ? "" : r.voronoi_differences[0].message);
     EXPECT_EQ(r.sites.size(), sites.size()) << "trial " << trial;
     if (!r.region) continue;
@@ -129,7 +129,7 @@ TEST(NestedCircles, OverlappingSolutionSetsAreAccepted) {
   EXPECT_LT(std::abs(rep), 2.0);
   EXPECT_GT(std::abs(rep - mobius::Complex(2.5, 0)), 1.0);
   EXPECT_LT(std::abs(rep - mobius::Complex(2.5, 0)), 2.0);
-  EXPECT_EQ(r.voronoi, "yes");
+  EXPECT_EQ(r.voronoi, MwvdAnswer::kYes);
   EXPECT_EQ(r.sites.size(), 5u);
 }
 

@@ -110,9 +110,9 @@ TEST(AuditHtml, SummaryCountsVerdicts) {
   // Counted here from the fixture's verdicts, independently of count_verdicts.
   std::size_t consistent = 0, inconsistent = 0, not_in_map = 0, unreported = 0;
   for (const auto& s : f.result.sensors) {
-    consistent += s.verdict == "consistent";
-    inconsistent += s.verdict == "inconsistent";
-    not_in_map += s.verdict == "not_in_map";
+    consistent += s.verdict == audit::SensorVerdict::kConsistent;
+    inconsistent += s.verdict == audit::SensorVerdict::kInconsistent;
+    not_in_map += s.verdict == audit::SensorVerdict::kNotInMap;
     unreported += !s.reported;
   }
   EXPECT_NE(html.find("id=\"count-sensors\">" + std::to_string(f.result.sensors.size()) + "<"), std::string::npos);

@@ -136,7 +136,7 @@ TEST(AuditJson, SensorsCarryReconstructionReportAndComparison) {
       EXPECT_NEAR(back.x, want.reported->position.x, 1e-6);
       EXPECT_NEAR(back.y, want.reported->position.y, 1e-6);
       EXPECT_EQ(r["weight"].get<double>(), *want.reported->weight);
-      EXPECT_EQ(got["verdict"], want.verdict);
+      EXPECT_EQ(got["verdict"], audit::to_string(want.verdict));
       EXPECT_EQ(got["reason"], want.reason);
     } else {
       EXPECT_TRUE(got["reported"].is_null());
@@ -287,7 +287,7 @@ TEST(AuditSensorsGeoJson, PointsAtReconstructedPositionsInLonLat) {
       const Point reported = forward(f.map, p["properties"]["reported_lon"], p["properties"]["reported_lat"]);
       EXPECT_NEAR(reported.x, want.reported->position.x, 1e-6);
       EXPECT_NEAR(reported.y, want.reported->position.y, 1e-6);
-      EXPECT_EQ(p["properties"]["verdict"], want.verdict);
+      EXPECT_EQ(p["properties"]["verdict"], audit::to_string(want.verdict));
     } else {
       EXPECT_TRUE(p["properties"]["reported_lon"].is_null());
       EXPECT_TRUE(p["properties"]["verdict"].is_null());
@@ -318,7 +318,7 @@ TEST(AuditSensorsGeoJson, ShiftLinesRunFromReportedToReconstructed) {
     EXPECT_EQ(xy[0][1].get<double>(), s.reported->position.y);
     EXPECT_EQ(xy[1][0].get<double>(), s.position.x);
     EXPECT_EQ(xy[1][1].get<double>(), s.position.y);
-    EXPECT_EQ(line["properties"]["verdict"], s.verdict);
+    EXPECT_EQ(line["properties"]["verdict"], audit::to_string(s.verdict));
   }
   AuditReportContext c = context_of(f);
   c.render.shift_lines = false;

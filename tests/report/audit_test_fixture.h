@@ -68,7 +68,7 @@ inline AuditFixture audit_fixture(bool geographic, const std::string& a_id = "a"
   a.power_error_db = 0.5;
   a.weight_ratio = 1.08;
   a.chi2 = 1.25;
-  a.verdict = "consistent";
+  a.verdict = audit::SensorVerdict::kConsistent;
   a.reason = "within 1.1 sigma";
   a.iou_refined = 0.98;
   a.iou_reported = 0.95;
@@ -82,7 +82,7 @@ inline AuditFixture audit_fixture(bool geographic, const std::string& a_id = "a"
   b.power_error_db = 6.5;
   b.weight_ratio = 1.9;
   b.chi2 = 412.0;
-  b.verdict = "inconsistent";
+  b.verdict = audit::SensorVerdict::kInconsistent;
   b.reason = "moved 100 m where 2 m is expected";
   b.iou_refined = 0.99;
   b.iou_reported = 0.71;
@@ -96,14 +96,14 @@ inline AuditFixture audit_fixture(bool geographic, const std::string& a_id = "a"
   d.reported = audit::ReportedSensorValues{"d", {598.0, 655.0}, 0.25, std::nullopt, std::nullopt, std::nullopt};
   d.position_error_m = std::hypot(2.0, 5.0);
   d.chi2 = 0.4;
-  d.verdict = "consistent";
+  d.verdict = audit::SensorVerdict::kConsistent;
   d.reason = "within 0.6 sigma";
 
   audit::SensorAudit e;
   e.id = "e";
   e.in_map = false;
   e.reported = audit::ReportedSensorValues{"e", {50.0, 60.0}, 0.5, std::nullopt, std::nullopt, std::nullopt};
-  e.verdict = "not_in_map";
+  e.verdict = audit::SensorVerdict::kNotInMap;
   e.reason = "no cell of the map names this sensor";
 
   f.result.sensors = {a, b, c, d, e};

@@ -1,0 +1,22 @@
+#include "audit/sensor_verdict.h"
+
+namespace covmap::audit {
+
+std::string_view to_string(SensorVerdict v) {
+  switch (v) {
+    case SensorVerdict::kUnreported: return "unreported";
+    case SensorVerdict::kConsistent: return "consistent";
+    case SensorVerdict::kInconsistent: return "inconsistent";
+    case SensorVerdict::kUndetermined: return "undetermined";
+    case SensorVerdict::kNotInMap: return "not_in_map";
+  }
+  return "unreported";  // unreachable: every enumerator is handled above
+}
+
+std::optional<SensorVerdict> sensor_verdict_from_string(std::string_view name) {
+  for (SensorVerdict v : kAllSensorVerdicts)
+    if (to_string(v) == name) return v;
+  return std::nullopt;
+}
+
+}  // namespace covmap::audit

@@ -1,0 +1,28 @@
+// The verdict on one sensor of an audit: a closed set, so that adding a verdict is a compile error
+// wherever it is not handled (reports, counts, exit codes).
+#pragma once
+
+#include <optional>
+#include <string_view>
+
+namespace covmap::audit {
+
+enum class SensorVerdict {
+  kUnreported,    // the map has a cell for it, but it was not reported: nothing to judge
+  kConsistent,    // the report agrees with the map within the combined uncertainty
+  kInconsistent,  // the map is explained significantly better by the reconstruction (verdict.h)
+  kUndetermined,  // reported, but the map does not determine the sensor well enough to judge it
+  kNotInMap,      // reported, but no cell of the map names it
+};
+
+inline constexpr SensorVerdict kAllSensorVerdicts[] = {SensorVerdict::kUnreported, SensorVerdict::kConsistent,
+                                                       SensorVerdict::kInconsistent, SensorVerdict::kUndetermined,
+                                                       SensorVerdict::kNotInMap};
+
+// The names used in report.json and sensors.geojson: "unreported", "consistent", "inconsistent",
+// "undetermined", "not_in_map". (The reports write null instead of "unreported".)
+std::string_view to_string(SensorVerdict v);
+// The verdict named `name` (as written by to_string); nullopt for any other text.
+std::optional<SensorVerdict> sensor_verdict_from_string(std::string_view name);
+
+}  // namespace covmap::audit
