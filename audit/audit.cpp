@@ -1,5 +1,7 @@
 #include "audit/audit.h"
 
+#include "core/box.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -46,12 +48,6 @@ void accumulate_ring(const Ring& ring, double& area, double& cx, double& cy) {
   }
 }
 
-struct Box {
-  double xmin = INFINITY, ymin = INFINITY, xmax = -INFINITY, ymax = -INFINITY;
-  void add(Point p) {
-    xmin = std::min(xmin, p.x), ymin = std::min(ymin, p.y), xmax = std::max(xmax, p.x), ymax = std::max(ymax, p.y);
-  }
-};
 
 // The map's frame as a simple counter-clockwise polygon, for clipping recomputed diagrams: the
 // longest closed walk along frame arcs; the bounding box when there is none.

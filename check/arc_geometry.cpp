@@ -39,26 +39,6 @@ std::optional<std::pair<double, double>> clip_line(const ArcPath& path, const Bo
 
 }  // namespace
 
-void Box::add(Point p) {
-  xmin = std::min(xmin, p.x);
-  xmax = std::max(xmax, p.x);
-  ymin = std::min(ymin, p.y);
-  ymax = std::max(ymax, p.y);
-}
-
-Box Box::grown(double margin) const {
-  return Box{xmin - margin, ymin - margin, xmax + margin, ymax + margin};
-}
-
-bool Box::contains(Point p) const {
-  return p.x >= xmin && p.x <= xmax && p.y >= ymin && p.y <= ymax;
-}
-
-bool Box::overlaps(const Box& o) const {
-  return !empty() && !o.empty() && xmin <= o.xmax && o.xmin <= xmax && ymin <= o.ymax &&
-         o.ymin <= ymax;
-}
-
 Point ArcPath::at(double s) const {
   if (circle) {
     const double t = start_angle + sense * s;
@@ -185,7 +165,7 @@ Box bounding_box(const ArcPath& path, const Box& limit) {
     for (const Point& e : extremes) {
       const double s = wrap_angle(path.sense * (std::atan2(e.y, e.x) - path.start_angle));
       if (path.closed || s <= path.s1)
-        box.add({path.centre.x + path.radius * e.x, path.centre.y + path.radius * e.y});
+        box.add(path.centre.x + path.radius * e.x, path.centre.y + path.radius * e.y);
     }
     return box;
   }

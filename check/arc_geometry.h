@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/box.h"
 #include "core/diagram.h"
 
 namespace covmap::check::detail {
@@ -14,14 +15,6 @@ namespace covmap::check::detail {
 inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
 inline constexpr double kTwoPi = 6.283185307179586476925286766559;
 
-struct Box {
-  double xmin = kInfinity, ymin = kInfinity, xmax = -kInfinity, ymax = -kInfinity;
-  bool empty() const { return xmin > xmax || ymin > ymax; }
-  void add(Point p);
-  Box grown(double margin) const;
-  bool contains(Point p) const;
-  bool overlaps(const Box& o) const;
-};
 
 // An arc as a path p(s), s in [s0, s1]. Circles: s is the angle travelled from the start node (or
 // from angle 0 for a full circle), in the arc's sense, so s0 = 0 and s1 = sweep in (0, 2pi]. Lines:

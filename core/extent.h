@@ -8,20 +8,16 @@
 #include <cmath>
 #include <vector>
 
+#include "core/box.h"
 #include "core/diagram.h"
 #include "core/large_buffer.h"
 
 namespace covmap {
 
-struct Extent {
-  double xmin = 0, ymin = 0, xmax = 0, ymax = 0;
-  double diagonal() const { return std::hypot(xmax - xmin, ymax - ymin); }
-};
-
 // The central 98 % of a set of coordinates (all of them below 100): order statistics by selection,
-// linear in the number of points.
-inline Extent central_extent(LargeVector<double> xs, LargeVector<double> ys) {
-  Extent e;
+// linear in the number of points. No points: the zero box at the origin (a diagonal of 0).
+inline Box central_extent(LargeVector<double> xs, LargeVector<double> ys) {
+  Box e{0, 0, 0, 0};
   if (xs.empty()) return e;
   const std::size_t cut = xs.size() < 100 ? 0 : xs.size() / 100;
   auto at = [](LargeVector<double>& v, std::size_t k) {
@@ -33,7 +29,7 @@ inline Extent central_extent(LargeVector<double> xs, LargeVector<double> ys) {
   return e;
 }
 
-inline Extent robust_extent(const std::vector<Node>& nodes) {
+inline Box robust_extent(const std::vector<Node>& nodes) {
   LargeVector<double> xs, ys;
   xs.reserve(nodes.size());
   ys.reserve(nodes.size());
@@ -47,7 +43,7 @@ inline Extent robust_extent(const std::vector<Node>& nodes) {
 
 // The extent of a whole graph: its nodes, and for graphs with few or no nodes (disjoint circles and
 // lines, paper 5 §3) also the boxes of its full circles and the anchor points of its whole lines.
-inline Extent graph_extent(const Diagram& g) {
+inline Box graph_extent(const Diagram& g) {
   LargeVector<double> xs, ys;
   xs.reserve(g.nodes.size());
   ys.reserve(g.nodes.size());

@@ -1,9 +1,7 @@
 // Validity of a clip polygon: simple, non-degenerate, and its orientation.
 //
-// Decisions here are exact: orientation() uses a floating-point filter and falls back to exact
-// expansion arithmetic when the filter cannot decide, so "do these edges touch?" never depends on a
-// tolerance. (Exactness assumes no overflow or underflow in products of coordinates, i.e. values
-// well within 1e-150 .. 1e150 in magnitude, which any real map coordinate is.)
+// Decisions here are exact: they are built on core/orientation.h, so "do these edges touch?" never
+// depends on a tolerance.
 #pragma once
 
 #include <optional>
@@ -11,11 +9,9 @@
 #include <string>
 
 #include "core/diagram.h"
+#include "core/orientation.h"
 
 namespace covmap::io {
-
-// Sign of the turn a -> b -> c: +1 counter-clockwise (left), -1 clockwise (right), 0 collinear.
-int orientation(Point a, Point b, Point c);
 
 // Why `ring` (vertices in order, the closing edge implied, no repeated closing vertex) is not a
 // usable clip polygon, or nullopt if it is one. Checked: at least 3 vertices, finite coordinates,

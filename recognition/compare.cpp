@@ -70,10 +70,10 @@ class ArcProximity {
   explicit ArcProximity(const Diagram& d) {
     paths_.reserve(d.arcs.size());
     for (const Arc& a : d.arcs) paths_.push_back(voronoi::arc_path(a, d.nodes));
-    const Extent e = robust_extent(d.nodes);
+    const Box e = robust_extent(d.nodes);
     grid_ = voronoi::make_grid(
         d.arcs.size(), [&](std::size_t k) { return voronoi::arc_bounds(d.arcs[k], d.nodes); },
-        {e.xmin, e.ymin, e.xmax, e.ymax}, d.arcs.size(), kMaxCells);
+        e, d.arcs.size(), kMaxCells);
   }
 
   bool near(Point q, double tol) const {
@@ -157,7 +157,7 @@ Comparison compare_graphs(const Diagram& a, const Diagram& b, const CompareOptio
   // graphs' sites (not the second graph's nodes, which may hold the far artefacts the horizon is
   // there to ignore).
   const Diagram& reference = a.arcs.empty() ? b : a;
-  const Extent e = graph_extent(reference);
+  const Box e = graph_extent(reference);
   double xmin = e.xmin, xmax = e.xmax, ymin = e.ymin, ymax = e.ymax;
   if (reference.arcs.empty() && reference.nodes.empty()) xmin = ymin = INFINITY, xmax = ymax = -INFINITY;
   for (const Diagram* d : {&a, &b})

@@ -324,7 +324,7 @@ Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
   parallel_chunks(g.arcs.size(), worker_count(g.arcs.size()), [&](std::size_t b, std::size_t e, int) {
     for (std::size_t a = b; a < e; ++a) g.arcs[a].left_site = g.arcs[a].right_site = kNone;
   });
-  const Extent extent = graph_extent(g);
+  const Box extent = graph_extent(g);
   const double scale = std::max(extent.diagonal(), 1e-300);
   const double tol = options.relative_tolerance * scale;
   // Arcs whose ends are not on their curves: malformed, and invisible to the inversions below,

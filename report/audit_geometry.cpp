@@ -1,5 +1,7 @@
 #include "report/audit_geometry.h"
 
+#include "core/box.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -15,20 +17,6 @@ constexpr double kPi = 3.14159265358979323846;
 
 bool same(Point a, Point b) { return a.x == b.x && a.y == b.y; }
 
-struct Bounds {
-  double xmin = std::numeric_limits<double>::infinity();
-  double ymin = std::numeric_limits<double>::infinity();
-  double xmax = -std::numeric_limits<double>::infinity();
-  double ymax = -std::numeric_limits<double>::infinity();
-  void add(double x, double y) {
-    if (!std::isfinite(x) || !std::isfinite(y)) return;
-    xmin = std::min(xmin, x);
-    ymin = std::min(ymin, y);
-    xmax = std::max(xmax, x);
-    ymax = std::max(ymax, y);
-  }
-  double diagonal() const { return xmin <= xmax ? std::hypot(xmax - xmin, ymax - ymin) : 0.0; }
-};
 
 // Equal steps over [0, sweep]: enough for the angle bound and for the sagitta bound.
 int circle_segments(double sweep, double r, const ArcSampling& s) {
@@ -42,12 +30,12 @@ int circle_segments(double sweep, double r, const ArcSampling& s) {
 }  // namespace
 
 double diagram_extent(const Diagram& d) {
-  Bounds b;
+  Box b;
   if (!d.clip.empty()) {
-    for (const auto& p : d.clip) b.add(p.x, p.y);
+    for (const auto& p : d.clip) b.add_finite(p.x, p.y);
   } else {
-    for (const auto& n : d.nodes) b.add(n.x, n.y);
-    for (const auto& s : d.sites) b.add(s.x, s.y);
+    for (const auto& n : d.nodes) b.add_finite(n.x, n.y);
+    for (const auto& s : d.sites) b.add_finite(s.x, s.y);
   }
   const double diagonal = b.diagonal();
   return diagonal > 0 ? diagonal : 1.0;

@@ -12,7 +12,6 @@
 namespace covmap::report {
 namespace {
 
-using detail::Box;
 using detail::svg_number;
 
 // The golden angle in degrees: successive multiples never come close to repeating a hue.

@@ -13,18 +13,11 @@
 
 #include <string>
 
+#include "core/box.h"
 #include "core/diagram.h"
 
 namespace covmap::report::detail {
 
-struct Box {
-  double xmin = 0.0;
-  double ymin = 0.0;
-  double xmax = 0.0;
-  double ymax = 0.0;
-  double width() const { return xmax - xmin; }
-  double height() const { return ymax - ymin; }
-};
 
 // The far box for `diagram` drawn in `view` (see above).
 Box far_box(const Diagram& diagram, const Box& view);

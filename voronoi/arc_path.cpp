@@ -112,14 +112,12 @@ namespace {
 // coordinates cover the rounding of the ends and extreme points.
 constexpr double kBoundsPadUlps = 4.0;
 
-void grow(ArcBounds& b, double x, double y) {
-  b = {std::min(b[0], x), std::min(b[1], y), std::max(b[2], x), std::max(b[3], y)};
-}
+void grow(Box& b, double x, double y) { b.add(x, y); }
 
 }  // namespace
 
-ArcBounds arc_bounds(const Arc& arc, const Node& from, const Node& to) {
-  ArcBounds b = {INFINITY, INFINITY, -INFINITY, -INFINITY};
+Box arc_bounds(const Arc& arc, const Node& from, const Node& to) {
+  Box b;
   if (const Circle* c = std::get_if<Circle>(&arc.curve)) {
     if (arc.from == kNone || arc.from == arc.to) {
       b = {c->cx - c->r, c->cy - c->r, c->cx + c->r, c->cy + c->r};
@@ -147,11 +145,11 @@ ArcBounds arc_bounds(const Arc& arc, const Node& from, const Node& to) {
     grow(b, to.x, to.y);
   }
   const double pad = kBoundsPadUlps * std::numeric_limits<double>::epsilon() *
-                     std::max({std::abs(b[0]), std::abs(b[1]), std::abs(b[2]), std::abs(b[3])});
-  return {b[0] - pad, b[1] - pad, b[2] + pad, b[3] + pad};
+                     std::max({std::abs(b.xmin), std::abs(b.ymin), std::abs(b.xmax), std::abs(b.ymax)});
+  return {b.xmin - pad, b.ymin - pad, b.xmax + pad, b.ymax + pad};
 }
 
-ArcBounds arc_bounds(const Arc& arc, const std::vector<Node>& nodes) {
+Box arc_bounds(const Arc& arc, const std::vector<Node>& nodes) {
   const Node none{};
   return arc_bounds(arc, arc.from == kNone ? none : nodes[arc.from], arc.to == kNone ? none : nodes[arc.to]);
 }

@@ -10,6 +10,7 @@
 #include <limits>
 #include <vector>
 
+#include "core/box.h"
 #include "core/diagram.h"
 
 namespace covmap::voronoi {
@@ -42,9 +43,8 @@ double pseudo_angle(double x, double y);
 // points within its sweep, widened by a few units in the last place so that rounding cannot make
 // them miss the arc; ±infinity for a line arc with an end at infinity. `from` and `to` are the
 // arc's end nodes (ignored where the arc has none).
-using ArcBounds = std::array<double, 4>;
-ArcBounds arc_bounds(const Arc& arc, const Node& from, const Node& to);
-ArcBounds arc_bounds(const Arc& arc, const std::vector<Node>& nodes);
+Box arc_bounds(const Arc& arc, const Node& from, const Node& to);
+Box arc_bounds(const Arc& arc, const std::vector<Node>& nodes);
 
 // Parameters (within [s0, s1]) where the path crosses the segment a–b, in increasing order.
 std::vector<double> path_segment_crossings(const ArcPathView& path, Point a, Point b);

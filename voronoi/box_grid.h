@@ -15,11 +15,6 @@
 
 namespace covmap::voronoi {
 
-using Box = ArcBounds;  // xmin, ymin, xmax, ymax
-
-inline bool is_finite(const Box& b) {
-  return std::isfinite(b[0]) && std::isfinite(b[1]) && std::isfinite(b[2]) && std::isfinite(b[3]);
-}
 
 // Boxes in a uniform grid of cells, stored in compressed rows (cell_begin[c] .. cell_begin[c+1]
 // index into items). Items with an unbounded or a large box are kept apart in `always`; a query
@@ -46,25 +41,25 @@ template <class BoxOf>
 BoxGrid make_grid(std::size_t n, BoxOf&& box_of, Box area, std::size_t target, long long max_cells) {
   BoxGrid g;
   const int side = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(target))), 1, 2048);
-  if (!is_finite(area)) {
+  if (!area.finite()) {
     for (std::size_t k = 0; k < n; ++k) g.always.push_back(static_cast<int>(k));
     return g;
   }
   g.nx = g.ny = side;
-  g.x0 = area[0], g.y0 = area[1];
-  g.cw = std::max((area[2] - area[0]) / side, 1e-300);
-  g.ch = std::max((area[3] - area[1]) / side, 1e-300);
+  g.x0 = area.xmin, g.y0 = area.ymin;
+  g.cw = std::max((area.xmax - area.xmin) / side, 1e-300);
+  g.ch = std::max((area.ymax - area.ymin) / side, 1e-300);
   const std::size_t cells = static_cast<std::size_t>(side) * side;
   auto for_cells = [&](const Box& b, auto&& f) {
-    const int i0 = g.column(b[0]), i1 = g.column(b[2]), j0 = g.row(b[1]), j1 = g.row(b[3]);
+    const int i0 = g.column(b.xmin), i1 = g.column(b.xmax), j0 = g.row(b.ymin), j1 = g.row(b.ymax);
     for (int j = j0; j <= j1; ++j)
       for (int i = i0; i <= i1; ++i) f(static_cast<std::size_t>(j) * side + i);
   };
   // Boxes that are unbounded or would cover more than max_cells cells (faces reaching far out:
   // the grid spans the central nodes only) are kept in `always`, tested by every query.
   auto gridded = [&](const Box& b) {
-    if (!is_finite(b)) return false;
-    const long long cells_covered = static_cast<long long>(g.column(b[2]) - g.column(b[0]) + 1) * (g.row(b[3]) - g.row(b[1]) + 1);
+    if (!b.finite()) return false;
+    const long long cells_covered = static_cast<long long>(g.column(b.xmax) - g.column(b.xmin) + 1) * (g.row(b.ymax) - g.row(b.ymin) + 1);
     return cells_covered <= max_cells;
   };
   // Counted and filled on both cores, each worker over its own contiguous range of items; within
@@ -78,7 +73,7 @@ BoxGrid make_grid(std::size_t n, BoxOf&& box_of, Box area, std::size_t target, l
     for (std::size_t k = b; k < e; ++k) {
       const Box box = box_of(k);
       if (gridded(box)) for_cells(box, [&](std::size_t c) { ++count[w][c]; });
-      else if (box[0] <= box[2]) unbounded[w].push_back(static_cast<int>(k));
+      else if (box.xmin <= box.xmax) unbounded[w].push_back(static_cast<int>(k));
     }
   });
   g.cell_begin.assign(cells + 1, 0);

@@ -14,6 +14,7 @@
 
 #include "voronoi/arc_path.h"
 #include "voronoi/box_grid.h"
+#include "core/extent.h"
 #include "core/large_buffer.h"
 #include "voronoi/tolerances.h"
 
@@ -138,8 +139,6 @@ bool cycle_contains(const Diagram& d, std::span<const HalfArc> cycle, Point p) {
 
 namespace {
 
-constexpr Box kEmptyBox = {INFINITY, INFINITY, -INFINITY, -INFINITY};
-
 // Boxes kept per arc in single precision, rounded outward (half the memory of doubles; a box only
 // preselects). Coordinates beyond float range become infinite: such a box is treated as unbounded.
 using FloatBox = std::array<float, 4>;
@@ -153,10 +152,10 @@ FloatBox to_float_outward(const Box& b) {
     float f = static_cast<float>(x);
     return static_cast<double>(f) < x ? std::nextafter(f, INFINITY) : f;
   };
-  return {down(b[0]), down(b[1]), up(b[2]), up(b[3])};
+  return {down(b.xmin), down(b.ymin), up(b.xmax), up(b.ymax)};
 }
 
-Box to_double(const FloatBox& b) { return {b[0], b[1], b[2], b[3]}; }
+Box to_double(const FloatBox& f) { return {f[0], f[1], f[2], f[3]}; }  // FloatBox: xmin, ymin, xmax, ymax
 
 
 // Per half-arc geometry at the node where it starts: the pseudo-angle of its direction of travel and its
@@ -225,13 +224,8 @@ Box central_box(const std::vector<Node>& nodes) {
     const Node& n = nodes[k];
     if (std::isfinite(n.x) && std::isfinite(n.y)) xs.push_back(n.x), ys.push_back(n.y);
   }
-  if (xs.empty()) return kEmptyBox;
-  const std::size_t cut = xs.size() >= 100 ? xs.size() / 100 : 0;
-  auto at = [](LargeVector<double>& v, std::size_t k) {
-    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
-    return v[k];
-  };
-  return {at(xs, cut), at(ys, cut), at(xs, xs.size() - 1 - cut), at(ys, ys.size() - 1 - cut)};
+  if (xs.empty()) return Box{};
+  return central_extent(std::move(xs), std::move(ys));
 }
 
 }  // namespace
@@ -565,12 +559,11 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
   std::optional<BoxGrid> face_grid;
   auto candidate_faces = [&](Point p) {
     if (!face_grid) {
-      LargeVector<Box> boxes(outer_area.size(), kEmptyBox);
+      LargeVector<Box> boxes(outer_area.size(), Box{});
       for (std::size_t f = 0; f < outer_area.size(); ++f)
         for (const HalfArc& h : d.faces[f].boundaries.front()) {
           const Box b = arc_bounds(d.arcs[h.arc], d.nodes);
-          boxes[f] = {std::min(boxes[f][0], b[0]), std::min(boxes[f][1], b[1]), std::max(boxes[f][2], b[2]),
-                      std::max(boxes[f][3], b[3])};
+          boxes[f].add_box(b);
         }
       // Over the central nodes: a few faces reaching far out would otherwise stretch the cells
       // until every face shares one.
@@ -616,7 +609,7 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
     std::vector<std::pair<double, double>> xs;
     auto crossings = [&](int a, const Box& b, double y) {
       xs.clear();
-      if (!(b[1] <= y && y <= b[3])) return;
+      if (!(b.ymin <= y && y <= b.ymax)) return;
       const ArcPathView p = path_of_arc(a);
       if (p.circle) {
         const double dy = y - p.cy;
@@ -637,8 +630,8 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
       }
     };
     LargeVector<int> stamp(d.arcs.size(), -1);
-    const double eps_x = is_finite(nodes_box)
-                             ? tolerance::kRayTie * std::max(nodes_box[2] - nodes_box[0], nodes_box[3] - nodes_box[1])
+    const double eps_x = nodes_box.finite()
+                             ? tolerance::kRayTie * std::max(nodes_box.xmax - nodes_box.xmin, nodes_box.ymax - nodes_box.ymin)
                              : 0.0;
     for (std::size_t k = 0; k < holes.size(); ++k) {
       // Rightmost point of the hole.
@@ -662,7 +655,7 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
       bool ambiguous = false;
       auto test_arc = [&](int a) {
         const Box b = box_of(static_cast<std::size_t>(a));
-        if (b[2] <= right.x) return;  // wholly left of the ray's origin
+        if (b.xmax <= right.x) return;  // wholly left of the ray's origin
         crossings(a, b, right.y);
         for (auto [x, ty] : xs) {
           if (x <= right.x + eps_x) continue;

@@ -199,7 +199,7 @@ TEST(Svg, WedgesThroughInfinityFillTheRightSide) {
 
 TEST(Svg, RaysAreCutOutsideTheView) {
   const auto d = three_wedges();
-  const detail::Box view{-2, -2, 2, 2};
+  const Box view{-2, -2, 2, 2};
   const auto far = detail::far_box(d, view);
   EXPECT_LT(far.xmin, view.xmin);
   EXPECT_GT(far.ymax, view.ymax);
