@@ -20,21 +20,15 @@
 
 #include "audit/sensor_verdict.h"
 #include "core/coverage_cells.h"
+#include "core/reported_sensor.h"
 #include "cleaning/map_cleaning.h"
 #include "core/diagram.h"
 
 namespace covmap::audit {
 
-// A sensor as the operator reported it (planar position; weight already derived from the power
-// when a path-loss exponent was given).
-struct ReportedSensorValues {
-  std::string id;
-  Point position;
-  std::optional<double> weight;
-  std::optional<double> tx_power_dbm;
-  std::optional<double> position_sigma_m;  // stated precision
-  std::optional<double> power_sigma_db;
-};
+// Reported sensors (core/reported_sensor.h) are given in planar map units, with the weight already
+// derived from the power when a path-loss exponent was given (io/reported_sensors.h does both).
+using ReportedSensorValues = ReportedSensor;  // the pipeline's old name, until its stages are split
 
 struct AuditOptions {
   cleaning::CleaningOptions cleaning;

@@ -80,7 +80,7 @@ int main(int argc, char** argv) {
     o.seed = static_cast<std::uint64_t>(seed);
     if (lonlat) {
       o.frame = mapgen::OutputFrame::kLonLat;
-      o.centre = mapgen::LonLat{8.5, 47.3};
+      o.centre = io::LonLat{8.5, 47.3};
       o.coordinate_digits = digits + 5;
     } else {
       o.coordinate_digits = digits;
@@ -95,9 +95,8 @@ int main(int argc, char** argv) {
     so.alpha = alpha;
     so.planar = !lonlat;
     so.projection = map.projection ? &*map.projection : nullptr;
-    std::vector<audit::ReportedSensorValues> reported;
-    for (const auto& s : io::read_reported_sensors(dir / mapgen::kSensorsFileName, so))
-      reported.push_back({s.id, s.position, s.weight, s.tx_power_dbm, s.position_sigma_m, s.power_sigma_db});
+    std::vector<ReportedSensor> reported;
+    reported = io::read_reported_sensors(dir / mapgen::kSensorsFileName, so);
     fs::remove_all(dir);
     cells += map.cells.size();
     vertices += map.vertex_count;
@@ -127,7 +126,7 @@ int main(int argc, char** argv) {
         Point p = s.position;
         if (generated.projection) {
           const auto ll = map.projection->inverse(p);
-          p = generated.projection->forward({ll.lon, ll.lat});
+          p = generated.projection->forward(ll.lon, ll.lat);
         }
         const double e = std::hypot(p.x - t.position.x, p.y - t.position.y);
         pos_bins.push_back(e / bin);

@@ -9,46 +9,12 @@
 
 #include "cli/cli_support.h"
 #include "report/audit_report.h"
+#include "io/atomic_file.h"
 #include "io/coverage_map.h"
 #include "io/reported_sensors.h"
 #include "audit/audit.h"
 
 namespace covmap::cli {
-namespace {
-
-namespace fs = std::filesystem;
-
-// Writes the files into a fresh directory beside the target and renames it into place, so that a
-// failure leaves no partial output directory (and an existing one untouched until the end).
-void write_directory(const fs::path& target, const std::vector<std::pair<std::string, std::string>>& files) {
-  const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  fs::create_directories(parent);
-  std::random_device rd;
-  const fs::path temp = parent / (target.filename().string() + ".tmp-" + std::to_string(rd()));
-  try {
-    fs::create_directory(temp);
-    for (const auto& [name, content] : files) {
-      std::ofstream f(temp / name, std::ios::binary);
-      f << content;
-      f.close();
-      if (!f) throw std::runtime_error("cannot write " + (temp / name).string());
-    }
-    if (fs::exists(target)) {
-      const fs::path old = parent / (target.filename().string() + ".old-" + std::to_string(rd()));
-      fs::rename(target, old);
-      fs::rename(temp, target);
-      fs::remove_all(old);
-    } else {
-      fs::rename(temp, target);
-    }
-  } catch (...) {
-    std::error_code ignored;
-    fs::remove_all(temp, ignored);
-    throw;
-  }
-}
-
-}  // namespace
 
 void setup_audit(CLI::App& app, AuditCommandOptions& options) {
   CLI::App* cmd = app.add_subcommand("audit", "Audit a coverage map against its sensors; write reports to a directory");
@@ -85,14 +51,13 @@ int run_audit(const AuditCommandOptions& options) {
     mo.sensor_property = options.sensor_property;
     mo.planar = options.planar;
     const io::CoverageMap map = io::read_coverage_map(options.map_path, mo);
-    std::vector<audit::ReportedSensorValues> reported;
+    std::vector<ReportedSensor> reported;
     if (!options.sensors_path.empty()) {
       io::ReportedSensorOptions so;
       so.alpha = options.alpha;
       so.planar = options.planar;
       so.projection = map.projection ? &*map.projection : nullptr;
-      for (const io::ReportedSensor& r : io::read_reported_sensors(options.sensors_path, so))
-        reported.push_back({r.id, r.position, r.weight, r.tx_power_dbm, r.position_sigma_m, r.power_sigma_db});
+      reported = io::read_reported_sensors(options.sensors_path, so);
     }
     say("map read: " + std::to_string(map.cells.size()) + " cells, " + std::to_string(map.vertex_count) + " vertices");
     audit::AuditOptions ao;
@@ -113,7 +78,7 @@ int run_audit(const AuditCommandOptions& options) {
     say("writing diagram.geojson");
     report::write_diagram_geojson(context, diagram);
     say("moving the reports into place");
-    write_directory(options.output_dir, {{"report.json", json.str()},
+    io::write_directory_atomically(options.output_dir, {{"report.json", json.str()},
                                          {"report.html", html.str()},
                                          {"sensors.geojson", sensors.str()},
                                          {"diagram.geojson", diagram.str()}});

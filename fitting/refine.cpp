@@ -6,11 +6,13 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 
 #include <ceres/solver.h>
 
 #include "fitting/covariance.h"
+#include "fitting/inner_ordering.h"
 #include "fitting/problem_setup.h"
 #include "fitting/robust_loss.h"
 #include "fitting/tolerances.h"
@@ -45,6 +47,17 @@ ceres::Solver::Options solver_options(const RefineOptions& options) {
   solver.minimizer_progress_to_stdout = options.verbose;
   solver.logging_type = options.verbose ? ceres::PER_MINIMIZER_ITERATION : ceres::SILENT;
   return solver;
+}
+
+// Ceres's inner-iteration groups from independent_rounds (inner_ordering.h). Ceres runs groups in
+// increasing order; the last (smallest) round found goes first, as in its own ordering.
+std::shared_ptr<ceres::ParameterBlockOrdering> inner_ordering(std::vector<SiteBlock>& blocks, const detail::Layout& layout,
+                                                               std::span<const BoundarySample> samples) {
+  const auto rounds = detail::independent_rounds(blocks.size(), samples, layout.sample_count);
+  auto ordering = std::make_shared<ceres::ParameterBlockOrdering>();
+  for (std::size_t r = 0; r < rounds.size(); ++r)
+    for (int v : rounds[r]) ordering->AddElementToGroup(blocks[v].data(), static_cast<int>(rounds.size() - 1 - r));
+  return ordering;
 }
 
 // Precision-weighted combination of several independent Gaussian estimates of one quantity.
@@ -118,7 +131,9 @@ RefineResult refine_sites(std::span<const Site> initial, std::span<const Boundar
   } else {
     detail::BuiltProblem built = detail::build_problem(blocks, layout, samples, priors, loss.get());
     ceres::Solver::Summary solved;
-    ceres::Solve(solver_options(options), built.problem.get(), &solved);
+    ceres::Solver::Options solver = solver_options(options);
+    if (solver.use_inner_iterations) solver.inner_iteration_ordering = inner_ordering(blocks, layout, samples);
+    ceres::Solve(solver, built.problem.get(), &solved);
     summary.converged = solved.termination_type == ceres::CONVERGENCE;
     summary.termination = ceres::TerminationTypeToString(solved.termination_type);
     summary.message = solved.message;

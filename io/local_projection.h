@@ -56,6 +56,8 @@ class LocalProjection {
 
   double lon0() const { return lon0_; }
   double lat0() const { return lat0_; }
+  // Northing of (lon0, lat0) from the equator: the false northing is its negative.
+  double northing0() const { return northing0_; }
 
   // "transverse Mercator (WGS84), central meridian 8.0084°E, origin 47.1044°N, metres".
   std::string description() const;

@@ -45,19 +45,9 @@
 
 #include "io/local_projection.h"
 #include "core/diagram.h"
+#include "core/reported_sensor.h"
 
 namespace covmap::io {
-
-struct ReportedSensor {
-  std::string id;
-  Point position;                 // planar metres (projected if geographic)
-  std::optional<double> lon, lat;          // as read, for geographic input
-  std::optional<double> weight;            // as read or derived from power and alpha
-  std::optional<double> tx_power_dbm;      // as read
-  std::optional<double> position_sigma_m;  // stated precision, if given
-  std::optional<double> power_sigma_db;
-  std::string origin;                      // "line 7" / "features[3]" / "sites[3]", for messages
-};
 
 struct ReportedSensorOptions {
   // Path-loss exponent (`--alpha`): received power falls by 10 * alpha dB per decade of distance.

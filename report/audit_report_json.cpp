@@ -34,7 +34,7 @@ void put_position(json& j, Point p, const io::CoverageMap& map) {
   }
 }
 
-json reported_json(const audit::ReportedSensorValues& r, const io::CoverageMap& map) {
+json reported_json(const ReportedSensor& r, const io::CoverageMap& map) {
   json j = json::object();
   put_position(j, r.position, map);
   j["weight"] = number_or_null(r.weight);

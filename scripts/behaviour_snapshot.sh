@@ -1,17 +1,17 @@
 #!/usr/bin/env bash
 # Runs every covmap subcommand (and covmap-make-map) on the bundled data and on generated maps and
 # graphs, and keeps everything they say and write in one folder: exit codes, stdout, stderr and
-# output files. Two snapshots of two builds are then compared with `diff -r`: a change that must
-# not change behaviour (a restructuring, a speed-up) shows no difference.
+# output files. Two snapshots of two builds are then compared file by file: a change that must not
+# change behaviour (a restructuring, a speed-up) shows no difference, or only explained ones.
 #
 #   scripts/behaviour_snapshot.sh COVMAP MAKE_MAP OUT_DIR
 #   scripts/behaviour_snapshot.sh --compare OUT_A OUT_B
 #
-# What is normalised, and why: the folder each snapshot runs in (paths appear in messages), and
-# the programs' own paths (the audit records its command line), and wall-clock figures (the audit's
-# "seconds", progress timings), which differ from run to run. The audit itself runs with one
-# refinement thread (--threads 1) so that its numbers do not depend on thread scheduling;
-# everything else is deterministic whatever the thread count.
+# What is normalised, and why: the folder each snapshot runs in (paths appear in messages), the
+# programs' own paths (the audit records its command line), and wall-clock figures (the audit's
+# "seconds", progress timings), which differ from run to run. Everything else must be
+# reproducible; the audit runs with one refinement thread (--threads 1) so that this holds
+# whatever the machine. The comparison is scripts/behaviour_compare.py.
 set -uo pipefail
 
 normalise() {  # FILE...: wall-clock figures and the run folder out of text outputs

@@ -8,7 +8,7 @@
 #include <map>
 #include <set>
 
-#include "tools/mapgen/map_projection.h"
+#include "io/local_projection.h"
 #include "tools/mapgen/reported_sensors.h"
 #include "mapgen_test_util.h"
 
@@ -33,11 +33,11 @@ TEST_P(BundledMap, AgreesWithItsTruth) {
   ASSERT_EQ(truth["format"], "covmap.mapgen-truth/1");
 
   const bool lonlat = truth["generator"]["frame"] == "lonlat";
-  std::optional<MapProjection> projection;
-  if (lonlat) projection = MapProjection::about(truth["projection"]["lon0"], truth["projection"]["lat0"]);
+  std::optional<io::LocalProjection> projection;
+  if (lonlat) projection = io::LocalProjection::about(truth["projection"]["lon0"], truth["projection"]["lat0"]);
   const auto plane = [&](const json& position) {
     const Point p{position[0].get<double>(), position[1].get<double>()};
-    return lonlat ? projection->forward({p.x, p.y}) : p;
+    return lonlat ? projection->forward(p.x, p.y) : p;
   };
 
   // Sensors: the reported list names the true sensors in order, with the stated sigmas.
@@ -58,7 +58,7 @@ TEST_P(BundledMap, AgreesWithItsTruth) {
     EXPECT_LE(t["weight"].get<double>(), 1.0);
     if (!t["gross_error"].is_null()) ++gross;
     if (lonlat) {  // the true lon/lat and plane position describe the same point
-      const Point p = projection->forward({t["lon"].get<double>(), t["lat"].get<double>()});
+      const Point p = projection->forward(t["lon"].get<double>(), t["lat"].get<double>());
       EXPECT_NEAR(p.x, t["x"].get<double>(), 1e-3);
       EXPECT_NEAR(p.y, t["y"].get<double>(), 1e-3);
     }

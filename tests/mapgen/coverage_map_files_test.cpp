@@ -21,7 +21,7 @@ CoverageMap small_map(OutputFrame frame) {
   o.bin_size_m = 200.0;
   o.max_range_m = 1'500.0;
   o.frame = frame;
-  o.centre = LonLat{-3.7, 40.4};
+  o.centre = io::LonLat{-3.7, 40.4};
   o.errors.gross_fraction = 0.2;
   return generate_coverage_map(std::span<const Site>(sites), o);
 }

@@ -222,7 +222,7 @@ TEST(CoverageMap, LonLatOutputProjectsBackWithinTheRounding) {
   CoverageMapOptions o;
   o.frame = OutputFrame::kLonLat;
   o.bin_size_m = 400.0;
-  o.centre = LonLat{7.45, 46.95};
+  o.centre = io::LonLat{7.45, 46.95};
   const CoverageMap map = generate_coverage_map(std::span<const LonLatSite>(sites), o);
   check_exact_map(map);
   ASSERT_TRUE(map.projection);
@@ -237,7 +237,7 @@ TEST(CoverageMap, LonLatOutputProjectsBackWithinTheRounding) {
           const Point planar = cell.planar[k][v];
           const Point lonlat = cell.output[k][v];
           EXPECT_EQ(std::round(lonlat.x * 1e6) / 1e6, lonlat.x) << "6 decimals";
-          const Point back = map.projection->forward({lonlat.x, lonlat.y});
+          const Point back = map.projection->forward(lonlat.x, lonlat.y);
           ASSERT_LE(std::hypot(back.x - planar.x, back.y - planar.y), rounding_m);
           // Independently of the projection code: geodesic distance from the centre equals the
           // planar distance up to the scale of transverse Mercator (< 3e-5 within 50 km), and
@@ -285,7 +285,7 @@ TEST(CoverageMap, LonLatOutputOfPlanarInputNeedsACentre) {
   CoverageMapOptions o;
   o.frame = OutputFrame::kLonLat;
   EXPECT_THROW(generate_coverage_map(std::span<const Site>(sites), o), std::invalid_argument);
-  o.centre = LonLat{8.0, 47.0};
+  o.centre = io::LonLat{8.0, 47.0};
   const CoverageMap map = generate_coverage_map(std::span<const Site>(sites), o);
   EXPECT_NEAR(map.features[0].cells[0].output[0][0].x, 8.0, 0.1);
 }
@@ -480,7 +480,7 @@ TEST(CoverageMap, OptionsAreValidated) {
   EXPECT_TRUE(invalid([](CoverageMapOptions& o) { o.coordinate_digits = 13; }));
   EXPECT_TRUE(invalid([](CoverageMapOptions& o) { o.vertex_jitter_m = NAN; }));
   EXPECT_TRUE(invalid([](CoverageMapOptions& o) { o.alpha = 0.0; }));
-  EXPECT_TRUE(invalid([](CoverageMapOptions& o) { o.centre = LonLat{0.0, 90.0}; }));
+  EXPECT_TRUE(invalid([](CoverageMapOptions& o) { o.centre = io::LonLat{0.0, 90.0}; }));
   EXPECT_TRUE(invalid([](CoverageMapOptions& o) { o.errors.gross_fraction = 1.5; }));
   EXPECT_TRUE(invalid([](CoverageMapOptions& o) { o.errors.gross_position_min_m = 10, o.errors.gross_position_max_m = 5; }));
   EXPECT_TRUE(invalid([](CoverageMapOptions& o) { o.errors.power_sigma_db = -1; }));

@@ -63,7 +63,7 @@ inline AuditFixture audit_fixture(bool geographic, const std::string& a_id = "a"
   a.tx_power_dbm = 30.0;
   a.sigma_x = 3.0, a.sigma_y = 4.0, a.cov_xy = 1.5, a.sigma_position_m = 4.5, a.sigma_log_weight = 0.05;
   a.uncertainty_available = true;
-  a.reported = audit::ReportedSensorValues{a_id, {203.0, 396.0}, 0.27, 30.5, 10.0, 1.0};
+  a.reported = ReportedSensor{.id = a_id, .position = {203.0, 396.0}, .weight = 0.27, .tx_power_dbm = 30.5, .position_sigma_m = 10.0, .power_sigma_db = 1.0};
   a.position_error_m = 5.0;
   a.power_error_db = 0.5;
   a.weight_ratio = 1.08;
@@ -77,7 +77,7 @@ inline AuditFixture audit_fixture(bool geographic, const std::string& a_id = "a"
   b.tx_power_dbm = 42.0;
   b.sigma_x = 2.0, b.sigma_y = 2.0, b.sigma_position_m = 2.0, b.sigma_log_weight = 0.02;
   b.uncertainty_available = true;
-  b.reported = audit::ReportedSensorValues{"b", {680.0, 340.0}, 1.0, 48.5, std::nullopt, std::nullopt};
+  b.reported = ReportedSensor{.id = "b", .position = {680.0, 340.0}, .weight = 1.0, .tx_power_dbm = 48.5};
   b.position_error_m = 100.0;
   b.power_error_db = 6.5;
   b.weight_ratio = 1.9;
@@ -93,7 +93,7 @@ inline AuditFixture audit_fixture(bool geographic, const std::string& a_id = "a"
   auto d = sensor(sites[3]);
   d.uncertainty_available = true;
   d.sigma_position_m = 7.0;
-  d.reported = audit::ReportedSensorValues{"d", {598.0, 655.0}, 0.25, std::nullopt, std::nullopt, std::nullopt};
+  d.reported = ReportedSensor{.id = "d", .position = {598.0, 655.0}, .weight = 0.25};
   d.position_error_m = std::hypot(2.0, 5.0);
   d.chi2 = 0.4;
   d.verdict = audit::SensorVerdict::kConsistent;
@@ -102,7 +102,7 @@ inline AuditFixture audit_fixture(bool geographic, const std::string& a_id = "a"
   audit::SensorAudit e;
   e.id = "e";
   e.in_map = false;
-  e.reported = audit::ReportedSensorValues{"e", {50.0, 60.0}, 0.5, std::nullopt, std::nullopt, std::nullopt};
+  e.reported = ReportedSensor{.id = "e", .position = {50.0, 60.0}, .weight = 0.5};
   e.verdict = audit::SensorVerdict::kNotInMap;
   e.reason = "no cell of the map names this sensor";
 

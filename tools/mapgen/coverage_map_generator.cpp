@@ -104,7 +104,7 @@ Rectangle auto_extent(std::span<const Site> sites, double margin) {
 
 class Generator {
  public:
-  Generator(std::span<const Site> sites, const CoverageMapOptions& options, std::span<const LonLat> given_lonlat)
+  Generator(std::span<const Site> sites, const CoverageMapOptions& options, std::span<const io::LonLat> given_lonlat)
       : sites_(sites), given_lonlat_(given_lonlat) {
     out_.options = options;
   }
@@ -132,7 +132,7 @@ class Generator {
 
   void resolve_options() {
     CoverageMapOptions& o = opt();
-    if (o.centre) out_.projection = MapProjection::about(o.centre->lon, o.centre->lat);
+    if (o.centre) out_.projection = io::LocalProjection::about(o.centre->lon, o.centre->lat);
     if (o.frame == OutputFrame::kLonLat && !out_.projection)
       throw std::invalid_argument("lon/lat output of planar sensors needs a projection centre");
     if (!o.coordinate_digits) o.coordinate_digits = o.frame == OutputFrame::kLonLat ? 6 : 2;
@@ -168,7 +168,7 @@ class Generator {
   Point output_point(Point p) const {
     const int digits = *out_.options.coordinate_digits;
     if (out_.options.frame == OutputFrame::kLonLat) {
-      const LonLat g = out_.projection->inverse(p);
+      const io::LonLat g = out_.projection->inverse(p);
       return {round_to(g.lon, digits), round_to(g.lat, digits)};
     }
     return {round_to(p.x, digits), round_to(p.y, digits)};
@@ -259,7 +259,7 @@ class Generator {
   }
 
   std::span<const Site> sites_;
-  std::span<const LonLat> given_lonlat_;
+  std::span<const io::LonLat> given_lonlat_;
   std::vector<Site> scaled_;
   CoverageMap out_;
 };
@@ -337,12 +337,12 @@ CoverageMap generate_coverage_map(std::span<const LonLatSite> sites, const Cover
   }
   if (!usable) problems.throw_if_any();
   CoverageMapOptions resolved = options;
-  if (!resolved.centre) resolved.centre = LonLat{0.5 * (lon_min + lon_max), 0.5 * (lat_min + lat_max)};
-  const MapProjection projection = MapProjection::about(resolved.centre->lon, resolved.centre->lat);
+  if (!resolved.centre) resolved.centre = io::LonLat{0.5 * (lon_min + lon_max), 0.5 * (lat_min + lat_max)};
+  const io::LocalProjection projection = io::LocalProjection::about(resolved.centre->lon, resolved.centre->lat);
   std::vector<Site> planar;
-  std::vector<LonLat> given;
+  std::vector<io::LonLat> given;
   for (const auto& s : sites) {
-    const Point p = projection.forward({s.lon, s.lat});
+    const Point p = projection.forward(s.lon, s.lat);
     planar.push_back(Site{s.id, p.x, p.y, s.weight});
     given.push_back({s.lon, s.lat});
   }

@@ -3,7 +3,7 @@
 //
 // What is made
 //  1. The true sensors are placed in a plane (metres): planar input as given; lon/lat input through
-//     MapProjection (transverse Mercator about `centre`, see map_projection.h). Weights are scaled
+//     io::LocalProjection (transverse Mercator about `centre`, see map_projection.h). Weights are scaled
 //     so the largest is 1, and tx_power_dbm = 10 · alpha · log10(weight) + reference_power_dbm.
 //  2. A best-server raster of square bins (voronoi/best_server_raster.h): each bin centre belongs to the
 //     sensor minimizing distance / weight, ties to the lowest index; with max_range_m, bins whose
@@ -36,7 +36,7 @@
 #include <vector>
 
 #include "voronoi/best_server_raster.h"
-#include "tools/mapgen/map_projection.h"
+#include "io/local_projection.h"
 #include "tools/mapgen/reported_sensors.h"
 #include "core/diagram.h"
 
@@ -81,7 +81,7 @@ struct CoverageMapOptions {
   // Centre of the projection. Needed for lon/lat output of planar input (the plane is then read as
   // transverse Mercator coordinates about it); for lon/lat input, unset means the centre of the
   // sensors' lon/lat bounding box. With planar input and output it only adds lon/lat to truth.json.
-  std::optional<LonLat> centre;
+  std::optional<io::LonLat> centre;
   // Decimals of written coordinates. Unset: 6 for lon/lat (≈ 0.1 m), 2 for metres (1 cm).
   std::optional<int> coordinate_digits;
   int power_digits = 1;              // decimals of reported transmit powers (dB)
@@ -112,7 +112,7 @@ struct LonLatSite {
 struct TrueSensor {
   std::string id;
   Point position;       // plane, metres
-  std::optional<LonLat> lonlat;  // when a projection centre is known
+  std::optional<io::LonLat> lonlat;  // when a projection centre is known
   double weight = 1.0;           // scaled: the strongest sensor has weight 1
   double tx_power_dbm = 0.0;
   std::size_t bins = 0;          // bins it serves
@@ -162,7 +162,7 @@ struct CoverageMapTimings {
 
 struct CoverageMap {
   CoverageMapOptions options;  // as used: bin size, extent, digits and centre filled in
-  std::optional<MapProjection> projection;  // set when a centre is known
+  std::optional<io::LocalProjection> projection;  // set when a centre is known
   BestServerRaster raster;                  // labels index into truth
   std::vector<TrueSensor> truth;            // input order
   std::vector<ReportedSensor> reported;     // same order as truth

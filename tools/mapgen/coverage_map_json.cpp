@@ -33,7 +33,7 @@ OrderedJson optional_number(const std::optional<double>& v) { return v ? Ordered
 
 OrderedJson projection_json(const CoverageMap& map) {
   if (!map.projection) return nullptr;
-  const MapProjection& p = *map.projection;
+  const io::LocalProjection& p = *map.projection;
   return {{"method", "transverse_mercator"},
           {"ellipsoid", "WGS84"},
           {"lon0", p.lon0()},

@@ -71,7 +71,7 @@ CoverageMap make(const MakeMapOptions& o) {
     m.errors.gross_power_max_db = o.gross_power_db[1];
   }
   if (!o.lonlat_centre.empty()) {
-    m.centre = LonLat{o.lonlat_centre[0], o.lonlat_centre[1]};
+    m.centre = io::LonLat{o.lonlat_centre[0], o.lonlat_centre[1]};
     m.frame = OutputFrame::kLonLat;
   }
   if (!o.lonlat_sites_path.empty()) {
