@@ -10,7 +10,6 @@
 //
 //   audit_bench --n 100 --bin 100 --digits 1 --jitter 5 --seeds 3 [--lonlat] [--json]
 #include <CLI/CLI.hpp>
-#include <glog/logging.h>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -58,7 +57,6 @@ int main(int argc, char** argv) {
   app.add_flag("--lonlat", lonlat, "write the map in lon/lat (centre 8.5E 47.3N)");
   app.add_flag("--json", json_out, "one JSON object per configuration");
   CLI11_PARSE(app, argc, argv);
-  FLAGS_minloglevel = google::GLOG_FATAL;  // Ceres' diagnostics; the audit reports what matters
 
   std::vector<double> pos_bins, pos_spacing, weight_db, seconds;
   nlohmann::json stages = nlohmann::json::array();

@@ -1,6 +1,5 @@
 // covmap: reconstruct and verify sensor coverage maps. This file only wires the subcommands.
 #include <CLI/CLI.hpp>
-#include <glog/logging.h>
 
 #include <string>
 
@@ -10,9 +9,6 @@
 #include "cli/recognize_command.h"
 
 int main(int argc, char** argv) {
-  // Ceres reports through glog (e.g. rank-deficient covariances); covmap states what matters in its
-  // own reports, so the program keeps stderr for its own messages.
-  FLAGS_minloglevel = google::GLOG_FATAL;
   CLI::App app{"covmap: multiplicatively weighted Voronoi diagrams of sensor coverage maps"};
   app.require_subcommand(1);
   covmap::cli::DiagramOptions diagram;

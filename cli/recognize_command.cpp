@@ -10,7 +10,6 @@
 #include "io/diagram_json.h"
 #include "report/reconstruction_json.h"
 #include "report/svg.h"
-#include "recognition/tolerances.h"
 #include "recognition/compare.h"
 #include "recognition/graph_repair.h"
 #include "recognition/recognize.h"
@@ -37,13 +36,7 @@ void setup_recognize(CLI::App& app, RecognizeOptions& options) {
 int run_recognize(const RecognizeOptions& options) {
   return guarded([&]() {
     Diagram graph = io::read_diagram_json(options.graph_path, io::ArcLabels::kIgnored);
-    graph.sites.clear();
-    for (auto& a : graph.arcs) a.left_site = a.right_site = kNone;
-    // Nodes of degree 2 on one curve are no nodes of a bisector graph: repaired and reported.
-    double extent = 0;
-    for (const auto& n : graph.nodes) extent = std::max({extent, std::abs(n.x), std::abs(n.y)});
-    const auto repairs = recognition::merge_degree_two_nodes(
-        graph, recognition::tolerance::kRepairRelative * std::max(extent, 1.0));
+    const auto repairs = recognition::prepare_input_graph(graph);
     for (const auto& r : repairs) std::cerr << "covmap: repaired: " << r.what << "\n";
     recognition::RecognitionOptions ro;
     ro.voronoi_check = !options.no_voronoi_check;

@@ -15,6 +15,7 @@
 #include "fitting/inner_ordering.h"
 #include "fitting/problem_setup.h"
 #include "fitting/robust_loss.h"
+#include "fitting/solver_logging.h"
 #include "fitting/tolerances.h"
 #include "fitting/validate.h"
 
@@ -109,6 +110,7 @@ void settle_unobserved(std::vector<SiteBlock>& blocks, const detail::Layout& lay
 
 RefineResult refine_sites(std::span<const Site> initial, std::span<const BoundarySample> samples,
                           std::span<const SitePrior> priors, const RefineOptions& options) {
+  detail::quiet_solver_logging();
   const auto start = std::chrono::steady_clock::now();
   std::string error;
   if (!options.IsValid(&error)) throw std::invalid_argument("refine_sites: invalid options: " + error);

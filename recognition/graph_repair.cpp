@@ -3,11 +3,21 @@
 
 #include "voronoi/diagram_edit.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
 namespace covmap::recognition {
 
+
+std::vector<Repair> prepare_input_graph(Diagram& g) {
+  g.sites.clear();
+  for (auto& a : g.arcs) a.left_site = a.right_site = kNone;
+  // Nodes of degree 2 on one curve are no nodes of a bisector graph: repaired and reported.
+  double extent = 0;
+  for (const auto& n : g.nodes) extent = std::max({extent, std::abs(n.x), std::abs(n.y)});
+  return merge_degree_two_nodes(g, tolerance::kRepairRelative * std::max(extent, 1.0));
+}
 
 Arc reversed(Arc a) {
   std::swap(a.from, a.to);

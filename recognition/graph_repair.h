@@ -1,4 +1,6 @@
-// Repairs of input arc graphs that recognition can make without guessing, each reported.
+// Repairs of input arc graphs that recognition can make without guessing, each reported, and the
+// one preparation of an input graph that every caller of recognize() shares (the CLI, the service,
+// library users).
 #pragma once
 
 #include <string>
@@ -17,6 +19,12 @@ struct Repair {
 // degree ≥ 3): the two arcs are joined into one, the node dropped. Two arcs "of one curve" have
 // centre and radius (or line) equal within `tolerance` (a length). Returns what was done.
 std::vector<Repair> merge_degree_two_nodes(Diagram& g, double tolerance);
+
+// Makes an arc graph read from a file ready for recognize(): its sites and arc labels are dropped
+// (recognition reconstructs them from the arcs alone), and nodes of degree 2 on one curve are
+// merged away (merge_degree_two_nodes, with a tolerance of tolerance::kRepairRelative times the
+// largest coordinate magnitude, at least 1). Returns what was repaired.
+std::vector<Repair> prepare_input_graph(Diagram& g);
 
 // The arc reversed: same points, opposite direction of travel, sides swapped.
 Arc reversed(Arc a);

@@ -26,7 +26,7 @@ inline constexpr double kSingularNormalEquations = 1e-12;
 inline constexpr double kSameDirectionSine = 1e-9;
 inline constexpr double kSameDirectionCosine = 1e-12;
 
-// Degree-2 repair in `covmap recognize`: two arcs are on one curve when their centres, radii or
+// Degree-2 repair of input graphs (prepare_input_graph): two arcs are on one curve when their centres, radii or
 // line offsets agree to this fraction of the graph's coordinate magnitude (double rounding of the
 // numbers that state a curve).
 inline constexpr double kRepairRelative = 1e-12;

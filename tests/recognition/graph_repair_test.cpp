@@ -6,6 +6,7 @@
 
 #include "recognition/compare.h"
 #include "recognition/graph_repair.h"
+#include "recognition/recognize.h"
 #include "voronoi/arc_path.h"
 #include "voronoi/engine.h"
 
@@ -40,6 +41,40 @@ TEST(GraphRepair, SplitArcsAreJoinedBack) {
   EXPECT_EQ(repairs.size(), 10u);
   const Comparison c = compare_graphs(d, split);
   EXPECT_TRUE(c.equal()) << c.brief();
+}
+
+// The preparation every caller shares: a diagram far from the origin (coordinates ~1e6, where an
+// absolute merge tolerance would be wrong by orders of magnitude), its arcs split at degree-2
+// nodes and its labels kept, is recognised as the MWVD of sites that reproduce it.
+TEST(GraphRepair, PreparedInputIsRecognisedLikeTheUnsplitDiagram) {
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> u(1e6, 1e6 + 1000.0), w(1.0, 2.0);
+  std::vector<Site> sites;
+  for (int i = 0; i < 30; ++i) sites.push_back({std::to_string(i), u(rng), u(rng), w(rng)});
+  const Diagram d = voronoi::build_diagram(sites);
+  Diagram split = d;
+  int splits = 0;
+  for (std::size_t a = 0; a < d.arcs.size() && splits < 6; ++a) {
+    const Arc arc = d.arcs[a];
+    if (arc.from == kNone || arc.to == kNone || arc.from == arc.to) continue;
+    const voronoi::ArcPathView p = voronoi::arc_path(arc, d.nodes);
+    const Point mid = p.at(0.5 * (p.s0 + p.s1));
+    split.nodes.push_back({mid.x, mid.y});
+    Arc second = arc;
+    split.arcs[a].to = static_cast<int>(split.nodes.size()) - 1;
+    second.from = split.arcs[a].to;
+    split.arcs.push_back(second);
+    ++splits;
+  }
+  ASSERT_EQ(splits, 6);
+  const auto repairs = prepare_input_graph(split);
+  EXPECT_EQ(repairs.size(), 6u);
+  EXPECT_TRUE(split.sites.empty());
+  for (const Arc& a : split.arcs) EXPECT_TRUE(a.left_site == kNone && a.right_site == kNone);
+  EXPECT_EQ(split.arcs.size(), d.arcs.size());
+  const Reconstruction r = recognize(split);
+  EXPECT_TRUE(r.bisector_graph) << r.reason;
+  EXPECT_EQ(r.sites.size(), sites.size());
 }
 
 }  // namespace
