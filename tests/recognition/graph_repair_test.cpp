@@ -13,15 +13,12 @@
 namespace covmap::recognition {
 namespace {
 
-TEST(GraphRepair, SplitArcsAreJoinedBack) {
-  std::mt19937_64 rng(5);
-  std::uniform_real_distribution<double> u(0.0, 1.0), w(1.0, 2.0);
-  std::vector<Site> sites;
-  for (int i = 0; i < 25; ++i) sites.push_back({std::to_string(i), u(rng), u(rng), w(rng)});
-  const Diagram d = voronoi::build_diagram(sites);
-  Diagram split = d;
+// `d` with up to `count` bounded arcs split at their midpoints (new nodes of degree 2); the second
+// half stored reversed when `reverse_second`, to exercise orientation handling. Returns the splits.
+int split_arcs(const Diagram& d, Diagram& split, int count, bool reverse_second) {
+  split = d;
   int splits = 0;
-  for (std::size_t a = 0; a < d.arcs.size() && splits < 10; ++a) {
+  for (std::size_t a = 0; a < d.arcs.size() && splits < count; ++a) {
     const Arc arc = d.arcs[a];
     if (arc.from == kNone || arc.to == kNone || arc.from == arc.to) continue;
     const voronoi::ArcPathView p = voronoi::arc_path(arc, d.nodes);
@@ -31,10 +28,20 @@ TEST(GraphRepair, SplitArcsAreJoinedBack) {
     Arc second = arc;
     split.arcs[a].to = node;
     second.from = node;
-    // Store the second half reversed, to exercise orientation handling.
-    split.arcs.push_back(reversed(second));
+    split.arcs.push_back(reverse_second ? reversed(second) : second);
     ++splits;
   }
+  return splits;
+}
+
+TEST(GraphRepair, SplitArcsAreJoinedBack) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0), w(1.0, 2.0);
+  std::vector<Site> sites;
+  for (int i = 0; i < 25; ++i) sites.push_back({std::to_string(i), u(rng), u(rng), w(rng)});
+  const Diagram d = voronoi::build_diagram(sites);
+  Diagram split;
+  const int splits = split_arcs(d, split, 10, true);
   ASSERT_EQ(splits, 10);
   EXPECT_EQ(split.nodes.size(), d.nodes.size() + 10);  // geometrically the same graph, 10 extra nodes
   const auto repairs = merge_degree_two_nodes(split, 1e-9);
@@ -52,20 +59,8 @@ TEST(GraphRepair, PreparedInputIsRecognisedLikeTheUnsplitDiagram) {
   std::vector<Site> sites;
   for (int i = 0; i < 30; ++i) sites.push_back({std::to_string(i), u(rng), u(rng), w(rng)});
   const Diagram d = voronoi::build_diagram(sites);
-  Diagram split = d;
-  int splits = 0;
-  for (std::size_t a = 0; a < d.arcs.size() && splits < 6; ++a) {
-    const Arc arc = d.arcs[a];
-    if (arc.from == kNone || arc.to == kNone || arc.from == arc.to) continue;
-    const voronoi::ArcPathView p = voronoi::arc_path(arc, d.nodes);
-    const Point mid = p.at(0.5 * (p.s0 + p.s1));
-    split.nodes.push_back({mid.x, mid.y});
-    Arc second = arc;
-    split.arcs[a].to = static_cast<int>(split.nodes.size()) - 1;
-    second.from = split.arcs[a].to;
-    split.arcs.push_back(second);
-    ++splits;
-  }
+  Diagram split;
+  const int splits = split_arcs(d, split, 6, false);
   ASSERT_EQ(splits, 6);
   const auto repairs = prepare_input_graph(split);
   EXPECT_EQ(repairs.size(), 6u);
