@@ -79,8 +79,8 @@ struct HalfArc {
 // The boundary cycles of one face, read like a vector of cycles (each a span of half-arcs).
 // Plain data in use, with one twist for size: the half-arcs of faces traced together live in one
 // array that those faces share read-only (a million faces would otherwise cost two million small
-// allocations: on the VMs covmap runs on, ~0.25 s of page faults alone). A face copies its own
-// cycles out before it is changed (push_back, mutable_cycle), so faces behave as values.
+// allocations, costing more in page faults than the tracing itself). A face copies its own cycles
+// out before it is changed (push_back, mutable_cycle), so faces behave as values.
 class FaceBoundaries {
  public:
   using Cycle = std::span<const HalfArc>;

@@ -1,5 +1,6 @@
-// A minimal fork–join loop for the engine's independent per-cell and per-facet work. The machine
-// has few cores; plain std::thread keeps covmap free of a thread-pool dependency.
+// A minimal fork–join loop for independent per-item work (engine cells and facets, face tracing,
+// recognition's checks), at most 8 workers over contiguous chunks. Plain std::thread keeps covmap
+// free of a thread-pool dependency.
 #pragma once
 
 #include <algorithm>
@@ -35,7 +36,7 @@ void parallel_chunks(std::size_t n, int workers, F&& f) {
   for (auto& t : threads) t.join();
 }
 
-// Sorts [first, last) on two cores: the halves concurrently, then one merge. Same result as
+// Sorts [first, last) with two threads: the halves concurrently, then one merge. Same result as
 // std::sort for keys without ties (both orders are then the unique sorted one).
 template <class It, class Less = std::less<>>
 void parallel_sort(It first, It last, Less less = {}) {

