@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # The bundled maps are what the generator makes of their committed town lists and seeds, byte for
-# byte (same lists, same seeds, same bytes): datasets/maps/regenerate.sh into a fresh folder, then
+# byte (same lists, same seeds, same bytes): tools/mapgen/regenerate_maps.sh into a fresh folder, then
 # compared with datasets/maps/. A change to the generator that changes them must regenerate them.
 #   regenerate_test.sh PATH/TO/covmap-make-map SOURCE_DIR
 set -euo pipefail
 make_map=$1 src=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-bash "$src/datasets/maps/regenerate.sh" "$make_map" --out "$work"
+bash "$src/tools/mapgen/regenerate_maps.sh" "$make_map" --out "$work"
 status=0
 for map in bern ticino switzerland; do
   for f in map.geojson sensors.geojson truth.json; do

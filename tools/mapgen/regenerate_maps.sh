@@ -2,9 +2,9 @@
 # Regenerates the bundled sample maps in datasets/maps/ (see README.md there). Run from the
 # repository root:
 #
-#   datasets/maps/regenerate.sh build/tools/mapgen/covmap-make-map           # maps only
-#   datasets/maps/regenerate.sh build/tools/mapgen/covmap-make-map --towns   # town lists too
-#   datasets/maps/regenerate.sh build/tools/mapgen/covmap-make-map --out DIR # maps into DIR instead
+#   tools/mapgen/regenerate_maps.sh build/tools/mapgen/covmap-make-map           # maps only
+#   tools/mapgen/regenerate_maps.sh build/tools/mapgen/covmap-make-map --towns   # town lists too
+#   tools/mapgen/regenerate_maps.sh build/tools/mapgen/covmap-make-map --out DIR # maps into DIR instead
 #
 # The test suite runs the third form and compares DIR with the committed maps byte for byte
 # (tests/mapgen/regenerate_test.sh): the generator must keep making the bundled data.
@@ -13,7 +13,7 @@
 # `npm install --prefix tools/mapgen` (node_modules is not committed). The maps depend only on
 # the committed town lists and the generator: same lists, same seeds, same bytes.
 set -euo pipefail
-make_map=$(realpath "${1:?usage: regenerate.sh PATH/TO/covmap-make-map [--towns | --out DIR]}")
+make_map=$(realpath "${1:?usage: regenerate_maps.sh PATH/TO/covmap-make-map [--towns | --out DIR]}")
 out=datasets/maps
 if [[ ${2:-} == --out ]]; then
   out=$(realpath "${3:?--out needs a folder}")
