@@ -18,7 +18,7 @@
 // arcs of clipped maps bound faces but constrain nothing. An arc whose end nodes do not lie on its
 // circle or line (beyond the tolerance) is rejected before anything else. The answer names the arc
 // and the distance when it fails. Linear in the size of the graph; docs/PERFORMANCE.md has times
-// (10^6 faces in 1.6-1.9 s on two cores).
+// (10^6 faces in 1.6-1.9 s with two workers).
 #pragma once
 
 #include <optional>
