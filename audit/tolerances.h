@@ -20,12 +20,13 @@ inline constexpr double kEstimateGaugePull = 1e-6;
 
 // The audit's first refinement phase holds every log weight loosely about its start: ±3 is a
 // factor of 20, far looser than any boundary constrains a weight, but it stops a weight that a
-// poor start leaves unconstrained from running off (audit/audit.cpp, phase 2 drops it).
+// poor start leaves unconstrained from running off (audit/two_phase_refinement.cpp, phase 2
+// drops it).
 inline constexpr double kAuditLogWeightPrior = 3.0;
 
 // A refined sensor whose log weight differs from the median of its neighbours' by more than this
-// (a factor of 100) has diverged and is restarted (audit/audit.cpp). Real neighbours differ
-// by a few dB; a factor of 100 is 70 dB at a path-loss exponent of 3.5.
+// (a factor of 100) has diverged and is restarted (audit/multi_start_refinement.cpp). Real
+// neighbours differ by a few dB; a factor of 100 is 70 dB at a path-loss exponent of 3.5.
 inline constexpr double kAuditMaxLogWeightJump = 4.6;
 
 // Gauss–Newton of a starting estimate stops when a step is below this fraction of the position's

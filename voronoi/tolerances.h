@@ -13,7 +13,7 @@ namespace covmap::voronoi::tolerance {
 // at a node), but a tangency node is a double root, known only to ~√ε ≈ 1e-8 relative, so its
 // tangent directions carry errors up to ~1e-9 rad. For arcs that do not cross, the curvature (or
 // offset) order is the true order whenever the angle difference is this small.
-// Departure directions are compared as pseudo-angles (faces.cpp, slope 1/2 to 1 per radian), so
+// Departure directions are compared as pseudo-angles (continuations.cpp, slope 1/2 to 1 per radian), so
 // the threshold acts as 1 to 2 times this many radians: the same order of magnitude, which is all
 // a bound on rounding needs.
 inline constexpr double kParallelAngle = 1e-8;

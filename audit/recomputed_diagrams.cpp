@@ -1,0 +1,129 @@
+// Recomputed diagrams of audit(): the MWVD of the refined sensors and of the reported ones, clipped
+// to the map's frame, and each compared with the map on a raster.
+#include <cmath>
+#include <cstdlib>
+#include <utility>
+
+#include "audit/audit_stages.h"
+#include "voronoi/clip.h"
+#include "voronoi/engine.h"
+
+namespace covmap::audit::stages {
+namespace {
+
+// The map's frame as a simple counter-clockwise polygon, for clipping recomputed diagrams: the
+// longest closed walk along frame arcs; the bounding box when there is none.
+std::vector<Point> frame_polygon(const Diagram& g, const Box& box) {
+  std::vector<int> next(g.nodes.size(), kNone);
+  std::vector<int> starts;
+  for (std::size_t a = 0; a < g.arcs.size(); ++a) {
+    const auto& arc = g.arcs[a];
+    if (!arc.frame || arc.from == kNone || arc.to == kNone) continue;
+    // The inside is on the left of a frame arc; walk so that the inside stays on the left.
+    const bool inside_left = arc.left_site != kNone;
+    const int from = inside_left ? arc.from : arc.to, to = inside_left ? arc.to : arc.from;
+    next[from] = to;
+    starts.push_back(from);
+  }
+  std::vector<Point> best;
+  std::vector<char> seen(g.nodes.size(), 0);
+  for (int s : starts) {
+    if (seen[s]) continue;
+    std::vector<Point> ring;
+    int v = s;
+    while (v != kNone && !seen[v]) {
+      seen[v] = 1;
+      ring.push_back({g.nodes[v].x, g.nodes[v].y});
+      v = next[v];
+    }
+    if (v == s && ring.size() > best.size()) best = std::move(ring);
+  }
+  if (best.size() >= 3) return best;
+  return {{box.xmin, box.ymin}, {box.xmax, box.ymin}, {box.xmax, box.ymax}, {box.xmin, box.ymax}};
+}
+
+Diagram recomputed_diagram(const std::vector<Site>& sites, const std::vector<Point>& frame,
+                                    const Box& box, std::vector<std::string>& messages, const char* what) {
+  try {
+    const Diagram d = voronoi::build_diagram(sites);
+    try {
+      return voronoi::clip_diagram(d, frame);
+    } catch (const std::exception& e) {
+      messages.push_back(std::string(what) + ": clipping to the map's frame failed (" + e.what() + "); clipped to its bounding box");
+      return voronoi::clip_diagram(d, {{box.xmin, box.ymin}, {box.xmax, box.ymin}, {box.xmax, box.ymax}, {box.xmin, box.ymax}});
+    }
+  } catch (const std::exception& e) {
+    messages.push_back(std::string(what) + ": no diagram (" + e.what() + ")");
+    return {};
+  }
+}
+
+// Agreement of the diagram of `sites` with the map, and per sensor its intersection over union.
+std::pair<DiagramAgreement, std::vector<double>> agreement_of(const MapRaster& raster, const cleaning::CleanedMap& cleaned,
+                                                              const std::vector<Site>& sites, int count) {
+  const std::size_t n = cleaned.sensors.size();
+  const voronoi::BestServerRaster labels = voronoi::best_server_raster(sites, raster.grid);
+  LabelAgreement a = compare_labels(raster.raster, labels.labels, count);
+  DiagramAgreement d;
+  d.mean_iou = a.mean_iou;
+  d.hausdorff_m = a.hausdorff;
+  for (int v : a.vanished) d.vanished.push_back(v < static_cast<int>(n) ? cleaned.sensors[v] : std::to_string(v));
+  for (int v : a.appeared) d.appeared.push_back(v < static_cast<int>(n) ? cleaned.sensors[v] : std::to_string(v));
+  return std::make_pair(d, a.iou);
+}
+
+// The reported sensors' own sites: map sensors at their reported values (reconstructed ones
+// where a sensor was not reported), then sensors reported but absent from the map.
+std::vector<Site> reported_sites(const MapCells& cells, const std::vector<Site>& refined_sites,
+                                 const ReportedOf& reported_of, std::span<const ReportedSensorValues> reported,
+                                 const WeightScale& scale, const AuditOptions& options) {
+  const double log_factor = scale.log_factor;
+  std::vector<Site> rs = refined_sites;
+  for (auto [i, r] : reported_of) {
+    rs[i].x = r->position.x, rs[i].y = r->position.y;
+    std::optional<double> wr = r->weight;
+    if (!wr && r->tx_power_dbm && options.alpha) wr = std::pow(10.0, *r->tx_power_dbm / (10.0 * *options.alpha));
+    rs[i].weight = wr ? *wr / std::exp(log_factor) : refined_sites[i].weight;
+  }
+  for (const ReportedSensorValues& r : reported) {
+    if (cells.index.count(r.id)) continue;
+    std::optional<double> wr = r.weight;
+    if (!wr && r.tx_power_dbm && options.alpha) wr = std::pow(10.0, *r.tx_power_dbm / (10.0 * *options.alpha));
+    rs.push_back({r.id, r.position.x, r.position.y, wr ? *wr / std::exp(log_factor) : 1.0});
+  }
+  return rs;
+}
+
+}  // namespace
+
+void recomputed_diagrams(const MapCells& cells, const MapRaster& raster, const fitting::RefineResult& refined,
+                         const ReportedOf& reported_of, std::span<const ReportedSensorValues> reported,
+                         const WeightScale& scale, const AuditOptions& options, AuditResult& out) {
+  const cleaning::CleanedMap& cleaned = out.cleaned;
+  const std::size_t n = cleaned.sensors.size();
+  const Box& box = cells.box;
+  const std::vector<Point> frame = frame_polygon(cleaned.graph, box);
+  std::vector<Site> refined_sites = refined.sites;
+  out.refined_diagram = recomputed_diagram(refined_sites, frame, box, out.messages, "refined sensors");
+  // The raster of the map (made before the refinement): its own bins where it has them, at most ~4·10⁶.
+  {
+    auto [d, iou] = agreement_of(raster, cleaned, refined_sites, static_cast<int>(n));
+    out.refined_agreement = d;
+    for (std::size_t i = 0; i < n; ++i)
+      if (std::isfinite(iou[i])) out.sensors[i].iou_refined = iou[i];
+  }
+  if (reported.empty()) return;
+  const std::vector<Site> rs = reported_sites(cells, refined_sites, reported_of, reported, scale, options);
+  out.reported_diagram = recomputed_diagram(rs, frame, box, out.messages, "reported sensors");
+  auto [d, iou] = agreement_of(raster, cleaned, rs, static_cast<int>(rs.size()));
+  // Names of appeared reported-only sensors.
+  for (auto& name : d.appeared) {
+    const int k = std::atoi(name.c_str());
+    if (k >= static_cast<int>(n) && k < static_cast<int>(rs.size())) name = rs[k].id;
+  }
+  out.reported_agreement = d;
+  for (std::size_t i = 0; i < n; ++i)
+    if (std::isfinite(iou[i])) out.sensors[i].iou_reported = iou[i];
+}
+
+}  // namespace covmap::audit::stages

@@ -1,0 +1,74 @@
+// Propagation in recognize(): a candidate site of the start face carried to every face breadth
+// first, across each arc of a spanning tree by Lemma 1 (bisector_relation.h: exact to a few ulps
+// however large the circle, so no re-anchoring except at degenerate nodes).
+#include <algorithm>
+
+#include "mobius/bisector_relation.h"
+#include "recognition/recognize_stages.h"
+
+namespace covmap::recognition::stages {
+
+LargeVector<char> faces_at_degenerate_nodes(const Diagram& g, const voronoi::FaceIndex& index) {
+  LargeVector<char> at_degenerate_node(g.faces.size(), 0);
+  const LargeVector<char>& degenerate = index.degenerate_node;
+  const LargeVector<int>& face_of_half = index.face_of_half;
+  for (std::size_t a = 0; a < g.arcs.size(); ++a) {
+    const Arc& arc = g.arcs[a];
+    if (!((arc.from != kNone && degenerate[arc.from]) || (arc.to != kNone && degenerate[arc.to]))) continue;
+    for (int h : {static_cast<int>(2 * a), static_cast<int>(2 * a + 1)})
+      if (face_of_half[h] != kNone) at_degenerate_node[face_of_half[h]] = 1;
+  }
+  return at_degenerate_node;
+}
+
+PropagationBuffers::PropagationBuffers(int faces) : site(faces), reached(faces) { queue.reserve(faces); }
+
+void propagate(const TracedGraph& t, const LargeVector<char>& at_degenerate_node, double matrix_tolerance,
+               int start, mobius::Complex p, PropagationBuffers& buffers) {
+  const Diagram& g = t.g;
+  const LargeVector<int>& face_of_half = t.face_of_half;
+  LargeVector<FaceSite>& site = buffers.site;
+  LargeVector<char>& reached = buffers.reached;
+  LargeVector<int>& queue = buffers.queue;
+  std::fill(site.begin(), site.end(), FaceSite{});
+  // A byte per face (1 MB at 10^6 faces, cache-resident) for the test every half-arc makes.
+  std::fill(reached.begin(), reached.end(), 0);
+  site[start] = {true, p, 1.0};
+  reached[start] = 1;
+  queue.assign(1, start);
+  // Memory latency bound (faces, their boundaries and the faces across are scattered at 10^6
+  // faces): the data of the faces a few places ahead in the queue is prefetched in stages.
+  auto prefetch_face = [&](std::size_t at) {
+    if (at < queue.size()) __builtin_prefetch(&g.faces[queue[at]]);
+  };
+  auto prefetch_boundary = [&](std::size_t at) {
+    if (at >= queue.size()) return;
+    const auto& b = g.faces[queue[at]].boundaries;
+    if (!b.empty()) __builtin_prefetch(b.front().data());
+  };
+  auto prefetch_across = [&](std::size_t at) {
+    if (at >= queue.size()) return;
+    const auto& b = g.faces[queue[at]].boundaries;
+    if (b.empty()) return;
+    for (const HalfArc& h : b.front()) __builtin_prefetch(&face_of_half[half_id({h.arc, !h.forward})]);
+  };
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    prefetch_face(head + 12);
+    prefetch_boundary(head + 8);
+    prefetch_across(head + 4);
+    const int f = queue[head];
+    const FaceSite here = site[f];
+    for (const auto& cycle : g.faces[f].boundaries)
+      for (const HalfArc& h : cycle) {
+        const int other = face_of_half[half_id({h.arc, !h.forward})];
+        if (other == kNone || reached[other] || g.arcs[h.arc].frame) continue;
+        reached[other] = 1;
+        const mobius::WeightedPoint partner = mobius::partner_across(mobius::arc_bisector(g.arcs[h.arc], g.nodes), {here.position, here.weight});
+        const mobius::Complex at = at_degenerate_node[other] ? polish(partner.position, face_circle_constraints(t, matrix_tolerance, other), t.tol) : partner.position;
+        site[other] = {true, at, partner.weight};
+        queue.push_back(other);
+      }
+  }
+}
+
+}  // namespace covmap::recognition::stages

@@ -1,0 +1,190 @@
+// The stages of recognize() (recognize.cpp) and the plain data they pass between them. Internal to
+// the recognition library: not a public header (recognition/CMakeLists.txt).
+//
+// In the order recognize() runs them:
+//   input preparation   input_preparation.cpp  clear the input's labels, the tolerance, arc ends
+//   frame               frame.cpp              nodes on a clipped map's frame, the face outside it
+//   start face          start_face.cpp         the face whose nodes constrain its site the most
+//   node constraints    node_constraint.cpp    going around a node: the fixed set of the inversions
+//   free root           free_root.cpp          no node fixes a site: the root's region (§3)
+//   candidates          candidates.cpp         the start face's candidate sites, polished
+//   propagation         propagation.cpp        one candidate to every face, breadth first
+//   verification        verification.cpp       every arc against the two sites it separates
+//   site collection     site_collection.cpp    one site per face into the reconstruction's sites
+//   MWVD check          mwvd_check.cpp         the recomputed diagram against the input
+#pragma once
+
+#include <cmath>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "core/box.h"
+#include "core/diagram.h"
+#include "core/large_buffer.h"
+#include "mobius/generalized_circle.h"
+#include "recognition/recognize.h"
+#include "voronoi/faces.h"
+
+namespace covmap::recognition::stages {
+
+// ---- Small geometry shared by the stages (distance_to and intersect: curve_geometry.cpp) ----
+
+inline mobius::GeneralizedCircle curve_of(const Arc& a) {
+  if (const auto* c = std::get_if<Circle>(&a.curve)) return mobius::GeneralizedCircle::from(*c);
+  return mobius::GeneralizedCircle::from(std::get<Line>(a.curve));
+}
+
+inline int half_id(const HalfArc& h) { return 2 * h.arc + (h.forward ? 0 : 1); }
+
+// Distance from z to a generalized circle (|value| / |gradient| to first order, exact for circles
+// and lines).
+double distance_to(const mobius::GeneralizedCircle& g, mobius::Complex z);
+
+// Intersection points of two generalized circles (0, 1 or 2; empty also when they coincide).
+std::vector<mobius::Complex> intersect(mobius::GeneralizedCircle a, mobius::GeneralizedCircle b);
+
+// ---- Data passed between the stages ----
+
+// Why recognition ends with "no bisector graph": the reason, and the evidence when there is some.
+struct Rejection {
+  std::string reason;
+  std::optional<RecognitionFailure> failure;
+};
+
+// The input's scale: the tolerance of every comparison is relative to its nodes' extent.
+struct InputScale {
+  bool clipped = false;  // some arc is a frame arc
+  Box extent;
+  double scale = 0.0;
+  double tol = 0.0;
+};
+
+// Per node: on the frame of a clipped map; per face: outside the frame (no site).
+struct FrameMarks {
+  LargeVector<char> on_frame;
+  LargeVector<char> outside;
+};
+
+// The traced graph as every later stage reads it.
+struct TracedGraph {
+  const Diagram& g;
+  // Per half-arc: its face, and the half-arc after it in the face's boundary cycle.
+  const LargeVector<int>& face_of_half;
+  const LargeVector<int>& next_half;
+  const LargeVector<char>& on_frame;
+  const LargeVector<char>& outside;
+  double scale = 0.0;
+  double tol = 0.0;
+};
+
+// Lemmas 5 and §4.4: going once around node v from face f, across every arc at v and back, maps
+// f's site to itself. The composition of the inversions is an anti-Möbius map for an odd number
+// of arcs (its fixed set: a circle — the solution circle — or at most two points) and a Möbius
+// map for an even number (at most two fixed points, or no constraint when it is the identity).
+struct Constraint {
+  int node = kNone;            // the node it comes from
+  bool any = false;            // no constraint
+  bool is_circle = false;
+  mobius::GeneralizedCircle circle;
+  std::vector<mobius::Complex> points;
+  // Odd degree, fixed set empty: the two circles whose intersection it is miss each other by
+  // this much (how far the node is from being a node of a bisector graph).
+  double gap = 0.0;
+};
+
+// The face whose nodes give the most constraints, each node counted once per face (face -1 when
+// none gives any).
+struct StartFace {
+  int face = -1;
+  std::vector<Constraint> constraints;
+};
+
+// How far a point is from satisfying every constraint of the start face, and which constraint is
+// farthest; the point that came closest is named when none satisfies all.
+struct Violation {
+  double amount = INFINITY;
+  int constraint = -1;
+  mobius::Complex at;
+};
+
+// The start face's candidate sites.
+struct Candidates {
+  std::vector<mobius::Complex> points;
+  bool family = false;  // the sites form a family (a free root, or coinciding solution circles)
+  Violation closest;    // the candidate that came closest, for the failure when there is none
+};
+
+struct FaceSite {
+  bool assigned = false;
+  mobius::Complex position;
+  double weight = 1.0;
+};
+
+// Per face, reused by every candidate: its site, whether the propagation reached it, and the
+// breadth-first queue.
+struct PropagationBuffers {
+  explicit PropagationBuffers(int faces);
+  LargeVector<FaceSite> site;
+  LargeVector<char> reached;
+  LargeVector<int> queue;
+};
+
+// ---- The stages ----
+
+// Takes the input's labels off (sites, faces, the sites arcs name) and measures its scale.
+InputScale prepare_input(Diagram& g, const RecognitionOptions& options);
+
+// Arcs whose ends are not on their curves: malformed, and invisible to the inversions, which take
+// each arc through its node (bisector_relation.h). The first such arc end, in arc order.
+std::optional<Rejection> arc_end_off_curve(const Diagram& g, double tol);
+
+FrameMarks frame_marks(const Diagram& g, const LargeVector<int>& face_of_half);
+
+// The clip polygon of a clipped graph: its own if stated, else the frame arcs followed from node to
+// node (counter-clockwise, as frame arcs keep the inside on their left).
+std::vector<Point> frame_polygon(const Diagram& g);
+
+// The constraint of the node where half-arc h_out (leaving it, on face f's boundary) starts;
+// nullopt when the walk around the node meets a frame arc or an open end.
+std::optional<Constraint> node_constraint(const TracedGraph& t, double matrix_tolerance, int f, int h_out);
+
+// The solution circles of the nodes of face f (at most four), for re-anchoring the sites of faces
+// at degenerate nodes.
+std::vector<Constraint> face_circle_constraints(const TracedGraph& t, double matrix_tolerance, int f);
+
+StartFace start_face(const TracedGraph& t, double matrix_tolerance);
+
+// No node fixes any site (paper 5, §3): the root's site ranges over a region, or nowhere.
+std::variant<SiteRegion, Rejection> free_root_region(const TracedGraph& t, const Box& extent);
+
+Candidates start_candidates(const std::vector<Constraint>& constraints, const std::optional<SiteRegion>& free_root,
+                            double tol, double scale, double matrix_tolerance);
+
+// The failure when the start face has no candidate.
+Rejection no_common_point(const Diagram& g, int start, const std::vector<Constraint>& constraints,
+                          const Violation& closest);
+
+// Gauss-Newton on the distances to the solution circles among `cs`: an intersection of two
+// circles alone can be ill-conditioned when they meet at a shallow angle.
+mobius::Complex polish(mobius::Complex p, const std::vector<Constraint>& cs, double tol);
+
+// Faces at a degenerate node (FaceIndex::degenerate_node): those on either side of an arc ending
+// there.
+LargeVector<char> faces_at_degenerate_nodes(const Diagram& g, const voronoi::FaceIndex& index);
+
+// Candidate p as the site of face `start`, propagated to every face reachable from it.
+void propagate(const TracedGraph& t, const LargeVector<char>& at_degenerate_node, double matrix_tolerance,
+               int start, mobius::Complex p, PropagationBuffers& buffers);
+
+// The first arc (in arc order) whose two sites are not on its two sides as mirror images.
+std::optional<RecognitionFailure> first_arc_failure(const TracedGraph& t, const LargeVector<FaceSite>& site);
+
+// The reconstruction from one site per face (sites, face_site).
+Reconstruction collect_sites(const LargeVector<FaceSite>& site, double tol, double weight_snap);
+
+// Sets out.voronoi and out.voronoi_differences: is out.graph the MWVD of out.sites?
+void mwvd_check(Reconstruction& out, bool clipped, const RecognitionOptions& options);
+
+}  // namespace covmap::recognition::stages

@@ -1,0 +1,117 @@
+// Hole placement for trace_faces(): each hole into the face its ray found (hole_rays.cpp), or
+// else by containment tests against the outer cycles of its site's faces near it.
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <vector>
+
+#include "voronoi/arc_path.h"
+#include "voronoi/box_grid.h"
+#include "voronoi/face_tracing.h"
+
+namespace covmap::voronoi::tracing {
+namespace {
+
+// Paths for the containment tests of holes the ray cannot place (every hole when tracing by
+// sites): computed on first use and kept, since one large face's outer cycle is tested against
+// many holes.
+class PathCache {
+ public:
+  explicit PathCache(const Diagram& d) : d_(d) {}
+  const ArcPathView& operator()(int arc) {
+    if (path_cache_.empty()) {
+      path_cache_.resize(d_.arcs.size());
+      path_cached_.assign(d_.arcs.size(), 0);
+    }
+    if (!path_cached_[arc]) path_cache_[arc] = arc_path(d_.arcs[arc], d_.nodes), path_cached_[arc] = 1;
+    return path_cache_[arc];
+  }
+
+ private:
+  const Diagram& d_;
+  LargeVector<ArcPathView> path_cache_;
+  LargeVector<char> path_cached_;
+};
+
+// Candidate outer cycles for a point, through a grid over their bounding boxes (built on first
+// use: most graphs have no hole that needs a containment test). Without it, tracing by geometry
+// (one label for all faces) would test every hole against every face.
+class FaceGrid {
+ public:
+  FaceGrid(const Diagram& d, const LargeVector<double>& outer_area) : d_(d), outer_area_(outer_area) {}
+  std::vector<int> candidates(Point p) {
+    if (!face_grid_) {
+      LargeVector<Box> boxes(outer_area_.size(), Box{});
+      for (std::size_t f = 0; f < outer_area_.size(); ++f)
+        for (const HalfArc& h : d_.faces[f].boundaries.front()) {
+          const Box b = arc_bounds(d_.arcs[h.arc], d_.nodes);
+          boxes[f].add_box(b);
+        }
+      // Over the central nodes: a few faces reaching far out would otherwise stretch the cells
+      // until every face shares one.
+      face_grid_ = make_grid(boxes.size(), [&](std::size_t f) { return boxes[f]; }, central_box(d_.nodes), outer_area_.size(),
+                             /*max_cells=*/64);
+    }
+    std::vector<int> out(face_grid_->always.begin(), face_grid_->always.end());
+    if (face_grid_->nx > 0) {  // clamped like the boxes: a point beyond the grid meets the border cells
+      const auto c = face_grid_->cell(face_grid_->column(p.x), face_grid_->row(p.y));
+      out.insert(out.end(), c.begin(), c.end());
+    }
+    return out;
+  }
+
+ private:
+  const Diagram& d_;
+  const LargeVector<double>& outer_area_;
+  std::optional<BoxGrid> face_grid_;
+};
+
+// The face whose outer cycle runs along each half-arc (-1 on holes): the face across a hole's own
+// arcs is the one on the hole's other side, never the face containing it.
+int outer_face_of_half(const LargeVector<int>& cycle_of_half, const FaceAssembly& fa, int h) {
+  const int c = cycle_of_half[h];
+  return c < 0 || fa.hole_of_cycle[c] >= 0 ? -1 : fa.face_of_cycle[c];
+}
+
+// The innermost outer cycle of the hole's site that contains a point of the hole, among faces not
+// across the hole's own arcs; -1 when none does.
+int containing_face(const Diagram& d, bool by_sites, const CycleSet& cs, const LargeVector<int>& cycle_of_half,
+                    const FaceAssembly& fa, const Cycle& hole, PathCache& cached_path, FaceGrid& grid) {
+  const HalfArc first = half_of(cs.cycle_halves[hole.begin]);
+  const ArcPathView path = arc_path(d.arcs[first.arc], d.nodes);
+  const double mid = std::isfinite(path.s0) && std::isfinite(path.s1) ? 0.5 * (path.s0 + path.s1)
+                     : std::isfinite(path.s0)                          ? path.s0 + 1.0
+                     : std::isfinite(path.s1)                          ? path.s1 - 1.0
+                                                                       : 0.0;
+  const Point p = path.at(mid);
+  int target = -1;
+  std::vector<int> across;
+  for (int h : cs.halves_of(hole)) across.push_back(outer_face_of_half(cycle_of_half, fa, h ^ 1));
+  for (int f : grid.candidates(p)) {
+    if (d.faces[f].site != (by_sites ? hole.site : kNone)) continue;
+    if (f >= static_cast<int>(fa.outer_area.size())) continue;  // hole-only faces have no outer
+    if (std::find(across.begin(), across.end(), f) != across.end()) continue;
+    // Innermost containing outer cycle (smallest area) wins.
+    if (contains_with(d, d.faces[f].boundaries.front(), p, cached_path) && (target < 0 || fa.outer_area[f] < fa.outer_area[target]))
+      target = f;
+  }
+  return target;
+}
+
+}  // namespace
+
+void place_holes(Diagram& d, bool by_sites, const CycleSet& cs, const LargeVector<int>& cycle_of_half,
+                 const std::vector<int>& ray_face, FaceAssembly& fa) {
+  PathCache cached_path(d);
+  FaceGrid grid(d, fa.outer_area);
+  for (std::size_t hk = 0; hk < fa.holes.size(); ++hk) {
+    const Cycle& hole = cs.cycles[fa.holes[hk]];
+    int target = ray_face[hk];
+    if (target == -2) target = containing_face(d, by_sites, cs, cycle_of_half, fa, hole, cached_path, grid);
+    if (target < 0) target = implicit_face_of(d, by_sites, fa, hole.site);
+    add_cycle(fa, d.faces[target], hole);
+    fa.face_of_cycle[fa.holes[hk]] = target;
+  }
+}
+
+}  // namespace covmap::voronoi::tracing
