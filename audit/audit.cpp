@@ -33,7 +33,7 @@ class StageTimer {
 
 }  // namespace
 
-AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSensorValues> reported,
+AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSensor> reported,
                   const AuditOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
   if (map.empty()) throw std::invalid_argument("audit: the map has no cells");

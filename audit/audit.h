@@ -28,7 +28,6 @@ namespace covmap::audit {
 
 // Reported sensors (core/reported_sensor.h) are given in planar map units, with the weight already
 // derived from the power when a path-loss exponent was given (io/reported_sensors.h does both).
-using ReportedSensorValues = ReportedSensor;  // the pipeline's old name, until its stages are split
 
 struct AuditOptions {
   cleaning::CleaningOptions cleaning;
@@ -67,7 +66,7 @@ struct SensorAudit {
   double sigma_log_weight = 0.0;
   bool uncertainty_available = false;
   // Reported values and the comparison, when the sensor was reported.
-  std::optional<ReportedSensorValues> reported;
+  std::optional<ReportedSensor> reported;
   double position_error_m = 0.0;      // |reported - reconstructed|
   std::optional<double> power_error_db;  // reported - reconstructed power
   std::optional<double> weight_ratio;    // reported / reconstructed weight, both normalised alike
@@ -101,7 +100,7 @@ struct AuditResult {
   double seconds = 0.0;
 };
 
-AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSensorValues> reported,
+AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSensor> reported,
                   const AuditOptions& options = {});
 
 }  // namespace covmap::audit

@@ -69,8 +69,8 @@ MapRaster map_raster(std::span<const CoverageCell> map, const MapCells& cells, d
 // ---- Start values (starting_sites.cpp) ----
 
 // The reported sensor of each map sensor that was reported.
-using ReportedOf = std::map<int, const ReportedSensorValues*>;
-ReportedOf reported_in_map(std::span<const ReportedSensorValues> reported, const MapCells& cells);
+using ReportedOf = std::map<int, const ReportedSensor*>;
+ReportedOf reported_in_map(std::span<const ReportedSensor> reported, const MapCells& cells);
 
 // The tolerant estimates, each inside its own cell (else at the cell's centroid), and reported
 // positions where the estimate had nothing better than a centroid.
@@ -117,14 +117,14 @@ WeightScale weight_scale(const fitting::RefineResult& refined, const ReportedOf&
 // Per map sensor its reconstruction and verdict, then the reported sensors absent from the map.
 std::vector<SensorAudit> sensor_audits(const cleaning::CleanedMap& cleaned, const MapCells& cells,
                                        const fitting::RefineResult& refined, const RefinementSetup& setup,
-                                       const ReportedOf& reported_of, std::span<const ReportedSensorValues> reported,
+                                       const ReportedOf& reported_of, std::span<const ReportedSensor> reported,
                                        const WeightScale& scale, const AuditOptions& options);
 
 // ---- Recomputed diagrams and agreement (recomputed_diagrams.cpp) ----
 
 // Sets out.refined_diagram, out.reported_diagram and their agreements with the map.
 void recomputed_diagrams(const MapCells& cells, const MapRaster& raster, const fitting::RefineResult& refined,
-                         const ReportedOf& reported_of, std::span<const ReportedSensorValues> reported,
+                         const ReportedOf& reported_of, std::span<const ReportedSensor> reported,
                          const WeightScale& scale, const AuditOptions& options, AuditResult& out);
 
 }  // namespace covmap::audit::stages

@@ -75,7 +75,7 @@ std::pair<DiagramAgreement, std::vector<double>> agreement_of(const MapRaster& r
 // The reported sensors' own sites: map sensors at their reported values (reconstructed ones
 // where a sensor was not reported), then sensors reported but absent from the map.
 std::vector<Site> reported_sites(const MapCells& cells, const std::vector<Site>& refined_sites,
-                                 const ReportedOf& reported_of, std::span<const ReportedSensorValues> reported,
+                                 const ReportedOf& reported_of, std::span<const ReportedSensor> reported,
                                  const WeightScale& scale, const AuditOptions& options) {
   const double log_factor = scale.log_factor;
   std::vector<Site> rs = refined_sites;
@@ -85,7 +85,7 @@ std::vector<Site> reported_sites(const MapCells& cells, const std::vector<Site>&
     if (!wr && r->tx_power_dbm && options.alpha) wr = std::pow(10.0, *r->tx_power_dbm / (10.0 * *options.alpha));
     rs[i].weight = wr ? *wr / std::exp(log_factor) : refined_sites[i].weight;
   }
-  for (const ReportedSensorValues& r : reported) {
+  for (const ReportedSensor& r : reported) {
     if (cells.index.count(r.id)) continue;
     std::optional<double> wr = r.weight;
     if (!wr && r.tx_power_dbm && options.alpha) wr = std::pow(10.0, *r.tx_power_dbm / (10.0 * *options.alpha));
@@ -97,7 +97,7 @@ std::vector<Site> reported_sites(const MapCells& cells, const std::vector<Site>&
 }  // namespace
 
 void recomputed_diagrams(const MapCells& cells, const MapRaster& raster, const fitting::RefineResult& refined,
-                         const ReportedOf& reported_of, std::span<const ReportedSensorValues> reported,
+                         const ReportedOf& reported_of, std::span<const ReportedSensor> reported,
                          const WeightScale& scale, const AuditOptions& options, AuditResult& out) {
   const cleaning::CleanedMap& cleaned = out.cleaned;
   const std::size_t n = cleaned.sensors.size();

@@ -10,7 +10,7 @@ namespace covmap::audit::stages {
 namespace {
 
 // The reported weight, or the weight of the reported power (with alpha).
-std::optional<double> reported_weight(const ReportedSensorValues& r, const AuditOptions& options) {
+std::optional<double> reported_weight(const ReportedSensor& r, const AuditOptions& options) {
   std::optional<double> w = r.weight;
   if (!w && r.tx_power_dbm && options.alpha) w = std::pow(10.0, *r.tx_power_dbm / (10.0 * *options.alpha));
   return w;
@@ -18,7 +18,7 @@ std::optional<double> reported_weight(const ReportedSensorValues& r, const Audit
 
 // The verdict on a reported map sensor: its difference from the reconstruction s against the
 // uncertainty u.
-void judge_reported(const ReportedSensorValues& r, const fitting::LocalUncertainty& u, const WeightScale& scale,
+void judge_reported(const ReportedSensor& r, const fitting::LocalUncertainty& u, const WeightScale& scale,
                     const RefinementSetup& setup, const AuditOptions& options, SensorAudit& s) {
   s.reported = r;
   const double dx = r.position.x - s.position.x, dy = r.position.y - s.position.y;
@@ -72,7 +72,7 @@ WeightScale weight_scale(const fitting::RefineResult& refined, const ReportedOf&
 
 std::vector<SensorAudit> sensor_audits(const cleaning::CleanedMap& cleaned, const MapCells& cells,
                                        const fitting::RefineResult& refined, const RefinementSetup& setup,
-                                       const ReportedOf& reported_of, std::span<const ReportedSensorValues> reported,
+                                       const ReportedOf& reported_of, std::span<const ReportedSensor> reported,
                                        const WeightScale& scale, const AuditOptions& options) {
   std::vector<SensorAudit> sensors;
   const std::size_t n = setup.n;
@@ -96,7 +96,7 @@ std::vector<SensorAudit> sensor_audits(const cleaning::CleanedMap& cleaned, cons
       judge_reported(*it->second, u, scale, setup, options, s);
     sensors.push_back(std::move(s));
   }
-  for (const ReportedSensorValues& r : reported) {
+  for (const ReportedSensor& r : reported) {
     if (cells.index.count(r.id)) continue;
     SensorAudit s;
     s.id = r.id;

@@ -7,9 +7,9 @@
 
 namespace covmap::audit::stages {
 
-ReportedOf reported_in_map(std::span<const ReportedSensorValues> reported, const MapCells& cells) {
+ReportedOf reported_in_map(std::span<const ReportedSensor> reported, const MapCells& cells) {
   ReportedOf reported_of;
-  for (const ReportedSensorValues& r : reported)
+  for (const ReportedSensor& r : reported)
     if (auto it = cells.index.find(r.id); it != cells.index.end()) reported_of[it->second] = &r;
   return reported_of;
 }

@@ -7,9 +7,9 @@
 #   scripts/behaviour_snapshot.sh COVMAP MAKE_MAP OUT_DIR
 #   scripts/behaviour_snapshot.sh --compare OUT_A OUT_B
 #
-# What is normalised, and why: the folder each snapshot runs in (paths appear in messages), the
-# programs' own paths (the audit records its command line), and wall-clock figures (the audit's
-# "seconds", progress timings), which differ from run to run. Everything else must be
+# What is normalised, and why: the folder each snapshot runs in and the source tree's (paths appear
+# in messages), the programs' own paths (the audit records its command line), and wall-clock
+# figures (the audit's "seconds", progress timings), which differ from run to run. Everything else must be
 # reproducible; the audit runs with one refinement thread (--threads 1) so that this holds
 # whatever the machine. The comparison is scripts/behaviour_compare.py.
 set -uo pipefail
@@ -18,7 +18,7 @@ normalise() {  # FILE...: wall-clock figures and the run folder out of text outp
   for f in "$@"; do
     [ -f "$f" ] || continue
     sed -i -E \
-      -e "s#${RUN_DIR}#RUN#g" -e "s#${covmap}#COVMAP#g" -e "s#${make_map}#MAKE_MAP#g" \
+      -e "s#${RUN_DIR}#RUN#g" -e "s#${covmap}#COVMAP#g" -e "s#${make_map}#MAKE_MAP#g" -e "s#${root}#SRC#g" \
       -e 's/("seconds"|"time_s"|"wall_s"): ?[-0-9.e+]+/\1: 0/g' \
       -e 's/\(([0-9.]+(e[-+]?[0-9]+)?) ?(s|ms)\)/(T)/g' \
       -e 's/[0-9]+\.[0-9]+ s\b/T s/g' \
