@@ -8,8 +8,7 @@
 #include <optional>
 
 #include "mobius/bisector_relation.h"
-#include "mobius/mobius.h"
-#include "mobius/node_frame.h"
+#include "mobius/node_constraint.h"
 #include "audit/tolerances.h"
 #include "voronoi/arc_path.h"
 
@@ -67,20 +66,12 @@ std::optional<SiteConstraint> junction_constraint(const Diagram& g, int v, const
       if (e != kNone && e != v) L = std::min(L, std::abs(mobius::Complex(g.nodes[e].x, g.nodes[e].y) - at));
   }
   if (!std::isfinite(L) || !(L > 0)) L = 1.0;
+  const mobius::NodeFrame frame{at, L};
   mobius::Mobius m;
   const std::size_t n = spokes.size();
-  for (std::size_t step = 1; step <= n; ++step) {
-    const Arc& a = g.arcs[spokes[(k + step) % n].arc];
-    m = mobius::Mobius::inversion(mobius::curve_through_origin(a, at, L)).after(m);
-  }
+  for (std::size_t step = 1; step <= n; ++step) m = mobius::then_invert_in(m, g.arcs[spokes[(k + step) % n].arc], frame);
   if (m.conjugated()) {
-    const auto forms = m.fixed_set_forms();
-    Eigen::Matrix<double, 2, 4> rows;
-    for (int r = 0; r < 2; ++r)
-      rows.row(r) << forms[r].A, forms[r].B.real(), forms[r].B.imag(), forms[r].C;
-    Eigen::JacobiSVD<Eigen::Matrix<double, 2, 4>> svd(rows, Eigen::ComputeFullV);
-    const Eigen::Vector4d f = svd.matrixV().col(0);
-    mobius::GeneralizedCircle local{f(0), mobius::Complex(f(1), f(2)), f(3)};
+    mobius::GeneralizedCircle local = mobius::least_squares_fixed_circle(m);
     if (std::abs(local.A) <= tolerance::kEstimateLineCurvature * std::abs(local.B)) {
       // A solution line through the junction: as a circle of a radius far beyond the map.
       local.A = tolerance::kEstimateLineCurvature * std::abs(local.B);
@@ -91,13 +82,9 @@ std::optional<SiteConstraint> junction_constraint(const Diagram& g, int v, const
     return SiteConstraint{true, at + L * *c, L * *r};
   }
   // Even degree: the fixed points of a Möbius map; the junction itself is one of them.
-  const mobius::Complex a = m.a(), b = m.b(), c = m.c(), d = m.d();
-  const double norm = std::max({std::abs(a), std::abs(b), std::abs(c), std::abs(d)});
-  if (std::abs(c) <= tolerance::kEstimateIdentity * norm) return std::nullopt;  // fixes only the junction (and ∞)
-  // c z² + (d - a) z - b = 0; b ≈ 0 (the origin is fixed): the other root is (a - d) / c.
-  const mobius::Complex other = (a - d) / c;
-  if (std::abs(other) < tolerance::kEstimateIdentity) return std::nullopt;
-  return SiteConstraint{false, at + L * other, 0.0};
+  const auto other = mobius::other_fixed_point(m, tolerance::kEstimateIdentity);
+  if (!other) return std::nullopt;
+  return SiteConstraint{false, frame.to_plane(*other), 0.0};
 }
 
 double cost(const std::vector<SiteConstraint>& cs, mobius::Complex p) {

@@ -6,6 +6,7 @@
 
 #include <complex>
 #include <optional>
+#include <vector>
 
 #include "core/diagram.h"
 
@@ -32,5 +33,14 @@ struct GeneralizedCircle {
   std::optional<Complex> centre() const;
   std::optional<double> radius() const;
 };
+
+// Distance from z to a generalized circle (exact for circles and lines; infinite for an empty or
+// imaginary circle).
+double distance_to(const GeneralizedCircle& g, Complex z);
+
+// Intersection points of two generalized circles: 0, 1 or 2 (empty also when they coincide). Two
+// circles whose discriminant is negative by less than tolerance::kTangentDiscriminant of its terms
+// touch: one point.
+std::vector<Complex> intersect(GeneralizedCircle a, GeneralizedCircle b);
 
 }  // namespace covmap::mobius

@@ -5,6 +5,11 @@
 
 namespace covmap::mobius::tolerance {
 
+// Two solution circles whose intersection discriminant is negative by less than this fraction of
+// the terms' size are taken as tangent (one common point): the discriminant of a true tangency
+// comes out of rounding as ±1e-16 of them.
+inline constexpr double kTangentDiscriminant = 1e-12;
+
 // feasible_region: how many of the facets where the paraboloid leaves the lifted polyhedron are
 // probed for a representative point. Each probe costs O(m); any one probe already yields a valid
 // point, more only a deeper one.

@@ -22,7 +22,7 @@ struct ConstraintTest {
       const Constraint& c = constraints[k];
       double off = INFINITY;
       if (c.is_circle) {
-        off = distance_to(c.circle, p);
+        off = mobius::distance_to(c.circle, p);
       } else {
         for (const mobius::Complex& q : c.points) off = std::min(off, std::abs(q - p));
       }
@@ -49,7 +49,7 @@ bool same_circle(const mobius::GeneralizedCircle& a, const mobius::GeneralizedCi
     const mobius::Complex ua = a.B / std::abs(a.B), ub = b.B / std::abs(b.B);
     const double sine = std::abs(std::imag(std::conj(ua) * ub));
     const mobius::Complex pa = -a.C * a.B / (2.0 * std::norm(a.B));
-    return sine <= matrix_tolerance && distance_to(b, pa) <= tol;
+    return sine <= matrix_tolerance && mobius::distance_to(b, pa) <= tol;
   }
   const auto ca = a.centre(), cb = b.centre();
   const auto ra = a.radius(), rb = b.radius();
@@ -67,7 +67,7 @@ void circle_candidates(const std::vector<Constraint>& constraints, double scale,
   for (std::size_t i = 0; i < circles.size(); ++i)
     for (std::size_t j = i + 1; j < circles.size(); ++j) {
       if (same_circle(circles[i], circles[j], test.tol, matrix_tolerance)) continue;
-      const auto pts = intersect(circles[i], circles[j]);
+      const auto pts = mobius::intersect(circles[i], circles[j]);
       if (pts.empty()) {
         // Where the two circles come closest (on the line of centres): measured, for the
         // failure's "by how much", never a candidate.

@@ -24,12 +24,13 @@
 #include "core/diagram.h"
 #include "core/large_buffer.h"
 #include "mobius/generalized_circle.h"
+#include "mobius/node_constraint.h"
 #include "recognition/recognize.h"
 #include "voronoi/faces.h"
 
 namespace covmap::recognition::stages {
 
-// ---- Small geometry shared by the stages (distance_to and intersect: curve_geometry.cpp) ----
+// ---- Small geometry shared by the stages (distance_to and intersect: mobius/generalized_circle.h) ----
 
 inline mobius::GeneralizedCircle curve_of(const Arc& a) {
   if (const auto* c = std::get_if<Circle>(&a.curve)) return mobius::GeneralizedCircle::from(*c);
@@ -38,12 +39,6 @@ inline mobius::GeneralizedCircle curve_of(const Arc& a) {
 
 inline int half_id(const HalfArc& h) { return 2 * h.arc + (h.forward ? 0 : 1); }
 
-// Distance from z to a generalized circle (|value| / |gradient| to first order, exact for circles
-// and lines).
-double distance_to(const mobius::GeneralizedCircle& g, mobius::Complex z);
-
-// Intersection points of two generalized circles (0, 1 or 2; empty also when they coincide).
-std::vector<mobius::Complex> intersect(mobius::GeneralizedCircle a, mobius::GeneralizedCircle b);
 
 // ---- Data passed between the stages ----
 
@@ -83,15 +78,11 @@ struct TracedGraph {
 // f's site to itself. The composition of the inversions is an anti-Möbius map for an odd number
 // of arcs (its fixed set: a circle — the solution circle — or at most two points) and a Möbius
 // map for an even number (at most two fixed points, or no constraint when it is the identity).
-struct Constraint {
-  int node = kNone;            // the node it comes from
-  bool any = false;            // no constraint
-  bool is_circle = false;
-  mobius::GeneralizedCircle circle;
-  std::vector<mobius::Complex> points;
-  // Odd degree, fixed set empty: the two circles whose intersection it is miss each other by
-  // this much (how far the node is from being a node of a bisector graph).
-  double gap = 0.0;
+// A node's constraint on the site of a face (mobius/node_constraint.h), in plane coordinates, with
+// the node it comes from. An empty fixed set's gap says how far the node is from being a node of
+// a bisector graph.
+struct Constraint : mobius::NodeConstraint {
+  int node = kNone;
 };
 
 // The face whose nodes give the most constraints, each node counted once per face (face -1 when

@@ -5,11 +5,6 @@
 
 namespace covmap::recognition::tolerance {
 
-// Two solution circles whose intersection discriminant is negative by less than this fraction of
-// the terms' size are taken as tangent (one common point): the discriminant of a true tangency
-// comes out of rounding as ±1e-16 of them.
-inline constexpr double kTangentDiscriminant = 1e-12;
-
 // An arc's end node may be off its curve by the recognition tolerance plus this many units of
 // rounding (machine epsilon times |c| + r + |v| for a circle with centre c and radius r, |v| + |p|
 // for a line through p): the three numbers are each rounded once, and huge circles (nearly equal

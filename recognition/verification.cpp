@@ -38,7 +38,7 @@ std::optional<RecognitionFailure> verify_arcs(const TracedGraph& t, const LargeV
     for (const int f : {left, right}) {
       const mobius::Complex p = site[f].position;
       if (mobius::strictly_inside(bis, p) == (left_is_inside == (f == left))) continue;
-      const double off = distance_to(curve_of(arc), p);
+      const double off = mobius::distance_to(curve_of(arc), p);
       if (off > tol) {
         std::ostringstream msg;
         msg << "arc " << a << ": the site of face " << f << " lies on the wrong side of it";
