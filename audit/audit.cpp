@@ -65,7 +65,7 @@ AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSen
   const fitting::RefineResult refined =
       multi_start_refinement(setup, estimates, start, cells, raster, reported_of, out.messages);
   out.refinement_summary = refined.summary.brief();
-  timer.lap(setup.n <= kMultiStartSensors ? "refinement (several starts)" : "refinement");
+  timer.lap(setup.n <= tolerance::kMultiStartSensors ? "refinement (several starts)" : "refinement");
   progress("verification", 0.7);
 
   // 4. Powers and the common factor of weights; 5. per sensor: reconstruction, uncertainty, verdict.

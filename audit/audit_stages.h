@@ -21,22 +21,15 @@
 #include "audit/audit.h"
 #include "audit/map_agreement.h"
 #include "audit/start_values.h"
+#include "audit/tolerances.h"
 #include "core/box.h"
 #include "fitting/refine.h"
 #include "voronoi/best_server_raster.h"
 
 namespace covmap::audit::stages {
 
-// Maps up to this many sensors are refined from several starts (the tolerant estimate, the cells'
-// centroids, the reported sensors); larger ones from one, to bound the time.
-inline constexpr std::size_t kMultiStartSensors = 300;
-// Maps up to this many sensors get one boundary sample per bin, larger ones one per two bins.
-inline constexpr std::size_t kDenseSamplingSensors = 3000;
-// Iterations of the second refinement phase (see refine_from).
-inline constexpr int kPhase2Iterations = 60;
-// Rounds of restarting sensors that ended outside their own cell. A second round was measured on
-// a 10⁴-sensor map: mean IoU 0.942 -> 0.953 for twice the refinement time (55 s end to end).
-inline constexpr int kRestartRounds = 1;
+// The pipeline's fixed numbers (sizes that switch strategies, iteration caps) are in
+// audit/tolerances.h.
 
 double median(std::vector<double> v);
 

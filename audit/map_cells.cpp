@@ -58,14 +58,14 @@ MapCells map_cells(std::span<const CoverageCell> map, const cleaning::CleanedMap
 double bin_size(const cleaning::CleanedMap& cleaned, const Box& box) {
   const double extent = std::hypot(box.xmax - box.xmin, box.ymax - box.ymin);
   return cleaned.report.bin_size_estimate > 0 ? cleaned.report.bin_size_estimate
-                                              : std::max(cleaned.report.snap_distance, 1e-6 * extent);
+                                              : std::max(cleaned.report.snap_distance, tolerance::kMinBinFraction * extent);
 }
 
 MapRaster map_raster(std::span<const CoverageCell> map, const MapCells& cells, double bin_size) {
   const Box& box = cells.box;
   double res = bin_size;
   const double bw = box.xmax - box.xmin, bh = box.ymax - box.ymin;
-  if (bw * bh / (res * res) > 4e6) res = std::sqrt(bw * bh / 4e6);
+  if (bw * bh / (res * res) > tolerance::kMaxComparisonBins) res = std::sqrt(bw * bh / tolerance::kMaxComparisonBins);
   const voronoi::RasterGrid grid{box.xmin, box.ymin, res, std::max(1, static_cast<int>(std::ceil(bw / res))),
                                  std::max(1, static_cast<int>(std::ceil(bh / res)))};
   return MapRaster{grid, rasterize_cells(map, cells.cell_sensor, grid)};

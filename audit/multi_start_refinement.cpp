@@ -18,7 +18,7 @@ void restart_escaped(const RefinementSetup& setup, const MapCells& cells, const 
                      fitting::RefineResult& refined, std::vector<std::string>& messages) {
   const std::size_t n = setup.n;
   const std::vector<Point>& centroids = cells.centroids;
-  for (int round = 0; round < kRestartRounds; ++round) {
+  for (int round = 0; round < tolerance::kRestartRounds; ++round) {
     std::vector<Site> repaired = refined.sites;
     std::vector<std::vector<double>> neighbour_logw(n);
     for (const auto& sample : setup.samples) {
@@ -56,7 +56,7 @@ fitting::RefineResult multi_start_refinement(const RefinementSetup& setup, const
                                              std::vector<std::string>& messages) {
   const std::size_t n = setup.n;
   const std::vector<Point>& centroids = cells.centroids;
-  const bool multi_start = n <= kMultiStartSensors;
+  const bool multi_start = n <= tolerance::kMultiStartSensors;
   // The first start: every sensor at its cell's centroid, with the tolerant weights. Measured on
   // generated maps (docs/ACCURACY.md), it converges in about half the iterations of the junction
   // positions, whose solution circles come from short, noisy arcs; those positions are a second

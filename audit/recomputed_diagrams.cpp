@@ -13,7 +13,7 @@ namespace {
 
 // The map's frame as a simple counter-clockwise polygon, for clipping recomputed diagrams: the
 // longest closed walk along frame arcs; the bounding box when there is none.
-std::vector<Point> frame_polygon(const Diagram& g, const Box& box) {
+std::vector<Point> longest_frame_walk(const Diagram& g, const Box& box) {
   std::vector<int> next(g.nodes.size(), kNone);
   std::vector<int> starts;
   for (std::size_t a = 0; a < g.arcs.size(); ++a) {
@@ -102,7 +102,7 @@ void recomputed_diagrams(const MapCells& cells, const MapRaster& raster, const f
   const cleaning::CleanedMap& cleaned = out.cleaned;
   const std::size_t n = cleaned.sensors.size();
   const Box& box = cells.box;
-  const std::vector<Point> frame = frame_polygon(cleaned.graph, box);
+  const std::vector<Point> frame = longest_frame_walk(cleaned.graph, box);
   std::vector<Site> refined_sites = refined.sites;
   out.refined_diagram = recomputed_diagram(refined_sites, frame, box, out.messages, "refined sensors");
   // The raster of the map (made before the refinement): its own bins where it has them, at most ~4·10⁶.

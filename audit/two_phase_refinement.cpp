@@ -56,12 +56,12 @@ RefinementSetup refinement_setup(const cleaning::CleanedMap& cleaned, const Box&
   const double sigma = bin_size_m / std::sqrt(12.0);
   // One sample per bin; on maps too large for that to stay fast, one per two bins (each chain
   // still has about ten, against its curve's three parameters).
-  const double sample_spacing = n > kDenseSamplingSensors ? 2.0 * bin_size_m : bin_size_m;
+  const double sample_spacing = n > tolerance::kDenseSamplingSensors ? 2.0 * bin_size_m : bin_size_m;
   setup.samples = sample_boundaries(cleaned, sample_spacing, sigma);
   fitting::RefineOptions& ro = setup.options;
-  ro.loss_scale = 3.0;  // in sample σ: staircase noise is bounded by ±bin/2 ≈ 1.7 σ
+  ro.loss_scale = tolerance::kAuditLossScale;
   ro.threads = threads;
-  ro.max_iterations = 500;
+  ro.max_iterations = tolerance::kAuditMaxIterations;
   ro.function_tolerance = tolerance::kAuditFunctionTolerance;
   const double bw = box.xmax - box.xmin, bh = box.ymax - box.ymin;
   setup.spacing = std::sqrt(std::max(bw * bh, 1e-300) / static_cast<double>(std::max<std::size_t>(n, 1)));
@@ -79,12 +79,12 @@ fitting::RefineResult refine_from(const RefinementSetup& setup, std::vector<Site
   quick.nonmonotonic_steps = true;
   // Phase 2 starts at phase 1's optimum and only releases the weights' priors: a few dozen
   // iterations settle it; its long tail (cost changes of parts in 10⁵) is cut off.
-  quick.max_iterations = kPhase2Iterations;
+  quick.max_iterations = tolerance::kPhase2Iterations;
   try {
     fitting::RefineResult phase1 = fitting::refine_sites(from, setup.samples, priors_for(setup, from, true), first);
     messages.push_back("refinement phase 1: " + phase1.summary.brief());
     separate(setup, centroids, phase1.sites);
-    if (setup.n > kDenseSamplingSensors) return phase1;  // large maps: time (docs/PERFORMANCE.md)
+    if (setup.n > tolerance::kDenseSamplingSensors) return phase1;  // large maps: time (docs/PERFORMANCE.md)
     fitting::RefineResult phase2 = fitting::refine_sites(phase1.sites, setup.samples, priors_for(setup, from, false), quick);
     messages.push_back("refinement phase 2: " + phase2.summary.brief());
     return phase2;

@@ -22,7 +22,7 @@ FrameMarks frame_marks(const Diagram& g, const LargeVector<int>& face_of_half) {
 
 // The clip polygon of a clipped graph: its own if stated, else the frame arcs followed from node to
 // node (counter-clockwise, as frame arcs keep the inside on their left).
-std::vector<Point> frame_polygon(const Diagram& g) {
+std::vector<Point> clip_polygon_of(const Diagram& g) {
   if (!g.clip.empty()) return g.clip;
   std::vector<int> next_arc(g.nodes.size(), kNone);
   int first = kNone;

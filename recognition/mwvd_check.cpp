@@ -13,7 +13,7 @@ void mwvd_check(Reconstruction& out, bool clipped, const RecognitionOptions& opt
   // The sites must be distinct for a Voronoi diagram; coinciding sites already answer "no".
   try {
     Diagram recomputed = voronoi::build_diagram(out.sites);
-    if (clipped) recomputed = voronoi::clip_diagram(recomputed, frame_polygon(g));
+    if (clipped) recomputed = voronoi::clip_diagram(recomputed, clip_polygon_of(g));
     CompareOptions co;
     co.relative_tolerance = options.relative_tolerance;
     const Comparison c = compare_graphs(g, recomputed, co);

@@ -135,7 +135,7 @@ FrameMarks frame_marks(const Diagram& g, const LargeVector<int>& face_of_half);
 
 // The clip polygon of a clipped graph: its own if stated, else the frame arcs followed from node to
 // node (counter-clockwise, as frame arcs keep the inside on their left).
-std::vector<Point> frame_polygon(const Diagram& g);
+std::vector<Point> clip_polygon_of(const Diagram& g);
 
 // The constraint of the node where half-arc h_out (leaving it, on face f's boundary) starts;
 // nullopt when the walk around the node meets a frame arc or an open end.
