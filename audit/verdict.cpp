@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace covmap::audit {
@@ -32,7 +33,10 @@ Judgement judge(const VerdictInput& in, double threshold3) {
   const int n = v.dof;
   const Eigen::MatrixXd c = cov.topLeftCorner(n, n);
   const Eigen::VectorXd dd = d.head(n);
-  v.chi2 = dd.dot(c.ldlt().solve(dd));
+  // A NaN anywhere (an unknown uncertainty as much as an unknown difference) makes χ² NaN, which
+  // is judged inconsistent below; LDLT alone may return a finite number past a NaN pivot.
+  v.chi2 = cov.topLeftCorner(n, n).allFinite() && dd.allFinite() ? dd.dot(c.ldlt().solve(dd))
+                                                                   : std::numeric_limits<double>::quiet_NaN();
   const double threshold = with_weight ? threshold3 : -2.0 * std::log(chi2_3_tail(threshold3));
   v.inconsistent = !(v.chi2 <= threshold);  // NaN counts as inconsistent: say so rather than pass
   // The reason: each component in metres / dB and in its own σ.

@@ -182,11 +182,10 @@ TEST(Verdict, NaNIsJudgedInconsistent) {
 }
 
 // Found while writing these tests: a NaN in the covariance (the reconstruction's var_x, or var_logw)
-// is judged consistent, whatever the difference: the LDLT solve yields a finite χ² (the NaN pivot
-// does not propagate), so the NaN guard (!(χ² <= threshold)) never sees it. An unknown uncertainty
-// should not pass; disabled until judge() checks its inputs. (NaN differences are caught: see
-// NaNIsJudgedInconsistent.)
-TEST(Verdict, DISABLED_NaNCovarianceIsJudgedInconsistent) {
+// was judged consistent, whatever the difference: the LDLT solve yields a finite χ² (the NaN pivot
+// does not propagate), so the NaN guard (!(χ² <= threshold)) never saw it. An unknown uncertainty
+// must not pass. (NaN differences: see NaNIsJudgedInconsistent.)
+TEST(Verdict, NaNCovarianceIsJudgedInconsistent) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   EXPECT_TRUE(judge(position_only(0.0, 0.0, nan, 1.0, 0.0), kLoose).inconsistent);
   EXPECT_TRUE(judge(position_only(0.0, 1.0, nan, 1.0, 0.0), kLoose).inconsistent);
