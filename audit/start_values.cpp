@@ -136,27 +136,9 @@ void starts_from(const SiteConstraint& x, const SiteConstraint& y, std::vector<m
   if (h > 0) out.push_back(x.centre + a * u - h * mobius::Complex(0, 1) * u);
 }
 
-}  // namespace
-
-std::string to_string(EstimateSource s) {
-  switch (s) {
-    case EstimateSource::kJunctions: return "junctions";
-    case EstimateSource::kNeighbour: return "neighbour";
-    case EstimateSource::kCentroid: return "centroid";
-  }
-  return "?";
-}
-
-SiteEstimates estimate_sites(const cleaning::CleanedMap& map, std::span<const Point> centroids) {
-  const Diagram& g = map.graph;
-  const std::size_t n = map.sensors.size();
-  SiteEstimates out;
-  out.sites.resize(n);
-  out.how.assign(n, EstimateSource::kCentroid);
-  out.residual.assign(n, 0.0);
-  out.constraints.assign(n, 0);
-
-  // 1. Solution circles of every sensor at every interior junction.
+// 1. Solution circles (or points) of every sensor at every interior junction (a node of degree
+// ≥ 3 not on the map's frame), per sensor.
+std::vector<std::vector<SiteConstraint>> constraints_at_junctions(const Diagram& g, std::size_t n) {
   std::vector<std::vector<SiteConstraint>> constraints(n);
   const auto spokes = spokes_at_nodes(g);
   for (std::size_t v = 0; v < g.nodes.size(); ++v) {
@@ -171,48 +153,81 @@ SiteEstimates estimate_sites(const cleaning::CleanedMap& map, std::span<const Po
       if (auto c = junction_constraint(g, static_cast<int>(v), s, k)) constraints[site].push_back(*c);
     }
   }
-  // 2. Least-squares intersection per sensor.
-  std::vector<char> located(n, 0);
-  for (std::size_t i = 0; i < n; ++i) {
+  return constraints;
+}
+
+// The starting points of the least-squares intersection: the centroid, the meeting points of every
+// pair of the first six constraints and, for a single circle, its point nearest to the centroid.
+std::vector<mobius::Complex> start_points(const std::vector<SiteConstraint>& cs, mobius::Complex centroid) {
+  std::vector<mobius::Complex> starts{centroid};
+  const std::size_t m = std::min<std::size_t>(cs.size(), 6);
+  for (std::size_t a = 0; a < m; ++a)
+    for (std::size_t b = a + 1; b < m; ++b) starts_from(cs[a], cs[b], starts);
+  if (cs.size() == 1 && cs[0].circle) {
+    const mobius::Complex d = centroid - cs[0].centre;
+    if (std::abs(d) > 0) starts.push_back(cs[0].centre + cs[0].radius * d / std::abs(d));
+  }
+  return starts;
+}
+
+// The least-squares intersection of a sensor's constraints (not empty): Gauss–Newton from every
+// start (two or more constraints), the result with the smallest cost winning.
+mobius::Complex least_squares_intersection(const std::vector<SiteConstraint>& cs, mobius::Complex centroid) {
+  mobius::Complex best = centroid;
+  double best_cost = INFINITY;
+  for (const mobius::Complex& s0 : start_points(cs, centroid)) {
+    const mobius::Complex p = cs.size() >= 2 ? gauss_newton(cs, s0) : s0;
+    // Ties in the residual (two intersections of two circles) go to the one nearer the cell.
+    const double c = cost(cs, p) + tolerance::kEstimateCentroidPull * std::norm(p - centroid);
+    if (std::isfinite(c) && c < best_cost) best_cost = c, best = p;
+  }
+  return best;
+}
+
+// 2. Every sensor at its centroid with weight 1; a sensor with junction constraints at their
+// least-squares intersection instead (EstimateSource::kJunctions), with its residual.
+void locate_at_junctions(const std::vector<std::string>& sensors, std::span<const Point> centroids,
+                         const std::vector<std::vector<SiteConstraint>>& constraints, SiteEstimates& out) {
+  for (std::size_t i = 0; i < sensors.size(); ++i) {
     const mobius::Complex centroid = i < centroids.size() ? mobius::Complex(centroids[i].x, centroids[i].y) : mobius::Complex(0, 0);
-    out.sites[i] = {map.sensors[i], centroid.real(), centroid.imag(), 1.0};
+    out.sites[i] = {sensors[i], centroid.real(), centroid.imag(), 1.0};
     const auto& cs = constraints[i];
     out.constraints[i] = static_cast<int>(cs.size());
     if (cs.empty()) continue;
-    std::vector<mobius::Complex> starts{centroid};
-    const std::size_t m = std::min<std::size_t>(cs.size(), 6);
-    for (std::size_t a = 0; a < m; ++a)
-      for (std::size_t b = a + 1; b < m; ++b) starts_from(cs[a], cs[b], starts);
-    if (cs.size() == 1 && cs[0].circle) {
-      // One circle: the point of it nearest to the centroid.
-      const mobius::Complex d = centroid - cs[0].centre;
-      if (std::abs(d) > 0) starts.push_back(cs[0].centre + cs[0].radius * d / std::abs(d));
-    }
-    mobius::Complex best = centroid;
-    double best_cost = INFINITY;
-    for (const mobius::Complex& s0 : starts) {
-      const mobius::Complex p = cs.size() >= 2 ? gauss_newton(cs, s0) : s0;
-      // Ties in the residual (two intersections of two circles) go to the one nearer the cell.
-      const double c = cost(cs, p) + tolerance::kEstimateCentroidPull * std::norm(p - centroid);
-      if (std::isfinite(c) && c < best_cost) best_cost = c, best = p;
-    }
+    const mobius::Complex best = least_squares_intersection(cs, centroid);
     out.sites[i].x = best.real();
     out.sites[i].y = best.imag();
     out.residual[i] = std::sqrt(cost(cs, best) / static_cast<double>(cs.size()));
     out.how[i] = EstimateSource::kJunctions;
-    located[i] = 1;
   }
-  // 3. Sensors no junction constrains: the inversion of a located neighbour, breadth first.
-  std::vector<std::vector<std::pair<int, int>>> neighbours(n);  // (neighbour, arc)
+}
+
+// An arc between the regions of two different sensors (not the map's frame).
+bool separates_two_sensors(const Arc& arc) {
+  return !(arc.frame || arc.left_site == kNone || arc.right_site == kNone || arc.left_site == arc.right_site);
+}
+
+// Per sensor, its neighbours across the arcs between two sensors: (neighbour, arc).
+std::vector<std::vector<std::pair<int, int>>> site_adjacency(const Diagram& g, std::size_t n) {
+  std::vector<std::vector<std::pair<int, int>>> neighbours(n);
   for (std::size_t a = 0; a < g.arcs.size(); ++a) {
     const Arc& arc = g.arcs[a];
-    if (arc.frame || arc.left_site == kNone || arc.right_site == kNone || arc.left_site == arc.right_site) continue;
+    if (!separates_two_sensors(arc)) continue;
     neighbours[arc.left_site].push_back({arc.right_site, static_cast<int>(a)});
     neighbours[arc.right_site].push_back({arc.left_site, static_cast<int>(a)});
   }
+  return neighbours;
+}
+
+// 3. Sensors no junction constrains: the inversion of a located neighbour across their common arc
+// (EstimateSource::kNeighbour), breadth first from the sensors located at junctions.
+void locate_from_neighbours(const Diagram& g, const std::vector<std::vector<std::pair<int, int>>>& neighbours,
+                            SiteEstimates& out) {
+  const std::size_t n = out.sites.size();
+  std::vector<char> located(n, 0);
   std::deque<int> queue;
   for (std::size_t i = 0; i < n; ++i)
-    if (located[i]) queue.push_back(static_cast<int>(i));
+    if (out.how[i] == EstimateSource::kJunctions) located[i] = 1, queue.push_back(static_cast<int>(i));
   while (!queue.empty()) {
     const int i = queue.front();
     queue.pop_front();
@@ -227,34 +242,52 @@ SiteEstimates estimate_sites(const cleaning::CleanedMap& map, std::span<const Po
       queue.push_back(j);
     }
   }
-  // 4. Log weights by least squares over the chains (Lemma 1 ratios), one gauge per component.
+}
+
+// How much arc a counts in the log-weight system: the number of boundary points of its chain
+// (at least 1; 1 without a chain).
+double chain_weight(const cleaning::CleanedMap& map, std::size_t a) {
+  const std::size_t chain = a < map.arc_chain.size() ? static_cast<std::size_t>(map.arc_chain[a]) : map.chains.size();
+  return chain < map.chains.size() ? std::max<double>(1.0, static_cast<double>(map.chains[chain].points.size())) : 1.0;
+}
+
+// log(w_left / w_right) of an arc between two sensors: 0 for a line; for a circle, Lemma 1
+// (w_in / w_out = |c - s_in| / r = r / |c - s_out|), the geometric mean of its two estimates,
+// clamped below 1 (the inside sensor is the lighter one). None when the sites' distances to the
+// centre are not usable.
+std::optional<double> log_weight_ratio(const Arc& arc, const std::vector<Site>& sites) {
+  const auto* c = std::get_if<Circle>(&arc.curve);
+  if (!c) return 0.0;
+  const int in = arc.ccw ? arc.left_site : arc.right_site;  // the disk is on the left of ccw travel
+  const int out_site = in == arc.left_site ? arc.right_site : arc.left_site;
+  const mobius::Complex centre(c->cx, c->cy);
+  const double din = std::abs(mobius::Complex(sites[in].x, sites[in].y) - centre);
+  const double dout = std::abs(mobius::Complex(sites[out_site].x, sites[out_site].y) - centre);
+  if (!(din > 0) || !(dout > 0) || !std::isfinite(din / dout)) return std::nullopt;
+  const double r = std::min(0.5 * std::log(din / dout), 0.0);
+  return in == arc.left_site ? r : -r;
+}
+
+// 4. Log weights by least squares over the arcs between sensors (Lemma 1 ratios, weighted by chain
+// length), one gauge per component; zero where the system cannot be solved.
+Eigen::VectorXd log_weights(const cleaning::CleanedMap& map, const std::vector<Site>& sites) {
+  const Diagram& g = map.graph;
+  const std::size_t n = sites.size();
   std::vector<Eigen::Triplet<double>> t;
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
   std::vector<double> diag(n, 0.0);
   for (std::size_t a = 0; a < g.arcs.size(); ++a) {
     const Arc& arc = g.arcs[a];
-    if (arc.frame || arc.left_site == kNone || arc.right_site == kNone || arc.left_site == arc.right_site) continue;
-    const std::size_t chain = a < map.arc_chain.size() ? static_cast<std::size_t>(map.arc_chain[a]) : map.chains.size();
-    const double w = chain < map.chains.size() ? std::max<double>(1.0, static_cast<double>(map.chains[chain].points.size())) : 1.0;
-    double log_ratio = 0.0;  // log(w_left / w_right)
-    if (const auto* c = std::get_if<Circle>(&arc.curve)) {
-      const int in = arc.ccw ? arc.left_site : arc.right_site;  // the disk is on the left of ccw travel
-      const int out_site = in == arc.left_site ? arc.right_site : arc.left_site;
-      const mobius::Complex centre(c->cx, c->cy);
-      const double din = std::abs(mobius::Complex(out.sites[in].x, out.sites[in].y) - centre);
-      const double dout = std::abs(mobius::Complex(out.sites[out_site].x, out.sites[out_site].y) - centre);
-      if (!(din > 0) || !(dout > 0) || !std::isfinite(din / dout)) continue;
-      // Lemma 1: w_in / w_out = |c - s_in| / r = r / |c - s_out|; their geometric mean, clamped
-      // below 1 (the inside sensor is the lighter one).
-      const double r = std::min(0.5 * std::log(din / dout), 0.0);
-      log_ratio = in == arc.left_site ? r : -r;
-    }
+    if (!separates_two_sensors(arc)) continue;
+    const double w = chain_weight(map, a);
+    const std::optional<double> log_ratio = log_weight_ratio(arc, sites);
+    if (!log_ratio) continue;
     const int l = arc.left_site, rgt = arc.right_site;
     t.emplace_back(l, rgt, -w);
     t.emplace_back(rgt, l, -w);
     diag[l] += w, diag[rgt] += w;
-    rhs(l) += w * log_ratio;
-    rhs(rgt) -= w * log_ratio;
+    rhs(l) += w * *log_ratio;
+    rhs(rgt) -= w * *log_ratio;
   }
   // The gauge: a small pull of every log weight to 0 keeps each component's system regular
   // without biasing differences (it shifts a component's mean, which normalisation removes).
@@ -267,6 +300,33 @@ SiteEstimates estimate_sites(const cleaning::CleanedMap& map, std::span<const Po
     logw = solver.solve(rhs);
     if (!logw.allFinite()) logw.setZero();
   }
+  return logw;
+}
+
+}  // namespace
+
+std::string to_string(EstimateSource s) {
+  switch (s) {
+    case EstimateSource::kJunctions: return "junctions";
+    case EstimateSource::kNeighbour: return "neighbour";
+    case EstimateSource::kCentroid: return "centroid";
+  }
+  return "?";
+}
+
+SiteEstimates estimate_sites(const cleaning::CleanedMap& map, std::span<const Point> centroids) {
+  const std::size_t n = map.sensors.size();
+  SiteEstimates out;
+  out.sites.resize(n);
+  out.how.assign(n, EstimateSource::kCentroid);
+  out.residual.assign(n, 0.0);
+  out.constraints.assign(n, 0);
+
+  const std::vector<std::vector<SiteConstraint>> constraints = constraints_at_junctions(map.graph, n);
+  locate_at_junctions(map.sensors, centroids, constraints, out);
+  locate_from_neighbours(map.graph, site_adjacency(map.graph, n), out);
+  // Weights from their logarithms, the largest 1.
+  const Eigen::VectorXd logw = log_weights(map, out.sites);
   const double top = n ? logw.maxCoeff() : 0.0;
   for (std::size_t i = 0; i < n; ++i) out.sites[i].weight = std::exp(logw(static_cast<Eigen::Index>(i)) - top);
   return out;

@@ -128,6 +128,281 @@ bool same_curve(const Arc& a, const Arc& b, double tol) {
   return false;  // a circle and a line (a huge circle against a line is a different curve here)
 }
 
+// The yardsticks of one comparison: the extent's size, the tolerance and the horizon derived from
+// it, and the centre that distances to the horizon are measured from.
+struct Measures {
+  double scale = 1.0;
+  double tol = 0.0;
+  Point centre;
+  double horizon = 0.0;
+
+  // A node beyond the horizon (or none: an arc's end at infinity) counts as a point at infinity.
+  bool far_node(const Diagram& d, int v) const {
+    return v == kNone || std::hypot(d.nodes[v].x - centre.x, d.nodes[v].y - centre.y) > horizon;
+  }
+  // Far from the sites, positions of nodes and circles are sensitive to the sites' rounding in
+  // proportion to their distance (nearly tangent bisectors): the tolerance at (x, y), scaled by its
+  // distance from the centre in units of the extent.
+  double scaled_tol(double x, double y) const {
+    return tol * std::max(1.0, std::hypot(x - centre.x, y - centre.y) / scale);
+  }
+  // A curve's own numbers are known in proportion to their size (see scaled_tol).
+  double curve_tol(const Arc& arc) const {
+    if (const auto* c = std::get_if<Circle>(&arc.curve))
+      return tol * std::max(1.0, (std::hypot(c->cx - centre.x, c->cy - centre.y) + c->r) / scale);
+    return tol;
+  }
+};
+
+// The extent: the central part of the first graph's nodes and full circles (core/extent.h) and both
+// graphs' sites (not the second graph's nodes, which may hold the far artefacts the horizon is
+// there to ignore). The first graph is the reference unless it has no arcs.
+Measures comparison_measures(const Diagram& a, const Diagram& b, const CompareOptions& options) {
+  const Diagram& reference = a.arcs.empty() ? b : a;
+  const Box e = graph_extent(reference);
+  double xmin = e.xmin, xmax = e.xmax, ymin = e.ymin, ymax = e.ymax;
+  if (reference.arcs.empty() && reference.nodes.empty()) xmin = ymin = INFINITY, xmax = ymax = -INFINITY;
+  for (const Diagram* d : {&a, &b})
+    for (const auto& s : d->sites) {
+      xmin = std::min(xmin, s.x), xmax = std::max(xmax, s.x);
+      ymin = std::min(ymin, s.y), ymax = std::max(ymax, s.y);
+    }
+  Measures m;
+  m.scale = std::isfinite(xmax - xmin) ? std::max(std::hypot(xmax - xmin, ymax - ymin), 1e-300) : 1.0;
+  m.tol = options.relative_tolerance * m.scale;
+  m.centre = {0.5 * (xmin + xmax), 0.5 * (ymin + ymax)};
+  m.horizon = options.horizon * m.scale;
+  return m;
+}
+
+// An arc beyond the horizon: both ends far (or at infinity) and its nearest point to the centre
+// far too.
+bool beyond_horizon(const Measures& m, const Diagram& d, const Arc& arc) {
+  if (!m.far_node(d, arc.from) || !m.far_node(d, arc.to)) return false;
+  const voronoi::ArcPathView p = voronoi::arc_path(arc, d.nodes);
+  double s;
+  if (p.circle) {
+    const double angle = std::atan2(m.centre.y - p.cy, m.centre.x - p.cx);
+    s = std::fmod(p.sense * (angle - p.start_angle), 6.283185307179586);
+    if (s < 0) s += 6.283185307179586;
+    if (s < p.s0 || s > p.s1) return true;  // the nearest point is an end: far
+  } else {
+    s = std::clamp((m.centre.x - p.ox) * p.ux + (m.centre.y - p.oy) * p.uy, p.s0, p.s1);
+  }
+  const Point q = p.at(s);
+  return std::hypot(q.x - m.centre.x, q.y - m.centre.y) > m.horizon;
+}
+
+// Nodes closer than tol within one graph are one node (a node of degree four may be recomputed
+// as two of degree three joined by an arc shorter than the tolerance): per node, the
+// representative of its cluster.
+std::vector<int> node_clusters(const Diagram& d, double tol) {
+  std::vector<int> parent(d.nodes.size());
+  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<int>(i);
+  auto find = [&](int x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (const Arc& arc : d.arcs)
+    if (arc.from != kNone && arc.to != kNone && arc.from != arc.to &&
+        std::hypot(d.nodes[arc.from].x - d.nodes[arc.to].x, d.nodes[arc.from].y - d.nodes[arc.to].y) <= tol)
+      parent[find(arc.from)] = find(arc.to);
+  std::vector<int> root(d.nodes.size());
+  for (std::size_t i = 0; i < root.size(); ++i) root[i] = find(static_cast<int>(i));
+  return root;
+}
+
+// An arc inside one cluster that is itself that short (it is ignored); a long arc between two
+// clustered nodes (a circle nearly touching itself there) is a loop through the cluster and is
+// compared.
+bool tiny(const Diagram& d, const std::vector<int>& clusters, const Arc& arc, double tol) {
+  if (arc.from == kNone || arc.to == kNone || arc.from == arc.to || clusters[arc.from] != clusters[arc.to])
+    return false;
+  const voronoi::ArcPathView p = voronoi::arc_path(arc, d.nodes);
+  const double length = p.circle ? p.r * (p.s1 - p.s0) : std::abs(p.s1 - p.s0);
+  return length <= 2 * tol;
+}
+
+// The nodes that take part in the comparison: cluster representatives within the horizon.
+bool compared(const Measures& m, const Diagram& d, const std::vector<int>& clusters, std::size_t i) {
+  return clusters[i] == static_cast<int>(i) && !m.far_node(d, static_cast<int>(i));
+}
+
+// Matched nodes, both ways (kNone where unmatched).
+struct NodeMatching {
+  std::vector<int> a_to_b;
+  std::vector<int> b_to_a;
+};
+
+// Each compared node of a to the nearest unused compared node of b within tol, through a hash grid
+// of b's nodes. Returns the number of nodes matched.
+std::size_t match_nodes_nearby(const Diagram& a, const Diagram& b, const std::vector<int>& ca,
+                               const std::vector<int>& cb, const Measures& m, NodeMatching& match) {
+  Grid grid{m.tol, {}};
+  for (std::size_t j = 0; j < b.nodes.size(); ++j)
+    if (compared(m, b, cb, j)) grid.add(b.nodes[j].x, b.nodes[j].y, static_cast<int>(j));
+  std::size_t matched = 0;
+  for (std::size_t i = 0; i < a.nodes.size(); ++i) {
+    if (!compared(m, a, ca, i)) continue;
+    int best = kNone;
+    double best_d = m.tol;
+    grid.near(a.nodes[i].x, a.nodes[i].y, [&](int j) {
+      const double dd = std::hypot(a.nodes[i].x - b.nodes[j].x, a.nodes[i].y - b.nodes[j].y);
+      if (match.b_to_a[j] == kNone && dd <= best_d) best = j, best_d = dd;
+    });
+    if (best != kNone) {
+      match.a_to_b[i] = best;
+      match.b_to_a[best] = static_cast<int>(i);
+      ++matched;
+    }
+  }
+  return matched;
+}
+
+// A second chance for the nodes still unmatched, with the tolerance scaled by their distance from
+// the centre (Measures::scaled_tol), by brute force over the unmatched nodes of b (skipped when
+// that would take more than 4·10^6 distances). Returns the number of nodes matched.
+std::size_t match_remaining_nodes(const Diagram& a, const Diagram& b, const std::vector<int>& ca,
+                                  const std::vector<int>& cb, const Measures& m, NodeMatching& match) {
+  std::vector<int> ua, ub;
+  for (std::size_t i = 0; i < a.nodes.size(); ++i)
+    if (match.a_to_b[i] == kNone && compared(m, a, ca, i)) ua.push_back(static_cast<int>(i));
+  for (std::size_t j = 0; j < b.nodes.size(); ++j)
+    if (match.b_to_a[j] == kNone && compared(m, b, cb, j)) ub.push_back(static_cast<int>(j));
+  std::size_t matched = 0;
+  if (ua.size() * ub.size() > 4000000) return matched;
+  for (int i : ua) {
+    int best = kNone;
+    double best_d = m.scaled_tol(a.nodes[i].x, a.nodes[i].y);
+    for (int j : ub) {
+      if (match.b_to_a[j] != kNone) continue;
+      const double dd = std::hypot(a.nodes[i].x - b.nodes[j].x, a.nodes[i].y - b.nodes[j].y);
+      if (dd <= best_d) best = j, best_d = dd;
+    }
+    if (best != kNone) {
+      match.a_to_b[i] = best;
+      match.b_to_a[best] = i;
+      ++matched;
+    }
+  }
+  return matched;
+}
+
+// Every compared node left unmatched, of a then of b, as a difference.
+void report_unmatched_nodes(const Diagram& a, const Diagram& b, const std::vector<int>& ca,
+                            const std::vector<int>& cb, const Measures& m, const NodeMatching& match,
+                            std::vector<Difference>& differences) {
+  for (std::size_t i = 0; i < a.nodes.size(); ++i)
+    if (match.a_to_b[i] == kNone && compared(m, a, ca, i)) {
+      std::ostringstream msg;
+      msg << "node " << i << " at (" << a.nodes[i].x << ", " << a.nodes[i].y << ") only in the first graph";
+      differences.push_back({DifferenceKind::NodeOnlyInA, static_cast<int>(i), a.nodes[i].x, a.nodes[i].y, msg.str()});
+    }
+  for (std::size_t j = 0; j < b.nodes.size(); ++j)
+    if (match.b_to_a[j] == kNone && compared(m, b, cb, j)) {
+      std::ostringstream msg;
+      msg << "node " << j << " at (" << b.nodes[j].x << ", " << b.nodes[j].y << ") only in the second graph";
+      differences.push_back({DifferenceKind::NodeOnlyInB, static_cast<int>(j), b.nodes[j].x, b.nodes[j].y, msg.str()});
+    }
+}
+
+// Matched arcs: a's arcs that found a partner, which of b's arcs were taken, and a's compared arcs
+// that found none (in index order).
+struct ArcMatching {
+  std::size_t matched = 0;
+  std::vector<char> b_used;
+  std::vector<int> only_in_a;
+};
+
+// The unordered pair of an arc's end nodes (in b's numbering, kNone for infinity) as one key.
+long long end_pair_key(int u, int v) {
+  if (u > v) std::swap(u, v);
+  return (static_cast<long long>(u) + 2) * 4000000007LL + (v + 2);
+}
+
+// Arcs: each arc of a (not tiny, not beyond the horizon) to an unused arc of b with the same
+// matched end nodes and the same curve within Measures::curve_tol.
+ArcMatching match_arcs(const Diagram& a, const Diagram& b, const std::vector<int>& ca, const std::vector<int>& cb,
+                       const Measures& m, const std::vector<int>& a_to_b) {
+  // Arc ends in b's node numbering: cluster representatives, far nodes as infinity.
+  auto b_end = [&](int v) { return m.far_node(b, v) ? kNone : cb[v]; };
+  std::unordered_map<long long, std::vector<int>> b_arcs;
+  for (std::size_t j = 0; j < b.arcs.size(); ++j)
+    b_arcs[end_pair_key(b_end(b.arcs[j].from), b_end(b.arcs[j].to))].push_back(static_cast<int>(j));
+  ArcMatching out;
+  out.b_used.assign(b.arcs.size(), 0);
+  for (std::size_t i = 0; i < a.arcs.size(); ++i) {
+    const Arc& arc = a.arcs[i];
+    if (tiny(a, ca, arc, m.tol) || beyond_horizon(m, a, arc)) continue;
+    const bool from_inf = m.far_node(a, arc.from), to_inf = m.far_node(a, arc.to);
+    const int u = from_inf ? kNone : a_to_b[ca[arc.from]];
+    const int v = to_inf ? kNone : a_to_b[ca[arc.to]];
+    bool matched = false;
+    if ((from_inf || u != kNone) && (to_inf || v != kNone)) {
+      auto it = b_arcs.find(end_pair_key(u, v));
+      if (it != b_arcs.end())
+        for (int j : it->second)
+          if (!out.b_used[j] && same_curve(arc, b.arcs[j], m.curve_tol(arc))) {
+            out.b_used[j] = 1;
+            matched = true;
+            ++out.matched;
+            break;
+          }
+    }
+    if (!matched) out.only_in_a.push_back(static_cast<int>(i));
+  }
+  return out;
+}
+
+// Every compared arc left unmatched, of a then of b, as a difference at its midpoint; an arc of b
+// also names the sites whose regions it separates.
+void report_unmatched_arcs(const Diagram& a, const Diagram& b, const std::vector<int>& cb, const Measures& m,
+                           const ArcMatching& match, std::vector<Difference>& differences) {
+  for (int i : match.only_in_a) {
+    const Point mid = midpoint(a, a.arcs[i]);
+    std::ostringstream msg;
+    msg << "arc " << i << " near (" << mid.x << ", " << mid.y << ") only in the first graph";
+    differences.push_back({DifferenceKind::ArcOnlyInA, i, mid.x, mid.y, msg.str()});
+  }
+  for (std::size_t j = 0; j < b.arcs.size(); ++j) {
+    if (match.b_used[j] || tiny(b, cb, b.arcs[j], m.tol) || beyond_horizon(m, b, b.arcs[j])) continue;
+    const Arc& arc = b.arcs[j];
+    const Point mid = midpoint(b, arc);
+    std::ostringstream msg;
+    msg << "arc " << j << " near (" << mid.x << ", " << mid.y << ") only in the second graph";
+    if (arc.left_site != kNone && arc.right_site != kNone && arc.left_site < static_cast<int>(b.sites.size()) &&
+        arc.right_site < static_cast<int>(b.sites.size()))
+      msg << " (between the regions of sites '" << b.sites[arc.left_site].id << "' and '"
+          << b.sites[arc.right_site].id << "')";
+    differences.push_back({DifferenceKind::ArcOnlyInB, static_cast<int>(j), mid.x, mid.y, msg.str()});
+  }
+}
+
+// Combinatorial differences that are geometrically nothing: a degenerate input (a tangency, a
+// node of degree four) may be drawn with another topology after any rounding, yet every point of
+// the unmatched node or arc lies on the other graph. Those are dropped. (Bounded effort: with very
+// many differences the graphs differ anyway and all are kept.)
+std::vector<Difference> drop_differences_on_the_other_graph(const Diagram& a, const Diagram& b, const Measures& m,
+                                                            std::vector<Difference> differences) {
+  if (differences.empty() || differences.size() > 200) return differences;
+  std::optional<ArcProximity> near_a, near_b;  // built on first use
+  std::vector<Difference> kept;
+  for (const Difference& diff : differences) {
+    const bool in_a = diff.kind == DifferenceKind::NodeOnlyInA || diff.kind == DifferenceKind::ArcOnlyInA;
+    const Diagram& own = in_a ? a : b;
+    std::optional<ArcProximity>& other = in_a ? near_b : near_a;
+    if (!other) other.emplace(in_a ? b : a);
+    std::vector<Point> points;
+    if (diff.kind == DifferenceKind::NodeOnlyInA || diff.kind == DifferenceKind::NodeOnlyInB)
+      points.push_back({own.nodes[diff.index].x, own.nodes[diff.index].y});
+    else
+      points = arc_samples(own, own.arcs[diff.index], m.scale);
+    if (!std::all_of(points.begin(), points.end(), [&](Point q) { return other->near(q, m.scaled_tol(q.x, q.y)); }))
+      kept.push_back(diff);
+  }
+  return kept;
+}
+
 }  // namespace
 
 const char* to_string(DifferenceKind kind) {
@@ -153,211 +428,22 @@ std::string Comparison::brief() const {
 
 Comparison compare_graphs(const Diagram& a, const Diagram& b, const CompareOptions& options) {
   Comparison out;
-  // The extent: the central part of the first graph's nodes and full circles (core/extent.h) and both
-  // graphs' sites (not the second graph's nodes, which may hold the far artefacts the horizon is
-  // there to ignore).
-  const Diagram& reference = a.arcs.empty() ? b : a;
-  const Box e = graph_extent(reference);
-  double xmin = e.xmin, xmax = e.xmax, ymin = e.ymin, ymax = e.ymax;
-  if (reference.arcs.empty() && reference.nodes.empty()) xmin = ymin = INFINITY, xmax = ymax = -INFINITY;
-  for (const Diagram* d : {&a, &b})
-    for (const auto& s : d->sites) {
-      xmin = std::min(xmin, s.x), xmax = std::max(xmax, s.x);
-      ymin = std::min(ymin, s.y), ymax = std::max(ymax, s.y);
-    }
-  const double scale =
-      std::isfinite(xmax - xmin) ? std::max(std::hypot(xmax - xmin, ymax - ymin), 1e-300) : 1.0;
-  const double tol = options.relative_tolerance * scale;
-  const Point centre{0.5 * (xmin + xmax), 0.5 * (ymin + ymax)};
-  const double horizon = options.horizon * scale;
-  auto far_node = [&](const Diagram& d, int v) {
-    return v == kNone || std::hypot(d.nodes[v].x - centre.x, d.nodes[v].y - centre.y) > horizon;
-  };
-  // An arc beyond the horizon: both ends far (or at infinity) and its nearest point to the centre
-  // far too.
-  auto beyond = [&](const Diagram& d, const Arc& arc) {
-    if (!far_node(d, arc.from) || !far_node(d, arc.to)) return false;
-    const voronoi::ArcPathView p = voronoi::arc_path(arc, d.nodes);
-    double s;
-    if (p.circle) {
-      const double angle = std::atan2(centre.y - p.cy, centre.x - p.cx);
-      s = std::fmod(p.sense * (angle - p.start_angle), 6.283185307179586);
-      if (s < 0) s += 6.283185307179586;
-      if (s < p.s0 || s > p.s1) return true;  // the nearest point is an end: far
-    } else {
-      s = std::clamp((centre.x - p.ox) * p.ux + (centre.y - p.oy) * p.uy, p.s0, p.s1);
-    }
-    const Point q = p.at(s);
-    return std::hypot(q.x - centre.x, q.y - centre.y) > horizon;
-  };
-  // Nodes closer than tol within one graph are one node (a node of degree four may be recomputed
-  // as two of degree three joined by an arc shorter than the tolerance): cluster them, and ignore
-  // arcs inside a cluster.
-  auto clusters = [&](const Diagram& d) {
-    std::vector<int> parent(d.nodes.size());
-    for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<int>(i);
-    auto find = [&](int x) {
-      while (parent[x] != x) x = parent[x] = parent[parent[x]];
-      return x;
-    };
-    for (const Arc& arc : d.arcs)
-      if (arc.from != kNone && arc.to != kNone && arc.from != arc.to &&
-          std::hypot(d.nodes[arc.from].x - d.nodes[arc.to].x, d.nodes[arc.from].y - d.nodes[arc.to].y) <= tol)
-        parent[find(arc.from)] = find(arc.to);
-    std::vector<int> root(d.nodes.size());
-    for (std::size_t i = 0; i < root.size(); ++i) root[i] = find(static_cast<int>(i));
-    return root;
-  };
-  const std::vector<int> ca = clusters(a), cb = clusters(b);
-  // An arc inside one cluster that is itself that short; a long arc between two clustered nodes
-  // (a circle nearly touching itself there) is a loop through the cluster and is compared.
-  auto tiny = [&](const Diagram& d, const std::vector<int>& c, const Arc& arc) {
-    if (arc.from == kNone || arc.to == kNone || arc.from == arc.to || c[arc.from] != c[arc.to])
-      return false;
-    const voronoi::ArcPathView p = voronoi::arc_path(arc, d.nodes);
-    const double length = p.circle ? p.r * (p.s1 - p.s0) : std::abs(p.s1 - p.s0);
-    return length <= 2 * tol;
-  };
+  const Measures m = comparison_measures(a, b, options);
+  const std::vector<int> ca = node_clusters(a, m.tol), cb = node_clusters(b, m.tol);
 
-  // Nodes: each cluster of a to the nearest unused cluster of b within tol.
-  Grid grid{tol, {}};
-  for (std::size_t j = 0; j < b.nodes.size(); ++j)
-    if (cb[j] == static_cast<int>(j) && !far_node(b, static_cast<int>(j)))
-      grid.add(b.nodes[j].x, b.nodes[j].y, static_cast<int>(j));
-  std::vector<int> a_to_b(a.nodes.size(), kNone), b_to_a(b.nodes.size(), kNone);
-  for (std::size_t i = 0; i < a.nodes.size(); ++i) {
-    if (ca[i] != static_cast<int>(i) || far_node(a, static_cast<int>(i))) continue;
-    int best = kNone;
-    double best_d = tol;
-    grid.near(a.nodes[i].x, a.nodes[i].y, [&](int j) {
-      const double dd = std::hypot(a.nodes[i].x - b.nodes[j].x, a.nodes[i].y - b.nodes[j].y);
-      if (b_to_a[j] == kNone && dd <= best_d) best = j, best_d = dd;
-    });
-    if (best != kNone) {
-      a_to_b[i] = best;
-      b_to_a[best] = static_cast<int>(i);
-      ++out.nodes_matched;
-    }
-  }
-  // Far from the sites, positions of nodes and circles are sensitive to the sites' rounding in
-  // proportion to their distance (nearly tangent bisectors): unmatched nodes get a second chance
-  // with the tolerance scaled by their distance from the centre, in units of the extent.
-  auto scaled_tol = [&](double x, double y) {
-    return tol * std::max(1.0, std::hypot(x - centre.x, y - centre.y) / scale);
-  };
-  {
-    std::vector<int> ua, ub;
-    for (std::size_t i = 0; i < a.nodes.size(); ++i)
-      if (ca[i] == static_cast<int>(i) && a_to_b[i] == kNone && !far_node(a, static_cast<int>(i)))
-        ua.push_back(static_cast<int>(i));
-    for (std::size_t j = 0; j < b.nodes.size(); ++j)
-      if (cb[j] == static_cast<int>(j) && b_to_a[j] == kNone && !far_node(b, static_cast<int>(j)))
-        ub.push_back(static_cast<int>(j));
-    if (ua.size() * ub.size() <= 4000000)
-      for (int i : ua) {
-        int best = kNone;
-        double best_d = scaled_tol(a.nodes[i].x, a.nodes[i].y);
-        for (int j : ub) {
-          if (b_to_a[j] != kNone) continue;
-          const double dd = std::hypot(a.nodes[i].x - b.nodes[j].x, a.nodes[i].y - b.nodes[j].y);
-          if (dd <= best_d) best = j, best_d = dd;
-        }
-        if (best != kNone) {
-          a_to_b[i] = best;
-          b_to_a[best] = i;
-          ++out.nodes_matched;
-        }
-      }
-  }
-  for (std::size_t i = 0; i < a.nodes.size(); ++i)
-    if (ca[i] == static_cast<int>(i) && a_to_b[i] == kNone && !far_node(a, static_cast<int>(i))) {
-      std::ostringstream m;
-      m << "node " << i << " at (" << a.nodes[i].x << ", " << a.nodes[i].y << ") only in the first graph";
-      out.differences.push_back({DifferenceKind::NodeOnlyInA, static_cast<int>(i), a.nodes[i].x, a.nodes[i].y, m.str()});
-    }
-  for (std::size_t j = 0; j < b.nodes.size(); ++j)
-    if (cb[j] == static_cast<int>(j) && b_to_a[j] == kNone && !far_node(b, static_cast<int>(j))) {
-      std::ostringstream m;
-      m << "node " << j << " at (" << b.nodes[j].x << ", " << b.nodes[j].y << ") only in the second graph";
-      out.differences.push_back({DifferenceKind::NodeOnlyInB, static_cast<int>(j), b.nodes[j].x, b.nodes[j].y, m.str()});
-    }
+  // Nodes: each cluster of a to the nearest unused cluster of b, within tol, then within the
+  // tolerance scaled by the distance from the centre.
+  NodeMatching nodes{std::vector<int>(a.nodes.size(), kNone), std::vector<int>(b.nodes.size(), kNone)};
+  out.nodes_matched += match_nodes_nearby(a, b, ca, cb, m, nodes);
+  out.nodes_matched += match_remaining_nodes(a, b, ca, cb, m, nodes);
+  report_unmatched_nodes(a, b, ca, cb, m, nodes, out.differences);
 
-  // Arcs: by their end nodes (in b's numbering, unordered) and curve.
-  auto key = [](int u, int v) {
-    if (u > v) std::swap(u, v);
-    return (static_cast<long long>(u) + 2) * 4000000007LL + (v + 2);
-  };
-  std::unordered_map<long long, std::vector<int>> b_arcs;
-  // A curve's own numbers are known in proportion to their size (see scaled_tol).
-  auto curve_tol = [&](const Arc& arc) {
-    if (const auto* c = std::get_if<Circle>(&arc.curve))
-      return tol * std::max(1.0, (std::hypot(c->cx - centre.x, c->cy - centre.y) + c->r) / scale);
-    return tol;
-  };
-  // Arc ends in b's node numbering: cluster representatives, far nodes as infinity.
-  auto b_end = [&](int v) { return far_node(b, v) ? kNone : cb[v]; };
-  for (std::size_t j = 0; j < b.arcs.size(); ++j)
-    b_arcs[key(b_end(b.arcs[j].from), b_end(b.arcs[j].to))].push_back(static_cast<int>(j));
-  std::vector<char> b_used(b.arcs.size(), 0);
-  for (std::size_t i = 0; i < a.arcs.size(); ++i) {
-    const Arc& arc = a.arcs[i];
-    if (tiny(a, ca, arc) || beyond(a, arc)) continue;
-    const bool from_inf = far_node(a, arc.from), to_inf = far_node(a, arc.to);
-    const int u = from_inf ? kNone : a_to_b[ca[arc.from]];
-    const int v = to_inf ? kNone : a_to_b[ca[arc.to]];
-    bool matched = false;
-    if ((from_inf || u != kNone) && (to_inf || v != kNone)) {
-      auto it = b_arcs.find(key(u, v));
-      if (it != b_arcs.end())
-        for (int j : it->second)
-          if (!b_used[j] && same_curve(arc, b.arcs[j], curve_tol(arc))) {
-            b_used[j] = 1;
-            matched = true;
-            ++out.arcs_matched;
-            break;
-          }
-    }
-    if (!matched) {
-      const Point m = midpoint(a, arc);
-      std::ostringstream msg;
-      msg << "arc " << i << " near (" << m.x << ", " << m.y << ") only in the first graph";
-      out.differences.push_back({DifferenceKind::ArcOnlyInA, static_cast<int>(i), m.x, m.y, msg.str()});
-    }
-  }
-  for (std::size_t j = 0; j < b.arcs.size(); ++j) {
-    if (b_used[j] || tiny(b, cb, b.arcs[j]) || beyond(b, b.arcs[j])) continue;
-    const Arc& arc = b.arcs[j];
-    const Point m = midpoint(b, arc);
-    std::ostringstream msg;
-    msg << "arc " << j << " near (" << m.x << ", " << m.y << ") only in the second graph";
-    if (arc.left_site != kNone && arc.right_site != kNone && arc.left_site < static_cast<int>(b.sites.size()) &&
-        arc.right_site < static_cast<int>(b.sites.size()))
-      msg << " (between the regions of sites '" << b.sites[arc.left_site].id << "' and '"
-          << b.sites[arc.right_site].id << "')";
-    out.differences.push_back({DifferenceKind::ArcOnlyInB, static_cast<int>(j), m.x, m.y, msg.str()});
-  }
-  // Combinatorial differences that are geometrically nothing: a degenerate input (a tangency, a
-  // node of degree four) may be drawn with another topology after any rounding, yet every point of
-  // the unmatched node or arc lies on the other graph. Those are dropped. (Bounded effort: with very
-  // many differences the graphs differ anyway and all are kept.)
-  if (!out.differences.empty() && out.differences.size() <= 200) {
-    std::optional<ArcProximity> near_a, near_b;  // built on first use
-    std::vector<Difference> kept;
-    for (const Difference& diff : out.differences) {
-      const bool in_a = diff.kind == DifferenceKind::NodeOnlyInA || diff.kind == DifferenceKind::ArcOnlyInA;
-      const Diagram& own = in_a ? a : b;
-      std::optional<ArcProximity>& other = in_a ? near_b : near_a;
-      if (!other) other.emplace(in_a ? b : a);
-      std::vector<Point> points;
-      if (diff.kind == DifferenceKind::NodeOnlyInA || diff.kind == DifferenceKind::NodeOnlyInB)
-        points.push_back({own.nodes[diff.index].x, own.nodes[diff.index].y});
-      else
-        points = arc_samples(own, own.arcs[diff.index], scale);
-      if (!std::all_of(points.begin(), points.end(), [&](Point q) { return other->near(q, scaled_tol(q.x, q.y)); }))
-        kept.push_back(diff);
-    }
-    out.differences = std::move(kept);
-  }
+  // Arcs: by their matched end nodes and their curve.
+  const ArcMatching arcs = match_arcs(a, b, ca, cb, m, nodes.a_to_b);
+  out.arcs_matched = arcs.matched;
+  report_unmatched_arcs(a, b, cb, m, arcs, out.differences);
+
+  out.differences = drop_differences_on_the_other_graph(a, b, m, std::move(out.differences));
   return out;
 }
 
