@@ -4,11 +4,11 @@
 // A cleaned map knows which sensor owns each face, but its arcs are fitted to staircases: no exact
 // solution exists, so every exact test of recognize() becomes a least-squares problem:
 //   - at each junction of ≥ 3 sensors, the composition of the inversions around it (in the
-//     junction's own frame, node_frame.h) has, for exact data, a circle of fixed points through the
-//     site (Lemma 5); for noisy data the two real forms of its fixed-point equation are only nearly
-//     proportional, and their principal direction (the dominant singular vector) is taken as the
-//     solution circle. Junctions of even degree give a fixed point instead, when the composition is
-//     not the identity.
+//     junction's own frame) has, for exact data, a circle of fixed points through the site
+//     (Lemma 5, mobius/node_constraint.h); for noisy data the two real forms of its fixed-point
+//     equation are only nearly proportional, and their principal direction is taken as the
+//     solution circle (least_squares_fixed_circle). Junctions of even degree give a fixed point
+//     instead, when the composition is not the identity (other_fixed_point).
 //   - a sensor's position is the least-squares intersection of all its junctions' solution circles
 //     and points (Gauss–Newton from every pairwise intersection and the cell's centroid; the start
 //     with the smallest residual wins — the "candidate with the smaller residual").
