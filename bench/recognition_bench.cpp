@@ -113,7 +113,7 @@ int main(int argc, char** argv) {
       if (!cache_file.empty()) covmap::bench::save_graph(d, cache_file);
     }
     d.sites.clear();
-    d.faces.clear();
+    clear_faces(d);
     covmap::recognition::RecognitionOptions plain;
     plain.voronoi_check = false;
     covmap::recognition::Reconstruction r1;

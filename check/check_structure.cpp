@@ -154,8 +154,25 @@ void check_faces(CheckContext& c) {
             strf("face %d: site index %d out of range", f, face.site), ids);
       continue;
     }
-    for (std::size_t b = 0; b < face.boundaries.size(); ++b) {
-      const auto cycle = face.boundaries[b];
+    if (face.cycles_begin < 0 || face.cycles_end < face.cycles_begin ||
+        face.cycles_end > static_cast<int>(d.cycles.size())) {
+      c.add(ViolationKind::BadIndex, kNowhere,
+            strf("face %d: cycle range [%d, %d) out of range (%zu cycles)", f, face.cycles_begin, face.cycles_end,
+                 d.cycles.size()),
+            ids);
+      continue;
+    }
+    const FaceCycles cycles = face_cycles(d, face);
+    for (std::size_t b = 0; b < cycles.size(); ++b) {
+      const CycleRange& range = d.cycles[face.cycles_begin + b];
+      if (range.begin < 0 || range.end < range.begin || range.end > static_cast<int>(d.half_arcs.size())) {
+        c.add(ViolationKind::BadIndex, kNowhere,
+              strf("face %d boundary %zu: half-arc range [%d, %d) out of range (%zu half-arcs)", f, b, range.begin,
+                   range.end, d.half_arcs.size()),
+              ids);
+        continue;
+      }
+      const auto cycle = cycles[b];
       bool indices_ok = true;
       for (const HalfArc& h : cycle) {
         if (h.arc < 0 || h.arc >= n_arcs) {

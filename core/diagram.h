@@ -8,10 +8,8 @@
 // (an unbounded end, the outside of the frame).
 #pragma once
 
-#include <array>
 #include <cstddef>
 #include <initializer_list>
-#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -76,24 +74,56 @@ struct HalfArc {
   bool forward = true;
 };
 
-// The boundary cycles of one face, read like a vector of cycles (each a span of half-arcs).
-// Plain data in use, with one twist for size: the half-arcs of faces traced together live in one
-// array that those faces share read-only (a million faces would otherwise cost two million small
-// allocations, costing more in page faults than the tracing itself). A face copies its own cycles
-// out before it is changed (push_back, mutable_cycle), so faces behave as values.
-class FaceBoundaries {
+// The boundary cycles of all faces, stored compressed in the Diagram (no vector per face: a
+// million faces would otherwise cost two million small allocations): Diagram::cycles lists the
+// cycles of face 0, then those of face 1, …; each cycle is a range of Diagram::half_arcs. Read them
+// with face_cycles(); make faces with add_face() and add_cycle().
+struct CycleRange {
+  int begin = 0;  // half-arcs [begin, end) of Diagram::half_arcs
+  int end = 0;
+};
+
+// A connected component of one site's region. Each boundary is a closed cycle of half-arcs with the
+// face on its left; for unbounded faces a cycle may pass through infinity (between an arc whose end
+// is kNone and the next arc, whose start is kNone). The first boundary is the outer one for
+// bounded faces; further boundaries are holes. An orphan face does not contain its own site.
+struct Face {
+  int site = kNone;
+  bool bounded = true;
+  bool orphan = false;
+  int cycles_begin = 0;  // its boundaries: cycles [cycles_begin, cycles_end) of Diagram::cycles
+  int cycles_end = 0;
+};
+
+struct Diagram {
+  std::vector<Site> sites;
+  std::vector<Node> nodes;
+  std::vector<Arc> arcs;
+  std::vector<Face> faces;
+  std::vector<CycleRange> cycles;  // the faces' boundary cycles, face after face
+  std::vector<HalfArc> half_arcs;  // the cycles' half-arcs (in any order: each cycle names its range)
+  // The clipping polygon (counter-clockwise) when the diagram was clipped, else empty.
+  std::vector<Point> clip;
+};
+
+// ---- Reading faces ----
+
+// One boundary cycle as a span of half-arcs.
+inline std::span<const HalfArc> cycle_half_arcs(const Diagram& d, const CycleRange& c) {
+  return {d.half_arcs.data() + c.begin, static_cast<std::size_t>(c.end - c.begin)};
+}
+
+// The boundary cycles of one face, read like a vector of spans of half-arcs:
+// `for (auto cycle : face_cycles(d, face))`, `face_cycles(d, f).front()`, `[k]`, `size()`.
+class FaceCycles {
  public:
   using Cycle = std::span<const HalfArc>;
-  using Pool = std::shared_ptr<std::vector<HalfArc>>;
 
-  FaceBoundaries() = default;
-  FaceBoundaries(std::initializer_list<std::vector<HalfArc>> cycles) {
-    for (const auto& c : cycles) push_back(c);
-  }
+  FaceCycles(const Diagram& d, const Face& f) : d_(&d), begin_(f.cycles_begin), end_(f.cycles_end) {}
 
-  std::size_t size() const { return ranges_.size(); }
-  bool empty() const { return ranges_.empty(); }
-  Cycle operator[](std::size_t k) const { return {pool_->data() + ranges_[k].begin, ranges_[k].end - ranges_[k].begin}; }
+  std::size_t size() const { return static_cast<std::size_t>(end_ - begin_); }
+  bool empty() const { return end_ == begin_; }
+  Cycle operator[](std::size_t k) const { return cycle_half_arcs(*d_, d_->cycles[begin_ + k]); }
   Cycle front() const { return (*this)[0]; }
   Cycle back() const { return (*this)[size() - 1]; }
 
@@ -102,8 +132,8 @@ class FaceBoundaries {
     using value_type = Cycle;
     using difference_type = std::ptrdiff_t;
     const_iterator() = default;
-    const_iterator(const FaceBoundaries* b, std::size_t k) : b_(b), k_(k) {}
-    Cycle operator*() const { return (*b_)[k_]; }
+    const_iterator(const Diagram* d, int k) : d_(d), k_(k) {}
+    Cycle operator*() const { return cycle_half_arcs(*d_, d_->cycles[k_]); }
     const_iterator& operator++() {
       ++k_;
       return *this;
@@ -116,94 +146,51 @@ class FaceBoundaries {
     bool operator==(const const_iterator& o) const { return k_ == o.k_; }
 
    private:
-    const FaceBoundaries* b_ = nullptr;
-    std::size_t k_ = 0;
+    const Diagram* d_ = nullptr;
+    int k_ = 0;
   };
-  const_iterator begin() const { return {this, 0}; }
-  const_iterator end() const { return {this, size()}; }
-
-  // Appends a copy of `cycle` (which may be one of this face's own cycles).
-  void push_back(Cycle cycle) {
-    const std::vector<HalfArc> copy(cycle.begin(), cycle.end());  // before make_own moves the storage
-    make_own();
-    ranges_.push_back({pool_->size(), pool_->size() + copy.size()});
-    pool_->insert(pool_->end(), copy.begin(), copy.end());
-  }
-  void push_back(const std::vector<HalfArc>& cycle) { push_back(Cycle(cycle)); }
-  // Appends [begin, end) of a shared pool (face tracing): no copy when this face already refers to
-  // that pool or to none.
-  void push_back_shared(const Pool& pool, std::size_t begin, std::size_t end) {
-    if (pool_ && pool_ != pool) {
-      push_back(Cycle(pool->data() + begin, end - begin));
-      return;
-    }
-    pool_ = pool;
-    ranges_.push_back({begin, end});
-  }
-  // Cycle k, writable (copies this face's cycles out of a shared pool first).
-  std::span<HalfArc> mutable_cycle(std::size_t k) {
-    make_own();
-    return {pool_->data() + ranges_[k].begin, ranges_[k].end - ranges_[k].begin};
-  }
+  const_iterator begin() const { return {d_, begin_}; }
+  const_iterator end() const { return {d_, end_}; }
 
  private:
-  struct Range {
-    std::size_t begin = 0, end = 0;
-  };
-  // Ranges of up to two cycles (a face and one hole) are stored inline.
-  class Ranges {
-   public:
-    std::size_t size() const { return n_; }
-    bool empty() const { return n_ == 0; }
-    const Range& operator[](std::size_t k) const { return k < 2 ? inline_[k] : more_[k - 2]; }
-    void push_back(Range r) {
-      if (n_ < 2) inline_[n_] = r;
-      else more_.push_back(r);
-      ++n_;
-    }
-
-   private:
-    std::array<Range, 2> inline_{};
-    std::vector<Range> more_;
-    std::size_t n_ = 0;
-  };
-
-  // Afterwards this face alone refers to a pool holding exactly its own cycles.
-  void make_own() {
-    if (pool_ && pool_.use_count() == 1) return;
-    auto own = std::make_shared<std::vector<HalfArc>>();
-    Ranges moved;
-    for (std::size_t k = 0; k < ranges_.size(); ++k) {
-      const Cycle c = (*this)[k];
-      moved.push_back({own->size(), own->size() + c.size()});
-      own->insert(own->end(), c.begin(), c.end());
-    }
-    pool_ = std::move(own);
-    ranges_ = std::move(moved);
-  }
-
-  Pool pool_;
-  Ranges ranges_;
+  const Diagram* d_;
+  int begin_, end_;
 };
 
-// A connected component of one site's region. Each boundary is a closed cycle of half-arcs with the
-// face on its left; for unbounded faces a cycle may pass through infinity (between an arc whose end
-// is kNone and the next arc, whose start is kNone). The first boundary is the outer one for
-// bounded faces; further boundaries are holes. An orphan face does not contain its own site.
-struct Face {
-  int site = kNone;
-  bool bounded = true;
-  bool orphan = false;
-  FaceBoundaries boundaries;
-};
+inline FaceCycles face_cycles(const Diagram& d, const Face& f) { return {d, f}; }
+inline FaceCycles face_cycles(const Diagram& d, int f) { return {d, d.faces[f]}; }
 
-struct Diagram {
-  std::vector<Site> sites;
-  std::vector<Node> nodes;
-  std::vector<Arc> arcs;
-  std::vector<Face> faces;
-  // The clipping polygon (counter-clockwise) when the diagram was clipped, else empty.
-  std::vector<Point> clip;
-};
+// ---- Making faces ----
+// Faces are appended one after the other, each followed by its cycles, so that the cycles of each
+// face stay together in Diagram::cycles.
+
+// Removes every face with its cycles.
+inline void clear_faces(Diagram& d) {
+  d.faces.clear();
+  d.cycles.clear();
+  d.half_arcs.clear();
+}
+
+// Appends a face without cycles (its cycle range is set here); returns its index.
+inline int add_face(Diagram& d, Face face) {
+  face.cycles_begin = face.cycles_end = static_cast<int>(d.cycles.size());
+  d.faces.push_back(face);
+  return static_cast<int>(d.faces.size()) - 1;
+}
+
+// Appends a copy of `cycle` to the last face.
+inline void add_cycle(Diagram& d, std::span<const HalfArc> cycle) {
+  const int begin = static_cast<int>(d.half_arcs.size());
+  d.half_arcs.insert(d.half_arcs.end(), cycle.begin(), cycle.end());
+  d.cycles.push_back({begin, static_cast<int>(d.half_arcs.size())});
+  d.faces.back().cycles_end = static_cast<int>(d.cycles.size());
+}
+
+// Appends a face with the given cycles (hand-made diagrams): add_face(d, {0, true, false}, {{{0, true}}}).
+inline int add_face(Diagram& d, Face face, std::initializer_list<std::vector<HalfArc>> cycles) {
+  const int f = add_face(d, face);
+  for (const auto& c : cycles) add_cycle(d, c);
+  return f;
+}
 
 }  // namespace covmap

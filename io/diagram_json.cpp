@@ -49,9 +49,9 @@ Out arc_json(const Arc& arc, const std::string& path) {
   return out;
 }
 
-Out face_json(const Face& face) {
+Out face_json(const Diagram& d, const Face& face) {
   Out boundaries = Out::array();
-  for (const auto& cycle : face.boundaries) {
+  for (const auto cycle : face_cycles(d, face)) {
     Out steps = Out::array();
     for (const auto& half : cycle) steps.push_back(Out::array({half.arc, half.forward}));
     boundaries.push_back(std::move(steps));
@@ -162,6 +162,7 @@ struct Reader {
       face.site = detail::index(detail::member(f, "site", at), at + ".site", diagram.sites.size(), "site", false);
       face.bounded = detail::boolean(detail::member(f, "bounded", at), at + ".bounded");
       face.orphan = detail::boolean(detail::member(f, "orphan", at), at + ".orphan");
+      add_face(diagram, face);
       const Json& cycles = detail::member(f, "boundaries", at);
       const std::string cat = at + ".boundaries";
       detail::expect_array(cycles, cat);
@@ -177,9 +178,8 @@ struct Reader {
           cycle.push_back({detail::index(h[0], step + "[0]", diagram.arcs.size(), "arc", false),
                            detail::boolean(h[1], step + "[1]")});
         }
-        face.boundaries.push_back(std::move(cycle));
+        add_cycle(diagram, cycle);
       }
-      diagram.faces.push_back(std::move(face));
     }
   }
 
@@ -214,7 +214,7 @@ void write_diagram_json(const Diagram& d, std::ostream& out) {
     nodes.push_back(Out{{"x", checked(d.nodes[i].x, at + ".x")}, {"y", checked(d.nodes[i].y, at + ".y")}});
   }
   for (std::size_t i = 0; i < d.arcs.size(); ++i) arcs.push_back(arc_json(d.arcs[i], detail::element_path("arcs", i)));
-  for (const auto& f : d.faces) faces.push_back(face_json(f));
+  for (const auto& f : d.faces) faces.push_back(face_json(d, f));
   for (std::size_t i = 0; i < d.clip.size(); ++i) {
     const std::string at = detail::element_path("clip", i);
     clip.push_back(Out::array({checked(d.clip[i].x, at + "[0]"), checked(d.clip[i].y, at + "[1]")}));

@@ -31,7 +31,7 @@ SiteRegion root_region(const Diagram& g, const LargeVector<int>& face_of_half,
   while (!queue.empty()) {
     const int f = queue.front();
     queue.pop_front();
-    for (const auto& cycle : g.faces[f].boundaries)
+    for (const auto cycle : face_cycles(g, f))
       for (const HalfArc& h : cycle) {
         const Arc& arc = g.arcs[h.arc];
         if (arc.frame || arc_used[h.arc]) continue;

@@ -54,7 +54,7 @@ std::optional<EndOffCurve> first_end_off_curve(const Diagram& g, double tol) {
 
 InputScale prepare_input(Diagram& g, const RecognitionOptions& options) {
   g.sites.clear();
-  g.faces.clear();
+  clear_faces(g);
   InputScale in;
   // Frame arcs (a clipped map's boundary) are no bisectors: they bound faces but constrain no site.
   for (const Arc& a : g.arcs)

@@ -54,7 +54,7 @@ std::vector<Constraint> face_circle_constraints(const TracedGraph& t, double mat
   const Diagram& g = t.g;
   std::vector<Constraint> cs;
   std::vector<int> seen_nodes;
-  for (const auto& cycle : g.faces[f].boundaries)
+  for (const auto cycle : face_cycles(g, f))
     for (const HalfArc& hh : cycle) {
       const Arc& arc = g.arcs[hh.arc];
       const int v = hh.forward ? arc.from : arc.to;

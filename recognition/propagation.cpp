@@ -36,29 +36,35 @@ void propagate(const TracedGraph& t, const LargeVector<char>& at_degenerate_node
   site[start] = {true, p, 1.0};
   reached[start] = 1;
   queue.assign(1, start);
-  // Memory latency bound (faces, their boundaries and the faces across are scattered at 10^6
+  // Memory latency bound (faces, their cycles, half-arcs and the faces across are scattered at 10^6
   // faces): the data of the faces a few places ahead in the queue is prefetched in stages.
   auto prefetch_face = [&](std::size_t at) {
     if (at < queue.size()) __builtin_prefetch(&g.faces[queue[at]]);
   };
+  auto prefetch_cycles = [&](std::size_t at) {
+    if (at >= queue.size()) return;
+    const Face& face = g.faces[queue[at]];
+    if (face.cycles_end > face.cycles_begin) __builtin_prefetch(&g.cycles[face.cycles_begin]);
+  };
   auto prefetch_boundary = [&](std::size_t at) {
     if (at >= queue.size()) return;
-    const auto& b = g.faces[queue[at]].boundaries;
+    const FaceCycles b = face_cycles(g, queue[at]);
     if (!b.empty()) __builtin_prefetch(b.front().data());
   };
   auto prefetch_across = [&](std::size_t at) {
     if (at >= queue.size()) return;
-    const auto& b = g.faces[queue[at]].boundaries;
+    const FaceCycles b = face_cycles(g, queue[at]);
     if (b.empty()) return;
     for (const HalfArc& h : b.front()) __builtin_prefetch(&face_of_half[half_id({h.arc, !h.forward})]);
   };
   for (std::size_t head = 0; head < queue.size(); ++head) {
-    prefetch_face(head + 12);
+    prefetch_face(head + 16);
+    prefetch_cycles(head + 12);
     prefetch_boundary(head + 8);
     prefetch_across(head + 4);
     const int f = queue[head];
     const FaceSite here = site[f];
-    for (const auto& cycle : g.faces[f].boundaries)
+    for (const auto cycle : face_cycles(g, f))
       for (const HalfArc& h : cycle) {
         const int other = face_of_half[half_id({h.arc, !h.forward})];
         if (other == kNone || reached[other] || g.arcs[h.arc].frame) continue;

@@ -14,7 +14,7 @@ StartFace start_face(const TracedGraph& t, double matrix_tolerance) {
     if (t.outside[f]) continue;
     std::vector<Constraint> found;
     std::vector<int> seen_nodes;
-    for (const auto& cycle : g.faces[f].boundaries)
+    for (const auto cycle : face_cycles(g, f))
       for (const HalfArc& hh : cycle) {
         const Arc& arc = g.arcs[hh.arc];
         const int v = hh.forward ? arc.from : arc.to;  // hh starts at v

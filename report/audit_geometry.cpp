@@ -114,20 +114,21 @@ DiagramRegions diagram_regions(const Diagram& d, const ArcSampling& s) {
       ++out.unbounded_faces;
       continue;
     }
-    if (face.boundaries.empty()) {
+    const FaceCycles cycles = face_cycles(d, face);
+    if (cycles.empty()) {
       ++out.degenerate_faces;
       continue;
     }
     io::MapPolygon polygon;
-    polygon.outer = sample_cycle(d, face.boundaries.front(), s);
+    polygon.outer = sample_cycle(d, cycles.front(), s);
     if (polygon.outer.empty()) {
       ++out.degenerate_faces;
       continue;
     }
     if (signed_area(polygon.outer) < 0) std::reverse(polygon.outer.begin(), polygon.outer.end());
     double area = signed_area(polygon.outer);
-    for (std::size_t b = 1; b < face.boundaries.size(); ++b) {
-      Ring hole = sample_cycle(d, face.boundaries[b], s);
+    for (std::size_t b = 1; b < cycles.size(); ++b) {
+      Ring hole = sample_cycle(d, cycles[b], s);
       if (hole.empty()) continue;  // a hole too small to have three distinct points has no area
       if (signed_area(hole) > 0) std::reverse(hole.begin(), hole.end());
       area += signed_area(hole);

@@ -57,7 +57,7 @@ void write_reconstruction_json(const recognition::Reconstruction& r, std::ostrea
   for (std::size_t f = 0; f < r.face_site.size(); ++f) {
     const auto& face = r.graph.faces[f];
     nlohmann::json boundary = nlohmann::json::array();
-    for (const auto& cycle : face.boundaries) {
+    for (const auto cycle : face_cycles(r.graph, face)) {
       nlohmann::json c = nlohmann::json::array();
       for (const auto& h : cycle) c.push_back({h.arc, h.forward});
       boundary.push_back(c);

@@ -200,7 +200,7 @@ std::string face_path(const Diagram& d, const Face& face, const Box& far) {
   PathText path;
   // Pieces of boundary running from infinity to infinity, from every cycle of the face.
   std::vector<std::vector<Step>> chains;
-  for (const auto& cycle : face.boundaries) {
+  for (const auto cycle : face_cycles(d, face)) {
     std::vector<Step> steps;
     for (const auto& h : cycle) steps.push_back(make_step(d, h, far));
     const auto cut = std::find_if(steps.begin(), steps.end(), [](const Step& s) { return s.to_infinity; });

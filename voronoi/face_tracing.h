@@ -6,9 +6,10 @@
 //   continuations        continuations.cpp      the half-arc after each one at the node where it ends
 //   cycle walk           cycle_walk.cpp         the closed cycles of the continuations
 //   cycle orientation    cycle_orientation.cpp  signed areas: outer cycles and holes
-//   outer faces          outer_faces.cpp        one face per outer cycle, the shared pool of half-arcs
+//   outer faces          outer_faces.cpp        one face per outer cycle, the diagram's half-arcs
 //   hole rays            hole_rays.cpp          (by geometry) a hole's face from a ray to +x
 //   hole placement       hole_placement.cpp     each hole into its face, by ray or by containment
+//   face cycles          outer_faces.cpp        each face's cycles into Diagram::cycles
 //   face index           face_index.cpp         per half-arc, its face and its successor
 // Small helpers used in the hot loops are inline here, as they were in one file before.
 #pragma once
@@ -16,7 +17,6 @@
 #include <array>
 #include <cmath>
 #include <map>
-#include <memory>
 #include <span>
 #include <unordered_map>
 #include <vector>
@@ -150,23 +150,25 @@ LargeVector<int> orient_cycles(const Diagram& d, const TracingGeometry& geometry
 // ---- Faces (outer_faces.cpp, hole_rays.cpp, hole_placement.cpp, face_index.cpp) ----
 
 // The faces being made and what placing holes needs to know about them.
+// The cycles' half-arcs are already in Diagram::half_arcs (in the order of cycle_halves); which
+// cycles each face has is written to Diagram::cycles once every hole is placed (store_face_cycles).
 struct FaceAssembly {
-  // All cycles as half-arcs, in one array that the faces share (FaceBoundaries).
-  std::shared_ptr<std::vector<HalfArc>> pool;
   std::unordered_map<int, LargeVector<int>> faces_of_site;
   std::vector<int> holes;  // cycle indices
   LargeVector<int> face_of_cycle, hole_of_cycle;
   LargeVector<double> outer_area;  // per face: |area| of its outer cycle (∞ when unbounded)
+  LargeVector<CycleRange> outer_cycle;  // per face: its outer cycle in Diagram::half_arcs
   LargeVector<char> has_outer;     // per face made from an outer cycle
   std::map<int, int> implicit_face;  // site -> its unbounded face without outer cycle
 };
 
-inline void add_cycle(const FaceAssembly& fa, Face& face, const Cycle& c) {
-  face.boundaries.push_back_shared(fa.pool, static_cast<std::size_t>(c.begin), static_cast<std::size_t>(c.end));
+// The outer cycle of face f (f < fa.outer_cycle.size(): a face made from an outer cycle).
+inline std::span<const HalfArc> outer_cycle_of(const Diagram& d, const FaceAssembly& fa, int f) {
+  return cycle_half_arcs(d, fa.outer_cycle[f]);
 }
 
-// The pool, and one face per outer cycle (counter-clockwise or through infinity); clockwise
-// cycles are listed as holes.
+// The half-arcs of all cycles into Diagram::half_arcs, and one face per outer cycle
+// (counter-clockwise or through infinity); clockwise cycles are listed as holes.
 FaceAssembly outer_faces(Diagram& d, bool by_sites, const CycleSet& cs);
 
 // The unbounded component of a site without lines has no outer cycle, only holes: one face per
@@ -182,6 +184,10 @@ std::vector<int> hole_ray_faces(const Diagram& d, bool by_sites, const TracingGe
 // contains it, else its site's unbounded face.
 void place_holes(Diagram& d, bool by_sites, const CycleSet& cs, const LargeVector<int>& cycle_of_half,
                  const std::vector<int>& ray_face, FaceAssembly& fa);
+
+// Each face's cycles into Diagram::cycles: its outer cycle first, then its holes in the order
+// place_holes() placed them. Faces added later (add_face) have none.
+void store_face_cycles(Diagram& d, const CycleSet& cs, const FaceAssembly& fa);
 
 void fill_face_index(FaceIndex& index, LargeVector<int> next_half, const LargeVector<int>& cycle_of_half,
                      const LargeVector<int>& face_of_cycle);

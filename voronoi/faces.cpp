@@ -13,11 +13,7 @@ void whole_plane_faces(Diagram& d, FaceAssembly& fa) {
   for (std::size_t s = 0; s < d.sites.size(); ++s)
     if (faces_of_site.find(static_cast<int>(s)) == faces_of_site.end() && d.arcs.empty() &&
         d.clip.empty()) {
-      Face f;
-      f.site = static_cast<int>(s);
-      f.bounded = false;
-      faces_of_site[f.site].push_back(static_cast<int>(d.faces.size()));
-      d.faces.push_back(std::move(f));
+      faces_of_site[static_cast<int>(s)].push_back(add_face(d, Face{static_cast<int>(s), false, false}));
     }
 }
 
@@ -35,9 +31,10 @@ void mark_orphans(Diagram& d, const FaceAssembly& fa) {
     for (int f : list) {
       Face& face = d.faces[f];
       const bool outer = f < static_cast<int>(has_outer.size()) && has_outer[f];
-      bool inside = !outer || cycle_contains(d, face.boundaries.front(), s);
-      for (std::size_t b = outer ? 1 : 0; inside && b < face.boundaries.size(); ++b)
-        if (cycle_contains(d, face.boundaries[b], s)) inside = false;
+      const FaceCycles cycles = face_cycles(d, face);
+      bool inside = !outer || cycle_contains(d, cycles.front(), s);
+      for (std::size_t b = outer ? 1 : 0; inside && b < cycles.size(); ++b)
+        if (cycle_contains(d, cycles[b], s)) inside = false;
       face.orphan = !inside;
     }
   }
@@ -54,7 +51,7 @@ bool cycle_contains(const Diagram& d, std::span<const HalfArc> cycle, Point p) {
 }
 
 void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
-  d.faces.clear();
+  clear_faces(d);
   const bool by_sites = labels == FaceLabels::kSites;
   const TracingGeometry geometry = tracing_geometry(d, !by_sites);
   LargeVector<int> next_half = continuations(d, by_sites, geometry, index);
@@ -63,9 +60,10 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
   FaceAssembly faces = outer_faces(d, by_sites, cycles);
   const std::vector<int> ray_face = hole_ray_faces(d, by_sites, geometry, cycles, cycle_of_half, faces);
   place_holes(d, by_sites, cycles, cycle_of_half, ray_face, faces);
+  store_face_cycles(d, cycles, faces);
   if (index) fill_face_index(*index, std::move(next_half), cycle_of_half, faces.face_of_cycle);
   if (!by_sites) {
-    if (d.faces.empty()) d.faces.push_back(Face{kNone, false, false, {}});  // no arcs: the plane
+    if (d.faces.empty()) add_face(d, Face{kNone, false, false});  // no arcs: the plane
     return;
   }
   whole_plane_faces(d, faces);

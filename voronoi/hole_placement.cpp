@@ -38,18 +38,18 @@ class PathCache {
 // (one label for all faces) would test every hole against every face.
 class FaceGrid {
  public:
-  FaceGrid(const Diagram& d, const LargeVector<double>& outer_area) : d_(d), outer_area_(outer_area) {}
+  FaceGrid(const Diagram& d, const FaceAssembly& fa) : d_(d), fa_(fa) {}
   std::vector<int> candidates(Point p) {
     if (!face_grid_) {
-      LargeVector<Box> boxes(outer_area_.size(), Box{});
-      for (std::size_t f = 0; f < outer_area_.size(); ++f)
-        for (const HalfArc& h : d_.faces[f].boundaries.front()) {
+      LargeVector<Box> boxes(fa_.outer_area.size(), Box{});
+      for (std::size_t f = 0; f < fa_.outer_area.size(); ++f)
+        for (const HalfArc& h : outer_cycle_of(d_, fa_, static_cast<int>(f))) {
           const Box b = arc_bounds(d_.arcs[h.arc], d_.nodes);
           boxes[f].add_box(b);
         }
       // Over the central nodes: a few faces reaching far out would otherwise stretch the cells
       // until every face shares one.
-      face_grid_ = make_grid(boxes.size(), [&](std::size_t f) { return boxes[f]; }, central_box(d_.nodes), outer_area_.size(),
+      face_grid_ = make_grid(boxes.size(), [&](std::size_t f) { return boxes[f]; }, central_box(d_.nodes), fa_.outer_area.size(),
                              /*max_cells=*/64);
     }
     std::vector<int> out(face_grid_->always.begin(), face_grid_->always.end());
@@ -62,7 +62,7 @@ class FaceGrid {
 
  private:
   const Diagram& d_;
-  const LargeVector<double>& outer_area_;
+  const FaceAssembly& fa_;
   std::optional<BoxGrid> face_grid_;
 };
 
@@ -92,7 +92,7 @@ int containing_face(const Diagram& d, bool by_sites, const CycleSet& cs, const L
     if (f >= static_cast<int>(fa.outer_area.size())) continue;  // hole-only faces have no outer
     if (std::find(across.begin(), across.end(), f) != across.end()) continue;
     // Innermost containing outer cycle (smallest area) wins.
-    if (contains_with(d, d.faces[f].boundaries.front(), p, cached_path) && (target < 0 || fa.outer_area[f] < fa.outer_area[target]))
+    if (contains_with(d, outer_cycle_of(d, fa, f), p, cached_path) && (target < 0 || fa.outer_area[f] < fa.outer_area[target]))
       target = f;
   }
   return target;
@@ -103,13 +103,12 @@ int containing_face(const Diagram& d, bool by_sites, const CycleSet& cs, const L
 void place_holes(Diagram& d, bool by_sites, const CycleSet& cs, const LargeVector<int>& cycle_of_half,
                  const std::vector<int>& ray_face, FaceAssembly& fa) {
   PathCache cached_path(d);
-  FaceGrid grid(d, fa.outer_area);
+  FaceGrid grid(d, fa);
   for (std::size_t hk = 0; hk < fa.holes.size(); ++hk) {
     const Cycle& hole = cs.cycles[fa.holes[hk]];
     int target = ray_face[hk];
     if (target == -2) target = containing_face(d, by_sites, cs, cycle_of_half, fa, hole, cached_path, grid);
     if (target < 0) target = implicit_face_of(d, by_sites, fa, hole.site);
-    add_cycle(fa, d.faces[target], hole);
     fa.face_of_cycle[fa.holes[hk]] = target;
   }
 }

@@ -1,6 +1,6 @@
-// Outer faces for trace_faces(): the cycles' half-arcs in one shared pool, one face per outer
-// cycle (counter-clockwise, or through infinity), the clockwise cycles listed as holes; and the
-// unbounded face of a site that has only holes.
+// Outer faces for trace_faces(): the cycles' half-arcs into the diagram, one face per outer cycle
+// (counter-clockwise, or through infinity), the clockwise cycles listed as holes; the unbounded
+// face of a site that has only holes; and, once the holes are placed, each face's cycles.
 #include <cmath>
 
 #include "core/parallel.h"
@@ -12,10 +12,9 @@ FaceAssembly outer_faces(Diagram& d, bool by_sites, const CycleSet& cs) {
   const LargeVector<Cycle>& cycles = cs.cycles;
   const LargeVector<int>& cycle_halves = cs.cycle_halves;
   FaceAssembly fa;
-  // All cycles as half-arcs, in one array that the faces share (FaceBoundaries): no allocation per
-  // face. Advised as huge pages before the first touch, filled in parallel.
-  fa.pool = std::make_shared<std::vector<HalfArc>>();
-  std::vector<HalfArc>& pool = *fa.pool;
+  // All cycles as half-arcs, in the order of cycle_halves: no allocation per face. Advised as huge
+  // pages before the first touch, filled in parallel.
+  std::vector<HalfArc>& pool = d.half_arcs;
   pool.reserve(cycle_halves.size());
   advise_huge_pages(pool.data(), pool.capacity() * sizeof(HalfArc));
   pool.resize(cycle_halves.size());
@@ -34,17 +33,15 @@ FaceAssembly outer_faces(Diagram& d, bool by_sites, const CycleSet& cs) {
     const Cycle& cyc = cycles[c];
     if (cyc.through_infinity || cyc.area2 > 0) {
       fa.outer_area.push_back(cyc.through_infinity ? INFINITY : cyc.area2);
+      fa.outer_cycle.push_back({cyc.begin, cyc.end});
       fa.face_of_cycle[c] = static_cast<int>(d.faces.size());
       fa.faces_of_site[cyc.site].push_back(static_cast<int>(d.faces.size()));
-      d.faces.push_back(Face{by_sites ? cyc.site : kNone, !cyc.through_infinity, false, {}});
+      d.faces.push_back(Face{by_sites ? cyc.site : kNone, !cyc.through_infinity, false});
     } else {
       fa.hole_of_cycle[c] = static_cast<int>(fa.holes.size());
       fa.holes.push_back(static_cast<int>(c));
     }
   }
-  // Each face's outer cycle (sequential: the faces share one reference count).
-  for (std::size_t c = 0; c < cycles.size(); ++c)
-    if (fa.face_of_cycle[c] >= 0) add_cycle(fa, d.faces[fa.face_of_cycle[c]], cycles[c]);
   fa.has_outer.assign(d.faces.size(), 1);
   return fa;
 }
@@ -56,10 +53,22 @@ int implicit_face_of(Diagram& d, bool by_sites, FaceAssembly& fa, int site) {
     f.site = by_sites ? site : kNone;
     f.bounded = false;
     fa.faces_of_site[site].push_back(static_cast<int>(d.faces.size()));
-    d.faces.push_back(std::move(f));
+    d.faces.push_back(f);
     it = fa.implicit_face.emplace(site, static_cast<int>(d.faces.size()) - 1).first;
   }
   return it->second;
+}
+
+void store_face_cycles(Diagram& d, const CycleSet& cs, const FaceAssembly& fa) {
+  // A counting sort of the cycles by face; every cycle has a face once the holes are placed.
+  const std::size_t n_faces = d.faces.size();
+  LargeVector<int> at(n_faces + 1, 0);
+  for (std::size_t c = 0; c < cs.cycles.size(); ++c) ++at[fa.face_of_cycle[c] + 1];
+  for (std::size_t f = 0; f < n_faces; ++f) at[f + 1] += at[f];
+  for (std::size_t f = 0; f < n_faces; ++f) d.faces[f].cycles_begin = at[f], d.faces[f].cycles_end = at[f + 1];
+  d.cycles.resize(cs.cycles.size());
+  for (std::size_t f = 0; f < fa.outer_cycle.size(); ++f) d.cycles[at[f]++] = fa.outer_cycle[f];
+  for (int c : fa.holes) d.cycles[at[fa.face_of_cycle[c]]++] = {cs.cycles[c].begin, cs.cycles[c].end};
 }
 
 }  // namespace covmap::voronoi::tracing

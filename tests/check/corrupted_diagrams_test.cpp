@@ -49,7 +49,7 @@ TEST(CorruptedDiagrams, ReversedCircleSwapsSides) {
   // Clockwise travel puts the outside (B) on the left, but the arc still names A on the left.
   Diagram d = two_weighted_sites();
   d.arcs[0].ccw = false;
-  d.faces.clear();
+  clear_faces(d);
   const CheckReport r = check_diagram(d);
   const auto v = first_of(r, ViolationKind::ArcSidesSwapped);
   ASSERT_TRUE(v) << r.brief();
@@ -108,7 +108,7 @@ TEST(CorruptedDiagrams, ShiftedLineIsOffBisector) {
 
 TEST(CorruptedDiagrams, DeletedSegmentLeavesBoundaryUncovered) {
   Diagram d = rhombus();
-  d.faces.clear();
+  clear_faces(d);
   d.arcs.erase(d.arcs.begin());  // the segment y = 0 from (-4/3, 0) to (4/3, 0)
   const CheckReport r = check_diagram(d);
   ASSERT_GT(r.count(ViolationKind::BoundaryNotCovered), 0u) << r.brief();
@@ -148,7 +148,7 @@ TEST(CorruptedDiagrams, DeletedLatticeSegment) {
 TEST(CorruptedDiagrams, AddedCrossingArc) {
   // A piece of the s2|s3 bisector x = 0 from (0,-0.5) to (0,0.5) crosses the segment at (0,0).
   Diagram d = rhombus();
-  d.faces.clear();
+  clear_faces(d);
   d.nodes.push_back(Node{0, -0.5});
   d.nodes.push_back(Node{0, 0.5});
   d.arcs.push_back(line_arc(2, 3, Line{0, -0.5, 0, 1}, 2, 3));
@@ -162,7 +162,7 @@ TEST(CorruptedDiagrams, AddedCrossingArc) {
 
 TEST(CorruptedDiagrams, DuplicatedArcOverlaps) {
   Diagram d = rhombus();
-  d.faces.clear();
+  clear_faces(d);
   d.arcs.push_back(d.arcs[0]);
   const CheckReport r = check_diagram(d);
   const auto v = first_of(r, ViolationKind::ArcsCross);
@@ -252,7 +252,7 @@ TEST(CorruptedDiagrams, FaceOnWrongSide) {
 
 TEST(CorruptedDiagrams, FaceCycleBroken) {
   Diagram d = rhombus();
-  d.faces[0].boundaries.mutable_cycle(0)[1] = HalfArc{4, true};  // R's lower ray: right start, but site 3's
+  d.half_arcs[d.cycles[d.faces[0].cycles_begin].begin + 1] = HalfArc{4, true};  // R's lower ray: right start, but site 3's
   const CheckReport r = check_diagram(d);
   const auto v = first_of(r, ViolationKind::FaceInconsistent);
   ASSERT_TRUE(v) << r.brief();

@@ -39,8 +39,8 @@ inline Diagram two_equal_sites() {
   Diagram d;
   d.sites = {site(0, 0), site(2, 0)};
   d.arcs = {line_arc(kNone, kNone, Line{1, 0, 0, 1}, 0, 1)};
-  d.faces = {Face{0, false, false, {{HalfArc{0, true}}}},
-             Face{1, false, false, {{HalfArc{0, false}}}}};
+  add_face(d, {0, false, false}, {{HalfArc{0, true}}});
+  add_face(d, {1, false, false}, {{HalfArc{0, false}}});
   return d;
 }
 
@@ -53,8 +53,8 @@ inline Diagram two_weighted_sites() {
   Diagram d;
   d.sites = {site(0, 0, 1), site(3, 0, 2)};
   d.arcs = {circle_arc(kNone, kNone, Circle{-1, 0, 2}, true, 0, 1)};
-  d.faces = {Face{0, true, false, {{HalfArc{0, true}}}},
-             Face{1, false, false, {{HalfArc{0, false}}}}};
+  add_face(d, {0, true, false}, {{HalfArc{0, true}}});
+  add_face(d, {1, false, false}, {{HalfArc{0, false}}});
   return d;
 }
 
@@ -104,7 +104,7 @@ inline Diagram rhombus() {
             line_arc(1, kNone, Line{k, 0, 1, -3}, 3, 0)};
   // Site 1's face (above): the segment forward, R's upper ray forward, then through infinity to
   // L's upper ray backwards. Its arcs name site 1 on the left, left, right respectively.
-  d.faces = {Face{1, false, false, {{HalfArc{0, true}, HalfArc{3, true}, HalfArc{1, false}}}}};
+  add_face(d, {1, false, false}, {{HalfArc{0, true}, HalfArc{3, true}, HalfArc{1, false}}});
   return d;
 }
 

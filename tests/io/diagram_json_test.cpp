@@ -50,15 +50,16 @@ void expect_identical(const Diagram& a, const Diagram& b) {
   ASSERT_EQ(a.faces.size(), b.faces.size());
   for (std::size_t i = 0; i < a.faces.size(); ++i) {
     const auto &f = a.faces[i], &g = b.faces[i];
+    const FaceCycles fc = face_cycles(a, f), gc = face_cycles(b, g);
     EXPECT_EQ(f.site, g.site);
     EXPECT_EQ(f.bounded, g.bounded);
     EXPECT_EQ(f.orphan, g.orphan);
-    ASSERT_EQ(f.boundaries.size(), g.boundaries.size()) << "face " << i;
-    for (std::size_t c = 0; c < f.boundaries.size(); ++c) {
-      ASSERT_EQ(f.boundaries[c].size(), g.boundaries[c].size());
-      for (std::size_t k = 0; k < f.boundaries[c].size(); ++k) {
-        EXPECT_EQ(f.boundaries[c][k].arc, g.boundaries[c][k].arc);
-        EXPECT_EQ(f.boundaries[c][k].forward, g.boundaries[c][k].forward);
+    ASSERT_EQ(fc.size(), gc.size()) << "face " << i;
+    for (std::size_t c = 0; c < fc.size(); ++c) {
+      ASSERT_EQ(fc[c].size(), gc[c].size());
+      for (std::size_t k = 0; k < fc[c].size(); ++k) {
+        EXPECT_EQ(fc[c][k].arc, gc[c][k].arc);
+        EXPECT_EQ(fc[c][k].forward, gc[c][k].forward);
       }
     }
   }
@@ -80,9 +81,9 @@ Diagram sample() {
       {kNone, 0, Line{3, 3, 1, 0}, true, 1, 0, false},                      // ray from infinity
       {1, 2, Line{0, 0, 1, 1}, true, 2, kNone, true},                       // frame
   };
-  d.faces = {{0, true, false, {{{0, true}}}},
-             {1, false, false, {{{0, false}}, {{3, false}, {4, true}}}},
-             {2, true, true, {{{1, true}, {5, false}, {3, true}}}}};
+  add_face(d, {0, true, false}, {{{0, true}}});
+  add_face(d, {1, false, false}, {{{0, false}}, {{3, false}, {4, true}}});
+  add_face(d, {2, true, true}, {{{1, true}, {5, false}, {3, true}}});
   d.clip = {{-10, -10}, {10, -10}, {10, 10}, {-10, 0.1}};
   return d;
 }

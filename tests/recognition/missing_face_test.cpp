@@ -50,8 +50,8 @@ struct Instance {
 // distinct other sites whose common node lies inside f.
 std::optional<Instance> without_face(const Diagram& d, const std::vector<Site>& sites, int face) {
   const Face& f = d.faces[face];
-  if (!f.orphan || f.boundaries.size() != 1 || f.boundaries[0].size() != 3) return std::nullopt;
-  const auto& cycle = f.boundaries[0];
+  if (!f.orphan || face_cycles(d, f).size() != 1 || face_cycles(d, f)[0].size() != 3) return std::nullopt;
+  const auto cycle = face_cycles(d, f)[0];
   std::vector<int> corners, neighbours;
   for (const HalfArc& h : cycle) {
     const Arc& a = d.arcs[h.arc];
@@ -72,7 +72,7 @@ std::optional<Instance> without_face(const Diagram& d, const std::vector<Site>& 
   if (centre == kNone) return std::nullopt;
   Diagram g = d;
   g.sites.clear();
-  g.faces.clear();
+  clear_faces(g);
   const int n = static_cast<int>(g.nodes.size());
   g.nodes.push_back(three.nodes[centre]);
   std::vector<char> drop(g.arcs.size(), 0);

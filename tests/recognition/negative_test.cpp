@@ -104,7 +104,7 @@ TEST(Negative, MergedFacesAreRejected) {
     }
     if (victim == kNone) continue;
     d.arcs.erase(d.arcs.begin() + victim);
-    d.faces.clear();
+    clear_faces(d);
     ++tried;
     const Reconstruction r = recognize(d);
     EXPECT_FALSE(r.bisector_graph) << "trial " << trial;

@@ -70,8 +70,9 @@ int run_round_trips(int roots, int trials, std::uint64_t seed) {
     if (!r.region) continue;
     // The true site of the root face lies in the region (up to rounding of the bounds).
     const auto& face = r.graph.faces[r.region->face];
-    if (!face.boundaries.empty() && !face.boundaries.front().empty()) {
-      const int truth = owner_on_left(d, face.boundaries.front().front());
+    const FaceCycles cycles = face_cycles(d, face);
+    if (!cycles.empty() && !cycles.front().empty()) {
+      const int truth = owner_on_left(d, cycles.front().front());
       EXPECT_NE(truth, kNone);
       if (truth == kNone) continue;
       const mobius::Complex z(sites[truth].x, sites[truth].y);

@@ -94,8 +94,9 @@ TEST(RoundTrip, OrphanRichDiagramsAreRecovered) {
     // Each traced face's site is the one the engine labelled it with (matched by position).
     for (std::size_t f = 0; f < r.graph.faces.size(); ++f) {
       const auto& face = r.graph.faces[f];
-      if (face.boundaries.empty() || face.boundaries.front().empty() || r.face_site[f] == kNone) continue;
-      const HalfArc h = face.boundaries.front().front();
+      const FaceCycles cycles = face_cycles(r.graph, face);
+      if (cycles.empty() || cycles.front().empty() || r.face_site[f] == kNone) continue;
+      const HalfArc h = cycles.front().front();
       const Arc& a = d.arcs[h.arc];
       const int truth = h.forward ? a.left_site : a.right_site;
       const Site& got = r.sites[r.face_site[f]];

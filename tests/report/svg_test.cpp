@@ -20,7 +20,8 @@ Diagram apollonius_pair(const std::string& first_id = "a") {
   Diagram d;
   d.sites = {{first_id, 0, 0, 1}, {"b", 3, 0, 2}};
   d.arcs = {{kNone, kNone, Circle{-1, 0, 2}, true, 0, 1, false}};
-  d.faces = {{0, true, false, {{{0, true}}}}, {1, false, false, {{{0, false}}}}};
+  add_face(d, {0, true, false}, {{{0, true}}});
+  add_face(d, {1, false, false}, {{{0, false}}});
   return d;
 }
 
@@ -31,9 +32,9 @@ Diagram three_in_a_row() {
   d.sites = {{"w", 0, 0, 1}, {"m", 2, 0, 1}, {"e", 4, 0, 1}};
   d.arcs = {{kNone, kNone, Line{1, 0, 0, 1}, true, 0, 1, false},
             {kNone, kNone, Line{3, 0, 0, 1}, true, 1, 2, false}};
-  d.faces = {{0, false, false, {{{0, true}}}},
-             {1, false, false, {{{0, false}}, {{1, true}}}},
-             {2, false, false, {{{1, false}}}}};
+  add_face(d, {0, false, false}, {{{0, true}}});
+  add_face(d, {1, false, false}, {{{0, false}}, {{1, true}}});
+  add_face(d, {2, false, false}, {{{1, false}}});
   return d;
 }
 
@@ -48,9 +49,9 @@ Diagram three_wedges() {
   d.arcs = {{0, kNone, Line{0, 0, 0.5, s}, true, 1, 0, false},     // between p and q, left q
             {0, kNone, Line{0, 0, -1, 0}, true, 2, 1, false},      // between q and r, left r
             {0, kNone, Line{0, 0, 0.5, -s}, true, 0, 2, false}};   // between r and p, left p
-  d.faces = {{0, false, false, {{{2, true}, {0, false}}}},
-             {1, false, false, {{{0, true}, {1, false}}}},
-             {2, false, false, {{{1, true}, {2, false}}}}};
+  add_face(d, {0, false, false}, {{{2, true}, {0, false}}});
+  add_face(d, {1, false, false}, {{{0, true}, {1, false}}});
+  add_face(d, {2, false, false}, {{{1, true}, {2, false}}});
   return d;
 }
 
@@ -163,7 +164,9 @@ TEST(Svg, ArcWithNodesGetsLargeArcAndSweepFlags) {
   // Split the circle at (1,0) and (-1,2): a quarter counter-clockwise, three quarters onwards.
   d.nodes = {{1, 0}, {-1, 2}};
   d.arcs = {{0, 1, Circle{-1, 0, 2}, true, 0, 1, false}, {1, 0, Circle{-1, 0, 2}, true, 0, 1, false}};
-  d.faces = {{0, true, false, {{{0, true}, {1, true}}}}, {1, false, false, {{{1, false}, {0, false}}}}};
+  clear_faces(d);
+  add_face(d, {0, true, false}, {{{0, true}, {1, true}}});
+  add_face(d, {1, false, false}, {{{1, false}, {0, false}}});
   const auto faces = face_paths(render(d));
   ASSERT_EQ(faces.size(), 2u);
   EXPECT_EQ(faces[0], "M1 0 A2 2 0 0 1 -1 2 A2 2 0 1 1 1 0 Z");
@@ -220,7 +223,7 @@ TEST(Svg, EscapesIdsAndLabelsOnlySmallSets) {
 
 TEST(Svg, WithoutFacesDrawsArcsOnly) {
   auto d = apollonius_pair();
-  d.faces.clear();
+  clear_faces(d);
   const std::string svg = render(d);
   expect_well_formed(svg);
   EXPECT_TRUE(face_paths(svg).empty());

@@ -69,9 +69,10 @@ TEST_P(ClipChecked, CheckerAndOwnershipAgree) {
         }
         int count = 0, face_site = kNone;
         for (const Face& f : clipped.faces) {
-          bool in = cycle_contains(clipped, f.boundaries.front(), p);
-          for (std::size_t b = 1; b < f.boundaries.size(); ++b)
-            if (cycle_contains(clipped, f.boundaries[b], p)) in = false;
+          const FaceCycles cycles = face_cycles(clipped, f);
+          bool in = cycle_contains(clipped, cycles.front(), p);
+          for (std::size_t b = 1; b < cycles.size(); ++b)
+            if (cycle_contains(clipped, cycles[b], p)) in = false;
           if (in) ++count, face_site = f.site;
         }
         ASSERT_EQ(count, 1) << "seed " << seed << " at (" << p.x << ", " << p.y << ")";

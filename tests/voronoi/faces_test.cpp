@@ -101,8 +101,8 @@ bool in_polygon(const std::vector<Point>& poly, Point p) {
 // clockwise it is a hole. The polygon's orientation tells them apart.
 bool in_face(const Diagram& d, const Face& f, Point p, double far) {
   bool inside = true;
-  for (std::size_t b = 0; b < f.boundaries.size(); ++b) {
-    const auto poly = flatten(d, f.boundaries[b], far);
+  for (std::size_t b = 0; b < face_cycles(d, f).size(); ++b) {
+    const auto poly = flatten(d, face_cycles(d, f)[b], far);
     double area = 0;
     for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++)
       area += (poly[j].x * poly[i].y - poly[i].x * poly[j].y);
@@ -167,7 +167,7 @@ TEST(Faces, NestedRegionsGiveHolesAndOrphans) {
     EXPECT_FALSE(f.orphan);
     if (f.site == 0) {
       EXPECT_FALSE(f.bounded);
-      holes += static_cast<int>(f.boundaries.size());
+      holes += static_cast<int>(face_cycles(d, f).size());
     } else {
       EXPECT_TRUE(f.bounded);
     }
@@ -186,7 +186,7 @@ std::vector<std::vector<std::vector<std::pair<int, bool>>>> canonical_faces(cons
   std::vector<std::vector<std::vector<std::pair<int, bool>>>> out;
   for (const Face& f : d.faces) {
     std::vector<std::vector<std::pair<int, bool>>> cycles;
-    for (const auto& b : f.boundaries) {
+    for (const auto b : face_cycles(d, f)) {
       std::vector<std::pair<int, bool>> c;
       for (const HalfArc& h : b) c.emplace_back(h.arc, h.forward);
       std::sort(c.begin(), c.end());
@@ -241,7 +241,7 @@ TEST(FacesByGeometryLarge, MatchLabelledFacesWithTheirIndex) {
   FaceIndex index;
   trace_faces(geometric, FaceLabels::kGeometry, &index);
   std::size_t holes = 0;
-  for (const Face& f : geometric.faces) holes += f.boundaries.size() > 1 ? f.boundaries.size() - 1 : 0;
+  for (const Face& f : geometric.faces) holes += std::max<std::size_t>(face_cycles(geometric, f).size(), 1) - 1;
   EXPECT_GT(holes * geometric.arcs.size(), std::size_t{1} << 22) << holes << " holes: the hole-ray grid should be exercised";
   ASSERT_EQ(canonical_faces(labelled).size(), canonical_faces(geometric).size());
   EXPECT_TRUE(canonical_faces(labelled) == canonical_faces(geometric));
@@ -249,7 +249,7 @@ TEST(FacesByGeometryLarge, MatchLabelledFacesWithTheirIndex) {
   ASSERT_EQ(index.face_of_half.size(), 2 * geometric.arcs.size());
   std::size_t on_cycles = 0;
   for (std::size_t f = 0; f < geometric.faces.size(); ++f)
-    for (const auto& cycle : geometric.faces[f].boundaries)
+    for (const auto cycle : face_cycles(geometric, f))
       for (std::size_t k = 0; k < cycle.size(); ++k) {
         const int h = 2 * cycle[k].arc + (cycle[k].forward ? 0 : 1);
         const HalfArc& n = cycle[(k + 1) % cycle.size()];
@@ -266,10 +266,10 @@ TEST(FacesByGeometryLarge, MatchLabelledFacesWithTheirIndex) {
   trace_faces(again, FaceLabels::kGeometry);
   ASSERT_EQ(again.faces.size(), geometric.faces.size());
   for (std::size_t f = 0; f < again.faces.size(); ++f) {
-    ASSERT_EQ(again.faces[f].boundaries.size(), geometric.faces[f].boundaries.size()) << "face " << f;
-    for (std::size_t b = 0; b < again.faces[f].boundaries.size(); ++b)
-      for (std::size_t k = 0; k < again.faces[f].boundaries[b].size(); ++k)
-        ASSERT_EQ(again.faces[f].boundaries[b][k].arc, geometric.faces[f].boundaries[b][k].arc) << "face " << f;
+    ASSERT_EQ(face_cycles(again, f).size(), face_cycles(geometric, f).size()) << "face " << f;
+    for (std::size_t b = 0; b < face_cycles(again, f).size(); ++b)
+      for (std::size_t k = 0; k < face_cycles(again, f)[b].size(); ++k)
+        ASSERT_EQ(face_cycles(again, f)[b][k].arc, face_cycles(geometric, f)[b][k].arc) << "face " << f;
   }
 }
 
@@ -302,27 +302,50 @@ TEST(FaceIndex, FlagsNodesOfDegreeOtherThanThree) {
 namespace covmap::voronoi {
 namespace {
 
-// FaceBoundaries share the half-arcs of faces traced together; changing one face must not change
-// another (copy on write), and a face may append one of its own cycles.
-TEST(FaceBoundaries, BehaveAsValues) {
-  Diagram d = build_diagram(testing::make_sites(Family::UniformWeights, 30, 4));
-  ASSERT_GE(d.faces.size(), 2u);
-  const std::vector<HalfArc> first(d.faces[0].boundaries[0].begin(), d.faces[0].boundaries[0].end());
-  const std::vector<HalfArc> second(d.faces[1].boundaries[0].begin(), d.faces[1].boundaries[0].end());
-  Face copy = d.faces[0];
-  copy.boundaries.mutable_cycle(0)[0] = HalfArc{12345, false};
-  EXPECT_EQ(d.faces[0].boundaries[0][0].arc, first[0].arc) << "the original is untouched";
-  EXPECT_EQ(d.faces[1].boundaries[0][0].arc, second[0].arc) << "so is every other face";
-  EXPECT_EQ(copy.boundaries[0][0].arc, 12345);
-  copy.boundaries.push_back(copy.boundaries[0]);  // its own cycle, appended
-  ASSERT_EQ(copy.boundaries.size(), 2u);
-  EXPECT_TRUE(std::equal(copy.boundaries[0].begin(), copy.boundaries[0].end(), copy.boundaries[1].begin(),
-                         [](const HalfArc& a, const HalfArc& b) { return a.arc == b.arc && a.forward == b.forward; }));
-  d.faces[1].boundaries.push_back(std::vector<HalfArc>{{7, true}, {8, false}});
-  EXPECT_EQ(d.faces[1].boundaries.size(), 2u);
-  EXPECT_EQ(d.faces[1].boundaries[1][1].arc, 8);
-  EXPECT_EQ(d.faces[0].boundaries.size(), 1u);
-  EXPECT_EQ(d.faces[0].boundaries[0].size(), first.size());
+// Traced faces store their cycles face after face (each face's range starts where the previous
+// one ends), and every half-arc of Diagram::half_arcs belongs to exactly one cycle.
+TEST(FaceStorage, TracedFacesTileTheirCyclesAndHalfArcs) {
+  for (int seed = 1; seed <= 5; ++seed) {
+    const Diagram d = build_diagram(testing::make_sites(Family::UniformWeights, 40, seed));
+    int next_cycle = 0;
+    for (const Face& f : d.faces) {
+      EXPECT_EQ(f.cycles_begin, next_cycle) << "seed " << seed;
+      EXPECT_GE(f.cycles_end, f.cycles_begin);
+      next_cycle = f.cycles_end;
+    }
+    EXPECT_EQ(next_cycle, static_cast<int>(d.cycles.size())) << "seed " << seed;
+    std::vector<int> covered(d.half_arcs.size(), 0);
+    for (const CycleRange& c : d.cycles) {
+      ASSERT_TRUE(0 <= c.begin && c.begin < c.end && c.end <= static_cast<int>(d.half_arcs.size()));
+      for (int k = c.begin; k < c.end; ++k) ++covered[k];
+    }
+    EXPECT_EQ(std::count(covered.begin(), covered.end(), 1), static_cast<std::ptrdiff_t>(covered.size())) << "seed " << seed;
+  }
+}
+
+// Faces made by hand (add_face, add_cycle) read back as given.
+TEST(FaceStorage, HandMadeFacesReadBack) {
+  Diagram d;
+  add_face(d, Face{0, true, false}, {{{3, true}, {4, false}}, {{5, true}}});
+  add_face(d, Face{1, false, true});
+  add_face(d, Face{2, false, false});
+  add_cycle(d, std::vector<HalfArc>{{7, false}});
+  ASSERT_EQ(d.faces.size(), 3u);
+  EXPECT_EQ(d.faces[1].site, 1);
+  EXPECT_TRUE(d.faces[1].orphan);
+  ASSERT_EQ(face_cycles(d, 0).size(), 2u);
+  EXPECT_EQ(face_cycles(d, 0)[0].size(), 2u);
+  EXPECT_EQ(face_cycles(d, 0)[0][1].arc, 4);
+  EXPECT_FALSE(face_cycles(d, 0)[0][1].forward);
+  EXPECT_EQ(face_cycles(d, 0).back()[0].arc, 5);
+  EXPECT_TRUE(face_cycles(d, 1).empty());
+  ASSERT_EQ(face_cycles(d, 2).size(), 1u);
+  EXPECT_EQ(face_cycles(d, 2).front()[0].arc, 7);
+  int cycles = 0;
+  for (const auto cycle : face_cycles(d, 0)) cycles += static_cast<int>(cycle.size());
+  EXPECT_EQ(cycles, 3);
+  clear_faces(d);
+  EXPECT_TRUE(d.faces.empty() && d.cycles.empty() && d.half_arcs.empty());
 }
 
 }  // namespace
