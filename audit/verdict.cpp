@@ -5,6 +5,8 @@
 #include <limits>
 #include <sstream>
 
+#include "core/readable_numbers.h"
+
 namespace covmap::audit {
 namespace {
 
@@ -40,19 +42,19 @@ Judgement judge(const VerdictInput& in, double threshold3) {
   const double threshold = with_weight ? threshold3 : -2.0 * std::log(chi2_3_tail(threshold3));
   v.inconsistent = !(v.chi2 <= threshold);  // NaN counts as inconsistent: say so rather than pass
   // The reason: each component in metres / dB and in its own σ.
+  // Fixed notation throughout (core/readable_numbers.h): people read these sentences.
   std::ostringstream r;
-  r.precision(3);
   const double dist = std::hypot(in.dx, in.dy);
   const double pos_sigma = std::sqrt(0.5 * (cov(0, 0) + cov(1, 1)));
-  r << (v.inconsistent ? "inconsistent: " : "consistent: ") << "position off by " << dist << " m ("
-    << (pos_sigma > 0 ? dist / pos_sigma : 0.0) << " σ)";
+  r << (v.inconsistent ? "inconsistent: " : "consistent: ") << "position off by " << metres(dist) << " ("
+    << fixed(pos_sigma > 0 ? dist / pos_sigma : 0.0, 1) << " σ)";
   if (with_weight) {
     const double logw_sigma = std::sqrt(cov(2, 2));
     const double z = logw_sigma > 0 ? std::abs(*in.dlogw) / logw_sigma : 0.0;
-    if (in.alpha) r << ", power off by " << 10.0 * *in.alpha * *in.dlogw / std::log(10.0) << " dB (" << z << " σ)";
-    else r << ", weight off by a factor " << std::exp(*in.dlogw) << " (" << z << " σ)";
+    if (in.alpha) r << ", power off by " << fixed(10.0 * *in.alpha * *in.dlogw / std::log(10.0), 1) << " dB (" << fixed(z, 1) << " σ)";
+    else r << ", weight off by a factor " << fixed(std::exp(*in.dlogw), 3) << " (" << fixed(z, 1) << " σ)";
   }
-  r << "; χ² = " << v.chi2 << " with " << v.dof << " degrees of freedom, threshold " << threshold;
+  r << "; χ² = " << fixed(v.chi2, 1) << " with " << v.dof << " degrees of freedom, threshold " << fixed(threshold, 1);
   v.reason = r.str();
   return v;
 }

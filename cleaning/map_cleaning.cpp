@@ -7,6 +7,7 @@
 #include <variant>
 
 #include "cleaning/curve_fit.h"
+#include "core/readable_numbers.h"
 #include "cleaning/arc_graph.h"
 #include "cleaning/ring_labels.h"
 #include "cleaning/rings.h"
@@ -61,6 +62,13 @@ std::vector<Site> placeholder_sites(const cleaning::MapRings& map) {
 
 }  // namespace
 
+SnapTooSmall::SnapTooSmall(double snap_, double perimeter_)
+    : std::invalid_argument("the snap distance " + metres(snap_) + " is too small for cell boundaries " +
+                            metres(perimeter_) + " long in all (cleaning would take more than " +
+                            std::to_string(static_cast<long long>(tolerance::kMaxSamples)) + " samples)"),
+      snap(snap_),
+      perimeter(perimeter_) {}
+
 CleanedMap clean_coverage_map(std::span<const CoverageCell> cells, const CleaningOptions& options) {
   validate(options);
   cleaning::MapRings rings = cleaning::collect_rings(cells);
@@ -86,10 +94,7 @@ CleanedMap clean_coverage_map(std::span<const CoverageCell> cells, const Cleanin
   double perimeter = 0.0;
   for (const auto& ring : rings.rings) perimeter += ring.perimeter();
   if (!(snap > 0.0) || perimeter / (cleaning::tolerance::kSampleSpacing * snap) > cleaning::tolerance::kMaxSamples)
-    throw std::invalid_argument("clean_coverage_map: snap distance " + std::to_string(snap) +
-                                " is too small for boundaries " + std::to_string(perimeter) +
-                                " long (more than " + std::to_string(cleaning::tolerance::kMaxSamples) +
-                                " samples); give a larger CleaningOptions::snap_distance");
+    throw SnapTooSmall(snap, perimeter);
   const cleaning::BoundaryIndex index(rings.rings, snap);
   cleaning::Topology topology = cleaning::build_topology(index, options.min_chain_length * snap);
   report.junctions_merged = topology.junctions_merged;

@@ -48,6 +48,7 @@
 
 #include <cstddef>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -55,6 +56,15 @@
 #include "core/diagram.h"
 
 namespace covmap::cleaning {
+
+// Thrown when the snap distance is so small against the map that cleaning would need more than
+// tolerance::kMaxSamples boundary samples (the work grows with perimeter / snap).
+class SnapTooSmall : public std::invalid_argument {
+ public:
+  SnapTooSmall(double snap, double perimeter);
+  double snap = 0.0;       // map units
+  double perimeter = 0.0;  // of all rings, map units
+};
 
 struct CleaningOptions {
   // How far apart two cells' copies of one boundary may lie (gaps, overlaps, rounding), in map

@@ -7,23 +7,32 @@ namespace covmap::cleaning {
 
 UniformGrid::UniformGrid(double cell) : cell_(cell) {
   if (!(cell > 0.0) || !std::isfinite(cell)) throw std::invalid_argument("UniformGrid: cell size must be positive");
+  for (int level = 0; level < kLevels; ++level) level_cell_[level] = level == 0 ? cell : level_cell_[level - 1] * kLevelRatio;
 }
 
-void UniformGrid::add_point(int item, Point p) { entries_.emplace_back(key(index(p.x), index(p.y)), item); }
+void UniformGrid::add_point(int item, Point p) { entries_.emplace_back(key(0, index(p.x, 0), index(p.y, 0)), item); }
 
 void UniformGrid::add_segment(int item, Point a, Point b) {
   // Pieces no longer than a cell: each piece's bounding box spans at most 2×2 cells and contains
   // every cell the piece passes through, so their union covers the segment's cells.
   const double length = std::hypot(b.x - a.x, b.y - a.y);
-  const int pieces = std::max(1, static_cast<int>(std::ceil(length / cell_)));
+  int level = 0;
+  while (level + 1 < kLevels && !(length <= kMaxCellsPerSegment * level_cell_[level])) ++level;
+  levels_used_ |= 1u << level;
+  if (level == kLevels - 1) {  // longer than any finite map: one cell that every query visits
+    entries_.emplace_back(key(level, 0, 0), item);
+    return;
+  }
+  const double cell = level_cell_[level];
+  const int pieces = std::max(1, static_cast<int>(std::ceil(std::min(length / cell, kMaxCellsPerSegment))));
   const std::size_t first = entries_.size();
   for (int k = 0; k < pieces; ++k) {
     const double t0 = static_cast<double>(k) / pieces, t1 = static_cast<double>(k + 1) / pieces;
     const double x0 = a.x + (b.x - a.x) * t0, y0 = a.y + (b.y - a.y) * t0;
     const double x1 = a.x + (b.x - a.x) * t1, y1 = a.y + (b.y - a.y) * t1;
-    for (std::int64_t iy = index(std::min(y0, y1)); iy <= index(std::max(y0, y1)); ++iy)
-      for (std::int64_t ix = index(std::min(x0, x1)); ix <= index(std::max(x0, x1)); ++ix)
-        entries_.emplace_back(key(ix, iy), item);
+    for (std::int64_t iy = index(std::min(y0, y1), level); iy <= index(std::max(y0, y1), level); ++iy)
+      for (std::int64_t ix = index(std::min(x0, x1), level); ix <= index(std::max(x0, x1), level); ++ix)
+        entries_.emplace_back(key(level, ix, iy), item);
   }
   // Consecutive pieces share cells: keep each cell once for this segment.
   std::sort(entries_.begin() + static_cast<std::ptrdiff_t>(first), entries_.end());

@@ -10,33 +10,61 @@
 #include "cli/cli_support.h"
 #include "report/audit_report.h"
 #include "io/atomic_file.h"
+#include "core/readable_numbers.h"
 #include "io/coverage_map.h"
+#include "io/input_error.h"
+#include "io/output_plan.h"
+#include "io/plausibility.h"
 #include "io/reported_sensors.h"
 #include "audit/audit.h"
 
 namespace covmap::cli {
 
-void setup_audit(CLI::App& app, AuditCommandOptions& options) {
+CLI::App* setup_audit(CLI::App& app, AuditCommandOptions& options) {
   CLI::App* cmd = app.add_subcommand("audit", "Audit a coverage map against its sensors; write reports to a directory");
   cmd->add_option("map", options.map_path, "coverage map: GeoJSON FeatureCollection of (Multi)Polygon cells")
       ->required()
-      ->check(CLI::ExistingFile);
+      ->check(input_file());
   cmd->add_option("--sensors", options.sensors_path, "reported sensors: covmap.sites/1 JSON, CSV or GeoJSON Points")
-      ->check(CLI::ExistingFile);
+      ->check(input_file());
   cmd->add_option("--alpha", options.alpha, "path-loss exponent (weight = 10^(P/(10·alpha))); enables dB")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   cmd->add_option("--sensor-property", options.sensor_property, "feature property naming the serving sensor")
       ->capture_default_str();
   cmd->add_flag("--planar", options.planar, "coordinates are planar metres, not lon/lat");
   cmd->add_option("--snap", options.snap, "how far apart two cells' copies of a boundary may be (map units; 0 = estimate)")
-      ->check(CLI::NonNegativeNumber);
-  cmd->add_option("-o,--output", options.output_dir, "output directory (created or replaced as a whole)")->required();
+      ->check(non_negative_number());
+  cmd->add_option("-o,--output", options.output_dir,
+                  "output folder: new, empty, or one covmap wrote before (its report files are replaced together)")
+      ->required();
+  cmd->add_flag("--force", options.force,
+                "write into an existing folder covmap did not make (other files in it are left alone), "
+                "and audit despite plausibility warnings");
+  cmd->add_flag("--fail-on-inconsistent", options.fail_on_inconsistent,
+                "exit 1 when a reported sensor is inconsistent with the map (for pipelines)");
   cmd->add_flag("-q,--quiet", options.quiet, "no progress messages");
   cmd->add_option("--threads", options.threads, "refinement threads (1 gives the same numbers on every run)")
-      ->check(CLI::Range(1, 64))
+      ->check(whole_number_in(1, 64))
       ->capture_default_str();
-  cmd->callback([&options]() { std::exit(run_audit(options)); });
+  return cmd;
 }
+
+namespace {
+
+// Findings of io/plausibility.h stop the audit (exit 2) unless --force; with it they are warnings.
+void refuse_implausible_input(const AuditCommandOptions& options, const io::CoverageMap& map,
+                              const std::vector<ReportedSensor>& reported) {
+  std::vector<std::pair<std::string, std::string>> doubts;  // (file, finding)
+  if (options.planar)
+    if (auto finding = io::lon_lat_looking(map)) doubts.emplace_back(options.map_path, *finding);
+  if (auto finding = io::sensors_far_outside(map, reported)) doubts.emplace_back(options.sensors_path, *finding);
+  for (const auto& [file, finding] : doubts) {
+    if (!options.force) throw io::InputError(file, 0, "", finding + " (pass --force to audit anyway)");
+    std::cerr << "covmap audit: warning: " << file << ": " << finding << "\n";
+  }
+}
+
+}  // namespace
 
 int run_audit(const AuditCommandOptions& options) {
   return guarded([&]() {
@@ -44,8 +72,15 @@ int run_audit(const AuditCommandOptions& options) {
     auto say = [&](const std::string& what) {
       if (options.quiet) return;
       std::cerr << "covmap audit: " << what << " ("
-                << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s)\n";
+                << seconds(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()) << ")\n";
     };
+    io::OutputPlan plan;
+    plan.inputs = {options.map_path};
+    if (!options.sensors_path.empty()) plan.inputs.push_back(options.sensors_path);
+    plan.folder = options.output_dir;
+    plan.folder_files = {"report.json", "report.html", "sensors.geojson", "diagram.geojson"};
+    plan.force = options.force;
+    io::check_output_plan(plan);
     say("reading the map");
     io::CoverageMapOptions mo;
     mo.sensor_property = options.sensor_property;
@@ -59,6 +94,7 @@ int run_audit(const AuditCommandOptions& options) {
       so.projection = map.projection ? &*map.projection : nullptr;
       reported = io::read_reported_sensors(options.sensors_path, so);
     }
+    refuse_implausible_input(options, map, reported);
     say("map read: " + std::to_string(map.cells.size()) + " cells, " + std::to_string(map.vertex_count) + " vertices");
     audit::AuditOptions ao;
     ao.alpha = options.alpha;
@@ -78,21 +114,22 @@ int run_audit(const AuditCommandOptions& options) {
     say("writing diagram.geojson");
     report::write_diagram_geojson(context, diagram);
     say("moving the reports into place");
-    io::write_directory_atomically(options.output_dir, {{"report.json", json.str()},
-                                         {"report.html", html.str()},
-                                         {"sensors.geojson", sensors.str()},
-                                         {"diagram.geojson", diagram.str()}});
+    io::write_report_folder(options.output_dir, {{"report.json", json.str()},
+                                                 {"report.html", html.str()},
+                                                 {"sensors.geojson", sensors.str()},
+                                                 {"diagram.geojson", diagram.str()}},
+                            options.force);
     const report::AuditVerdictCounts counts = report::count_verdicts(result.sensors);
     std::cout << options.map_path << ": " << result.cleaned.sensors.size() << " sensors in the map, "
               << counts.reported << " reported: " << counts.consistent << " consistent, " << counts.inconsistent
               << " inconsistent, " << counts.not_in_map << " not in the map; refined diagram agrees with the map on "
-              << 100.0 * result.refined_agreement.mean_iou << " % of its area";
+              << fixed(100.0 * result.refined_agreement.mean_iou, 1) << " % of its area";
     if (result.reported_agreement)
-      std::cout << " (reported sensors: " << 100.0 * result.reported_agreement->mean_iou << " %)";
+      std::cout << " (reported sensors: " << fixed(100.0 * result.reported_agreement->mean_iou, 1) << " %)";
     std::cout << " -> " << options.output_dir << "\n";
     for (const auto& s : result.sensors)
       if (s.verdict == audit::SensorVerdict::kInconsistent) std::cout << "  " << s.id << ": " << s.reason << "\n";
-    return kOk;
+    return options.fail_on_inconsistent && counts.inconsistent > 0 ? kFindings : kOk;
   });
 }
 

@@ -1,7 +1,8 @@
 // covmap audit MAP.geojson [--sensors S] [--alpha 3.5] -o OUTDIR/: does a coverage map agree with
 // the sensors that drew it? Writes report.json, report.html, sensors.geojson and diagram.geojson
 // into OUTDIR (all or nothing) and prints a short summary.
-// Exit 0: audited (whatever the verdicts); 2: bad input; 4: internal error.
+// Exit 0: audited (whatever the verdicts, unless --fail-on-inconsistent: then 1 when a reported
+// sensor is inconsistent); 2: bad input or an output that may not be written; 4: internal error.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -20,11 +21,13 @@ struct AuditCommandOptions {
   bool planar = false;               // map and sensors in planar metres, not lon/lat
   double snap = 0.0;                 // cleaning snap distance (0: estimated)
   bool quiet = false;                // no progress on stderr
+  bool force = false;                // write into a foreign folder; audit despite plausibility warnings
+  bool fail_on_inconsistent = false; // exit 1 when a reported sensor is inconsistent
   int threads = 2;                   // refinement threads (1: reproducible numbers)
   std::string command_line;          // recorded in the reports
 };
 
-void setup_audit(CLI::App& app, AuditCommandOptions& options);
+CLI::App* setup_audit(CLI::App& app, AuditCommandOptions& options);
 int run_audit(const AuditCommandOptions& options);
 
 }  // namespace covmap::cli

@@ -1,5 +1,6 @@
 #include "cli/check_command.h"
 
+#include <algorithm>
 #include <iomanip>
 #include <iostream>
 
@@ -10,24 +11,30 @@
 
 namespace covmap::cli {
 
-void setup_check(CLI::App& app, CheckCommandOptions& options) {
+CLI::App* setup_check(CLI::App& app, CheckCommandOptions& options) {
   CLI::App* cmd = app.add_subcommand(
       "check", "Verify an arc graph (ours or another tool's) against the MWVD of its sites");
   cmd->add_option("diagram", options.diagram_path, "a covmap.arcgraph/1 file")
       ->required()
-      ->check(CLI::ExistingFile);
+      ->check(input_file());
   cmd->add_option("--sites", options.sites_path,
                   "check against these sites instead of the diagram's own (JSON or CSV)")
-      ->check(CLI::ExistingFile);
+      ->check(input_file());
   cmd->add_option("--probes", options.probes, "boundary probes for the coverage test")
+      ->check(whole_number_in(0, kMaxProbes))
       ->capture_default_str();
-  cmd->add_option("--samples", options.samples, "sample points per arc")->capture_default_str();
+  cmd->add_option("--samples", options.samples, "sample points per arc")
+      ->check(whole_number_in(1, kMaxSamplesPerArc))
+      ->capture_default_str();
   cmd->add_option("--tolerance", options.tolerance,
                   "relative tolerance (times the diagonal of the sites' bounding box)")
+      ->check(fraction())
       ->capture_default_str();
   cmd->add_option("--seed", options.seed, "probe seed")->capture_default_str();
-  cmd->add_option("--show", options.show, "violations to list")->capture_default_str();
-  cmd->callback([&options]() { std::exit(run_check(options)); });
+  cmd->add_option("--show", options.show, "violations to list")
+      ->check(whole_number_in(0, 1000000))
+      ->capture_default_str();
+  return cmd;
 }
 
 int run_check(const CheckCommandOptions& options) {
@@ -45,6 +52,8 @@ int run_check(const CheckCommandOptions& options) {
     check.boundary_probes = options.probes;
     check.samples_per_arc = options.samples;
     check.relative_tolerance = options.tolerance;
+    // The probes' bisection must stay well below the tolerance the user chose.
+    check.bisection_tolerance = std::min(check.bisection_tolerance, options.tolerance * 1e-3);
     check.seed = options.seed;
     check.max_reported = std::max(options.show, 1);
     std::string why;
@@ -58,7 +67,7 @@ int run_check(const CheckCommandOptions& options) {
       std::cout << "  " << check::to_string(v.kind) << " at (" << v.x << ", " << v.y
                 << "): " << v.message << "\n";
     }
-    return report.ok() ? kOk : kViolations;
+    return report.ok() ? kOk : kFindings;
   });
 }
 

@@ -9,6 +9,11 @@
 
 namespace covmap::cli {
 
+// Limits of the option values: the check's cost grows with probes × sites and samples × arcs, so
+// without a bound one mistyped number would run for hours.
+inline constexpr long long kMaxProbes = 10'000'000;
+inline constexpr long long kMaxSamplesPerArc = 10'000;
+
 struct CheckCommandOptions {
   std::string diagram_path;
   std::string sites_path;  // empty: use the diagram's own sites
@@ -19,7 +24,7 @@ struct CheckCommandOptions {
   int show = 20;  // violations listed on stdout
 };
 
-void setup_check(CLI::App& app, CheckCommandOptions& options);
+CLI::App* setup_check(CLI::App& app, CheckCommandOptions& options);
 int run_check(const CheckCommandOptions& options);
 
 }  // namespace covmap::cli

@@ -16,7 +16,7 @@ struct DiagramOptions {
   bool quiet = false;
 };
 
-void setup_diagram(CLI::App& app, DiagramOptions& options);
+CLI::App* setup_diagram(CLI::App& app, DiagramOptions& options);
 int run_diagram(const DiagramOptions& options);
 
 }  // namespace covmap::cli

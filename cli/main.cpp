@@ -1,27 +1,42 @@
-// covmap: reconstruct and verify sensor coverage maps. This file only wires the subcommands.
+// covmap: reconstruct and verify sensor coverage maps. This file only wires the subcommands and
+// maps the command line's errors onto the exit-code contract (cli/cli_support.h).
 #include <CLI/CLI.hpp>
 
 #include <string>
 
 #include "cli/audit_command.h"
 #include "cli/check_command.h"
+#include "cli/cli_support.h"
 #include "cli/diagram_command.h"
 #include "cli/recognize_command.h"
+#include "io/interrupt_cleanup.h"
 
 int main(int argc, char** argv) {
+  using namespace covmap::cli;
+  covmap::io::install_interrupt_cleanup();
   CLI::App app{"covmap: multiplicatively weighted Voronoi diagrams of sensor coverage maps"};
+  app.set_version_flag("--version", "covmap " COVMAP_VERSION);
   app.require_subcommand(1);
-  covmap::cli::DiagramOptions diagram;
-  covmap::cli::CheckCommandOptions check;
-  covmap::cli::setup_diagram(app, diagram);
-  covmap::cli::setup_check(app, check);
-  covmap::cli::RecognizeOptions recognize;
-  covmap::cli::CompareCommandOptions compare;
-  covmap::cli::setup_recognize(app, recognize);
-  covmap::cli::setup_compare(app, compare);
-  covmap::cli::AuditCommandOptions audit;
+  DiagramOptions diagram;
+  CheckCommandOptions check;
+  RecognizeOptions recognize;
+  CompareCommandOptions compare;
+  AuditCommandOptions audit;
   for (int k = 0; k < argc; ++k) audit.command_line += (k ? " " : "") + std::string(argv[k]);
-  covmap::cli::setup_audit(app, audit);
-  CLI11_PARSE(app, argc, argv);
-  return 0;
+  const CLI::App* audit_cmd = setup_audit(app, audit);
+  const CLI::App* diagram_cmd = setup_diagram(app, diagram);
+  const CLI::App* recognize_cmd = setup_recognize(app, recognize);
+  const CLI::App* compare_cmd = setup_compare(app, compare);
+  const CLI::App* check_cmd = setup_check(app, check);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return exit_for_parse_error(app, e, argc, argv);
+  }
+  if (audit_cmd->parsed()) return run_audit(audit);
+  if (diagram_cmd->parsed()) return run_diagram(diagram);
+  if (recognize_cmd->parsed()) return run_recognize(recognize);
+  if (compare_cmd->parsed()) return run_compare(compare);
+  if (check_cmd->parsed()) return run_check(check);
+  return kInternal;  // require_subcommand(1) makes this unreachable
 }

@@ -8,6 +8,7 @@
 #include "cli/cli_support.h"
 #include "io/atomic_file.h"
 #include "io/diagram_json.h"
+#include "io/output_plan.h"
 #include "report/reconstruction_json.h"
 #include "report/svg.h"
 #include "recognition/compare.h"
@@ -17,24 +18,30 @@
 
 namespace covmap::cli {
 
-void setup_recognize(CLI::App& app, RecognizeOptions& options) {
+CLI::App* setup_recognize(CLI::App& app, RecognizeOptions& options) {
   CLI::App* cmd = app.add_subcommand(
       "recognize", "Decide whether an arc graph is a weighted bisector graph / an MWVD and "
                    "reconstruct its sites (exit 0 yes, 3 no)");
   cmd->add_option("graph", options.graph_path, "a covmap.arcgraph/1 file (its sites are ignored)")
       ->required()
-      ->check(CLI::ExistingFile);
+      ->check(input_file());
   cmd->add_option("-o,--output", options.output_path, "write covmap.reconstruction/1 JSON");
   cmd->add_option("--svg", options.svg_path, "draw the recomputed diagram of the reconstruction");
   cmd->add_flag("--no-voronoi-check", options.no_voronoi_check,
                 "skip recomputing the MWVD of the reconstruction");
   cmd->add_option("--tolerance", options.tolerance, "relative tolerance (times the graph's extent)")
+      ->check(fraction())
       ->capture_default_str();
-  cmd->callback([&options]() { std::exit(run_recognize(options)); });
+  return cmd;
 }
 
 int run_recognize(const RecognizeOptions& options) {
   return guarded([&]() {
+    io::OutputPlan plan;
+    plan.inputs = {options.graph_path};
+    if (!options.output_path.empty()) plan.files.push_back(options.output_path);
+    if (!options.svg_path.empty()) plan.files.push_back(options.svg_path);
+    io::check_output_plan(plan);
     Diagram graph = io::read_diagram_json(options.graph_path, io::ArcLabels::kIgnored);
     const auto repairs = recognition::prepare_input_graph(graph);
     for (const auto& r : repairs) std::cerr << "covmap: repaired: " << r.what << "\n";
@@ -42,14 +49,19 @@ int run_recognize(const RecognizeOptions& options) {
     ro.voronoi_check = !options.no_voronoi_check;
     ro.relative_tolerance = options.tolerance;
     const recognition::Reconstruction r = recognition::recognize(std::move(graph), ro);
-    std::ostringstream json, svg;
-    if (!options.output_path.empty()) report::write_reconstruction_json(r, json);
-    if (!options.svg_path.empty() && r.bisector_graph)
+    // Render everything first; then all outputs are replaced together or none is.
+    std::vector<io::FileText> outputs;
+    if (!options.output_path.empty()) {
+      std::ostringstream json;
+      report::write_reconstruction_json(r, json);
+      outputs.push_back({io::normalized_output_path(options.output_path), json.str()});
+    }
+    if (!options.svg_path.empty() && r.bisector_graph) {
+      std::ostringstream svg;
       report::write_svg(voronoi::build_diagram(r.sites), svg);
-    if (!options.output_path.empty())
-      io::write_file_atomically(options.output_path, [&](std::ostream& o) { o << json.str(); });
-    if (!options.svg_path.empty() && r.bisector_graph)
-      io::write_file_atomically(options.svg_path, [&](std::ostream& o) { o << svg.str(); });
+      outputs.push_back({io::normalized_output_path(options.svg_path), svg.str()});
+    }
+    io::write_files_atomically(outputs);
     if (!r.bisector_graph) {
       std::cout << options.graph_path << ": not a bisector graph: " << r.reason << "\n";
       return kNotBisectorGraph;
@@ -70,14 +82,17 @@ int run_recognize(const RecognizeOptions& options) {
   });
 }
 
-void setup_compare(CLI::App& app, CompareCommandOptions& options) {
+CLI::App* setup_compare(CLI::App& app, CompareCommandOptions& options) {
   CLI::App* cmd = app.add_subcommand("compare", "Where two arc graphs differ (exit 0 equal, 1 not)");
-  cmd->add_option("a", options.a_path, "first covmap.arcgraph/1 file")->required()->check(CLI::ExistingFile);
-  cmd->add_option("b", options.b_path, "second covmap.arcgraph/1 file")->required()->check(CLI::ExistingFile);
+  cmd->add_option("a", options.a_path, "first covmap.arcgraph/1 file")->required()->check(input_file());
+  cmd->add_option("b", options.b_path, "second covmap.arcgraph/1 file")->required()->check(input_file());
   cmd->add_option("--tolerance", options.tolerance, "relative tolerance (times the graphs' extent)")
+      ->check(fraction())
       ->capture_default_str();
-  cmd->add_option("--show", options.show, "differences to list")->capture_default_str();
-  cmd->callback([&options]() { std::exit(run_compare(options)); });
+  cmd->add_option("--show", options.show, "differences to list")
+      ->check(whole_number_in(0, 1000000))
+      ->capture_default_str();
+  return cmd;
 }
 
 int run_compare(const CompareCommandOptions& options) {
@@ -94,7 +109,7 @@ int run_compare(const CompareCommandOptions& options) {
       std::cout << "  " << recognition::to_string(d.kind) << " at (" << d.x << ", " << d.y
                 << "): " << d.message << "\n";
     }
-    return c.equal() ? kOk : kViolations;
+    return c.equal() ? kOk : kFindings;
   });
 }
 

@@ -17,7 +17,7 @@ struct RecognizeOptions {
   double tolerance = 1e-7;
 };
 
-void setup_recognize(CLI::App& app, RecognizeOptions& options);
+CLI::App* setup_recognize(CLI::App& app, RecognizeOptions& options);
 int run_recognize(const RecognizeOptions& options);
 
 // covmap compare A.json B.json: where two arc graphs differ. Exit 0 equal, 1 different.
@@ -27,7 +27,7 @@ struct CompareCommandOptions {
   int show = 20;
 };
 
-void setup_compare(CLI::App& app, CompareCommandOptions& options);
+CLI::App* setup_compare(CLI::App& app, CompareCommandOptions& options);
 int run_compare(const CompareCommandOptions& options);
 
 }  // namespace covmap::cli

@@ -1,68 +1,147 @@
 #include "io/atomic_file.h"
 
 #include <atomic>
-#include <fstream>
-#include <random>
-#include <stdexcept>
-#include <string>
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
+#include <memory>
 #include <system_error>
 #include <unistd.h>
 
+#include "io/interrupt_cleanup.h"
+
 namespace covmap::io {
+namespace fs = std::filesystem;
 namespace {
 
-// A name no other writer picks: same directory, hidden, unique per process and call.
-std::filesystem::path temporary_name(const std::filesystem::path& target) {
-  static std::atomic<unsigned> counter{0};
-  static const unsigned salt = std::random_device{}();
-  // Built by appending: GCC 12 gives a false -Wrestrict for "literal" + std::string (PR 105651).
-  std::string name = ".";
-  name += target.filename().string();
-  name += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(salt) + "-" + std::to_string(counter++);
-  return target.parent_path() / name;
+std::string errno_text(int err) { return std::strerror(err); }
+
+// Writes `text` to a new file (which must not exist) with POSIX calls, so the reason of a failure
+// is the system's own (ENOSPC, EFBIG, EACCES) rather than a stream's failbit.
+void write_new_file(const fs::path& file, const std::string& text, const fs::path& shown_as) {
+  const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+  if (fd < 0) throw OutputError(shown_as, "cannot create a file in '" + file.parent_path().string() + "': " + errno_text(errno));
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const int err = n < 0 ? errno : EIO;
+      ::close(fd);
+      throw OutputError(shown_as, "error while writing: " + errno_text(err));
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  if (::close(fd) != 0) throw OutputError(shown_as, "error while writing: " + errno_text(errno));
 }
 
-void write_text(const std::filesystem::path& file, const std::string& text) {
-  std::ofstream out(file, std::ios::binary | std::ios::trunc);
-  if (!out) throw std::runtime_error("cannot create '" + file.string() + "'");
-  out << text;
-  out.close();
-  if (!out) throw std::runtime_error("error while writing '" + file.string() + "'");
+void make_parent_folder(const fs::path& target) {
+  const fs::path parent = target.parent_path();
+  if (parent.empty()) return;
+  std::error_code ec;
+  if (fs::is_directory(parent, ec)) return;
+  fs::create_directories(parent, ec);
+  if (ec) throw OutputError(target, "cannot create the folder '" + parent.string() + "': " + ec.message());
 }
 
-// A hidden name in `dir` no other writer picks: unique per process and call.
-std::filesystem::path temporary_dir(const std::filesystem::path& dir, const std::string& prefix) {
-  static std::atomic<unsigned> counter{0};
-  static const unsigned salt = std::random_device{}();
-  std::string name = prefix;
-  name += std::to_string(::getpid()) + "-" + std::to_string(salt) + "-" + std::to_string(counter++);
-  return dir / name;
+fs::path folder_of(const fs::path& target) { return target.has_parent_path() ? target.parent_path() : fs::path("."); }
+
+// One output on its way: the temporary holding the new text, and the old version's backup link.
+struct Staged {
+  fs::path target, temp, backup;
+  std::unique_ptr<PendingPath> temp_guard, backup_guard;
+  bool replaced = false;
+  bool had_old = false;
+};
+
+// Puts every staged file in place, or puts every target back as it was and throws.
+void swap_into_place(std::vector<Staged>& staged) {
+  CriticalSection no_interrupts;
+  std::size_t k = 0;
+  try {
+    for (; k < staged.size(); ++k) {
+      Staged& s = staged[k];
+      std::error_code ec;
+      s.had_old = fs::exists(fs::symlink_status(s.target, ec));
+      if (s.had_old) {
+        s.backup_guard = std::make_unique<PendingPath>(s.backup);
+        fs::create_hard_link(s.target, s.backup, ec);  // no backup (e.g. FAT): no rollback for it
+        if (ec) s.backup.clear();
+      }
+      fs::rename(s.temp, s.target, ec);
+      if (ec) throw OutputError(s.target, "cannot replace it: " + ec.message());
+      s.replaced = true;
+    }
+  } catch (...) {
+    for (std::size_t j = 0; j < k; ++j) {
+      std::error_code ignored;
+      if (!staged[j].backup.empty()) fs::rename(staged[j].backup, staged[j].target, ignored);
+      else if (!staged[j].had_old) fs::remove(staged[j].target, ignored);
+    }
+    throw;
+  }
+  for (Staged& s : staged) {
+    std::error_code ignored;
+    if (!s.backup.empty()) fs::remove(s.backup, ignored);
+  }
 }
 
 }  // namespace
 
-void write_directory_atomically(const std::filesystem::path& target, const NamedTexts& files) {
-  namespace fs = std::filesystem;
-  const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  fs::create_directories(parent);
-  std::random_device rd;
-  const fs::path temp = parent / (target.filename().string() + ".tmp-" + std::to_string(rd()));
+OutputError::OutputError(const fs::path& output, const std::string& reason)
+    : std::runtime_error("cannot write '" + output.string() + "': " + reason), output_(output) {}
+
+std::string temporary_name(const std::string& target_name) {
+  static std::atomic<unsigned> counter{0};
+  std::string name = kTemporaryPrefix;
+  name += std::to_string(::getpid()) + "-" + std::to_string(counter++) + "-" + target_name;
+  return name;
+}
+
+void write_files_atomically(const std::vector<FileText>& files) {
+  std::vector<Staged> staged;
+  staged.reserve(files.size());
   try {
-    fs::create_directory(temp);
-    for (const auto& [name, content] : files) {
-      std::ofstream f(temp / name, std::ios::binary);
-      f << content;
-      f.close();
-      if (!f) throw std::runtime_error("cannot write " + (temp / name).string());
+    for (const FileText& f : files) {
+      if (!f.path.has_filename()) throw OutputError(f.path, "it names a folder, not a file");
+      std::error_code ec;
+      if (fs::is_directory(f.path, ec)) throw OutputError(f.path, "it is a folder; give a file name");
+      make_parent_folder(f.path);
+      Staged s;
+      s.target = f.path;
+      s.temp = folder_of(f.path) / temporary_name(f.path.filename().string());
+      s.backup = folder_of(f.path) / temporary_name(f.path.filename().string() + ".old");
+      s.temp_guard = std::make_unique<PendingPath>(s.temp);
+      staged.push_back(std::move(s));
+      write_new_file(staged.back().temp, f.text, f.path);
     }
-    if (fs::exists(target)) {
-      const fs::path old = parent / (target.filename().string() + ".old-" + std::to_string(rd()));
-      fs::rename(target, old);
-      fs::rename(temp, target);
-      fs::remove_all(old);
-    } else {
-      fs::rename(temp, target);
+    swap_into_place(staged);
+  } catch (...) {
+    for (Staged& s : staged) {
+      std::error_code ignored;
+      if (!s.replaced) fs::remove(s.temp, ignored);
     }
+    throw;
+  }
+}
+
+void write_new_folder_atomically(const fs::path& folder, const NamedTexts& files) {
+  make_parent_folder(folder);
+  const fs::path temp = folder_of(folder) / temporary_name(folder.filename().string());
+  std::vector<std::unique_ptr<PendingPath>> guards;
+  guards.push_back(std::make_unique<PendingPath>(temp));
+  std::error_code ec;
+  if (!fs::create_directory(temp, ec) || ec)
+    throw OutputError(folder, "cannot create a folder in '" + folder_of(folder).string() + "': " + ec.message());
+  try {
+    for (const auto& [name, text] : files) {
+      guards.push_back(std::make_unique<PendingPath>(temp / name));
+      write_new_file(temp / name, text, folder / name);
+    }
+    CriticalSection no_interrupts;
+    if (fs::exists(folder, ec)) throw OutputError(folder, "it appeared while covmap was writing; nothing was replaced");
+    fs::rename(temp, folder, ec);
+    if (ec) throw OutputError(folder, "cannot move the finished folder into place: " + ec.message());
   } catch (...) {
     std::error_code ignored;
     fs::remove_all(temp, ignored);
@@ -70,49 +149,10 @@ void write_directory_atomically(const std::filesystem::path& target, const Named
   }
 }
 
-void write_files_into_directory(const std::filesystem::path& dir, const NamedTexts& files,
-                                const std::string& temporary_prefix) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw std::runtime_error("cannot create directory '" + dir.string() + "': " + ec.message());
-  const std::filesystem::path temp = temporary_dir(dir, temporary_prefix);
-  try {
-    if (!std::filesystem::create_directory(temp, ec) || ec)
-      throw std::runtime_error("cannot create '" + temp.string() + "': " + ec.message());
-    for (const auto& [name, text] : files) write_text(temp / name, text);
-    for (const auto& [name, text] : files) {
-      std::filesystem::rename(temp / name, dir / name, ec);
-      if (ec) throw std::runtime_error("cannot replace '" + (dir / name).string() + "': " + ec.message());
-    }
-    std::filesystem::remove(temp, ec);
-  } catch (...) {
-    std::error_code ignored;  // the original failure is the one worth reporting
-    std::filesystem::remove_all(temp, ignored);
-    throw;
-  }
-}
-
-void write_file_atomically(const std::filesystem::path& target, const std::function<void(std::ostream&)>& write) {
-  if (target.filename().empty()) throw std::invalid_argument("write_file_atomically: '" + target.string() + "' names no file");
-  const std::filesystem::path temp = temporary_name(target);
-  try {
-    {
-      std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-      if (!out) throw std::runtime_error("cannot create '" + temp.string() + "' to write '" + target.string() + "'");
-      write(out);
-      out.flush();
-      if (!out) throw std::runtime_error("error while writing '" + target.string() + "'");
-      out.close();
-      if (!out) throw std::runtime_error("error while closing '" + target.string() + "'");
-    }
-    std::error_code ec;
-    std::filesystem::rename(temp, target, ec);
-    if (ec) throw std::runtime_error("cannot replace '" + target.string() + "': " + ec.message());
-  } catch (...) {
-    std::error_code ignored;  // the original failure is the one worth reporting
-    std::filesystem::remove(temp, ignored);
-    throw;
-  }
+void write_files_into_directory(const fs::path& dir, const NamedTexts& files) {
+  std::vector<FileText> texts;
+  for (const auto& [name, text] : files) texts.push_back({dir / name, text});
+  write_files_atomically(texts);
 }
 
 }  // namespace covmap::io

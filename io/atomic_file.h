@@ -1,37 +1,54 @@
-// covmap::io atomic output: a file either keeps its old content or gets the complete new content.
+// covmap::io atomic output: several files replaced together, or none of them.
 //
-// write_file_atomically streams into a temporary file in the target's directory (same file system,
-// so the final rename is atomic on POSIX), then renames it over the target. If `write` throws or
-// the stream fails, the temporary is removed and the target is untouched; the exception propagates
-// (stream failures become std::runtime_error naming the file). A reader never sees half a file.
-//
-// Several files at once, all rendered in memory first (a name and its complete text each):
-// - write_directory_atomically makes `target` a directory holding exactly `files`: they are written
-//   into a fresh directory beside it, which then takes the target's place (an existing target is
-//   renamed aside first and removed after). A failure before the swap leaves the target untouched
-//   and removes the fresh directory.
-// - write_files_into_directory puts `files` into the existing or new directory `dir`, leaving its
-//   other files alone: all are written into a hidden temporary directory inside `dir` first, then
-//   each is renamed over its target. A failure while writing leaves `dir` as it was.
+// Everything is rendered in memory first; these functions only put complete texts in place.
+// - write_files_atomically: each text is written to a hidden temporary beside its target (same
+//   folder, so renaming is atomic on POSIX), and only when all are complete are they renamed over
+//   their targets, inside an io::CriticalSection so an interrupt cannot stop half-way. The old
+//   version of each replaced target is kept as a hard link until all renames succeeded, so a
+//   failing rename puts every earlier target back. A failure anywhere leaves every target as it
+//   was and no temporary behind. Missing parent folders are created.
+// - write_new_folder_atomically: `folder` must not exist; the files are written into a hidden
+//   temporary folder beside it which is then renamed to `folder` in one step.
+// - write_files_into_directory: write_files_atomically for files in one (possibly new) folder.
+// Temporaries are named ".covmap-tmp-<pid>-<n>-<name>" and registered with io::PendingPath, so
+// SIGINT/SIGTERM remove them; after a SIGKILL, remove_stale_temporaries (output_plan.h) does.
+// Failures throw OutputError naming the output and the system's reason ("No space left on
+// device", "Permission denied", "File too large"): an output covmap cannot write is the user's
+// to fix, not an internal error.
 // Not done: fsync. The guarantee holds against the process failing, not against power loss.
 #pragma once
 
 #include <filesystem>
-#include <functional>
-#include <iosfwd>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace covmap::io {
 
-void write_file_atomically(const std::filesystem::path& target, const std::function<void(std::ostream&)>& write);
+class OutputError : public std::runtime_error {
+ public:
+  OutputError(const std::filesystem::path& output, const std::string& reason);
+  const std::filesystem::path& output() const { return output_; }
+
+ private:
+  std::filesystem::path output_;
+};
+
+struct FileText {
+  std::filesystem::path path;
+  std::string text;
+};
 
 // File names (no folders) and their complete contents.
 using NamedTexts = std::vector<std::pair<std::string, std::string>>;
 
-void write_directory_atomically(const std::filesystem::path& target, const NamedTexts& files);
-void write_files_into_directory(const std::filesystem::path& dir, const NamedTexts& files,
-                                const std::string& temporary_prefix);
+void write_files_atomically(const std::vector<FileText>& files);
+void write_new_folder_atomically(const std::filesystem::path& folder, const NamedTexts& files);
+void write_files_into_directory(const std::filesystem::path& dir, const NamedTexts& files);
+
+// The prefix of every temporary name, and the name for (this process, a counter, a target name).
+inline constexpr const char* kTemporaryPrefix = ".covmap-tmp-";
+std::string temporary_name(const std::string& target_name);
 
 }  // namespace covmap::io

@@ -12,6 +12,7 @@
 #include "io/coverage_map_rings.h"
 #include "io/geojson_crs.h"
 #include "io/input_error.h"
+#include "io/input_limits.h"
 #include "io/json_fields.h"
 #include "io/text_util.h"
 
@@ -105,6 +106,12 @@ void read_ring(const Json& positions, const std::string& name, bool planar, Feat
       out.clear();
       return;
     }
+    if (planar && !range_reported && (std::abs(q.x) > kMaxPlanarCoordinate || std::abs(q.y) > kMaxPlanarCoordinate)) {
+      draft.problems.push_back(name + ", position " + std::to_string(i) + " " + pair_text(q) + " lies beyond ±1e8 m "
+                               "(100 000 km), where no projected coordinate system has values; is a coordinate "
+                               "mistyped or in the wrong unit?");
+      range_reported = true;
+    }
     if (!planar && !range_reported && (std::abs(q.x) > 180.0 || std::abs(q.y) > 90.0)) {
       draft.problems.push_back(name + ", position " + std::to_string(i) + ": not a longitude/latitude; coordinates look planar (x=" +
                                detail::format_number(q.x) + ", y=" + detail::format_number(q.y) + "); use --planar");
@@ -190,6 +197,10 @@ std::vector<FeatureDraft> read_features(const Json& root, const std::string& fil
   if (!features) throw InputError(file, 0, "features", "missing");
   if (!features->is_array()) throw InputError(file, 0, "features", "must be an array (got " + detail::describe(*features) + ")");
   if (features->empty()) throw InputError(file, 0, "features", "the map has no features");
+  if (features->size() > kMaxMapFeatures)
+    throw InputError(file, 0, "features",
+                     std::to_string(features->size()) + " features; covmap audits at most " +
+                         std::to_string(kMaxMapFeatures) + " per map (docs/RELIABILITY.md): split the map into regions");
   crs.add(root, "");
 
   std::vector<FeatureDraft> drafts;
@@ -265,6 +276,14 @@ CoverageMap parse_coverage_map(std::string_view text, const std::string& file, c
     const Json root = detail::parse_json(text, file);  // freed before the second pass
     drafts = read_features(root, file, options, crs);
   }
+  std::size_t vertices = 0;
+  for (const auto& d : drafts)
+    for (const auto& polygon : d.polygons)
+      for (const auto& ring : polygon) vertices += ring.size();
+  if (vertices > kMaxMapVertices)
+    throw InputError(file, 0, "",
+                     std::to_string(vertices) + " vertices; covmap audits at most " + std::to_string(kMaxMapVertices) +
+                         " per map (docs/RELIABILITY.md): simplify the cells or split the map into regions");
   std::vector<InputProblem> problems = crs.problems(options.planar);
   // A crs problem means the numbers are not what the reader takes them for; validating the
   // geometry of misread coordinates would only bury the one message that matters.

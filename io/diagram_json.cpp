@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "io/input_error.h"
+#include "io/input_limits.h"
 #include "io/json_fields.h"
 #include "io/polygon_check.h"
 #include "io/site_parsers.h"
@@ -245,6 +246,12 @@ Diagram parse_diagram_json(std::string_view text, const std::string& file, ArcLa
   } catch (const FieldError& e) {
     throw InputError(file, 0, e.path, e.message);
   }
+  const Diagram& d = reader.diagram;
+  if (d.sites.size() > kMaxSites || d.nodes.size() + d.arcs.size() > kMaxGraphItems)
+    throw InputError(file, 0, "", std::to_string(d.sites.size()) + " sites, " + std::to_string(d.nodes.size()) +
+                                      " nodes and " + std::to_string(d.arcs.size()) + " arcs; covmap takes at most " +
+                                      std::to_string(kMaxSites) + " sites and " + std::to_string(kMaxGraphItems) +
+                                      " nodes and arcs together (docs/RELIABILITY.md)");
   return std::move(reader.diagram);
 }
 

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "io/input_error.h"
+#include "io/input_limits.h"
 #include "io/text_util.h"
 
 namespace covmap::io::detail {
@@ -11,12 +12,40 @@ namespace covmap::io::detail {
 FieldError::FieldError(std::string path_, std::string message_)
     : std::runtime_error(path_ + ": " + message_), path(std::move(path_)), message(std::move(message_)) {}
 
+namespace {
+
+// Refuses nesting deeper than kMaxJsonDepth before the JSON library sees the text (one linear
+// pass; brackets inside strings do not count).
+void check_nesting(std::string_view text, const std::string& file) {
+  int depth = 0;
+  bool in_string = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      if (c == '\\') ++i;
+      else if (c == '"') in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > kMaxJsonDepth)
+        throw InputError(file, line_of_offset(text, i), "",
+                         "JSON nested more than " + std::to_string(kMaxJsonDepth) + " levels deep at byte " +
+                             std::to_string(i + 1) + "; covmap's formats nest at most 6 levels");
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+}
+
+}  // namespace
+
 Json parse_json(std::string_view text, const std::string& file) {
   // nlohmann's messages start with "[json.exception.parse_error.101] "; the tag helps nobody.
   const auto plain = [](const std::string& what) {
     const auto close = what.find("] ");
     return what.rfind("[json.exception", 0) == 0 && close != std::string::npos ? what.substr(close + 2) : what;
   };
+  check_nesting(text, file);
   try {
     return Json::parse(text.begin(), text.end());
   } catch (const Json::parse_error& e) {

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "io/input_error.h"
+#include "io/input_limits.h"
 #include "io/reported_sensors_parsers.h"
 #include "io/text_util.h"
 
@@ -64,9 +66,20 @@ double power_from_weight(double weight, double alpha) {
   return 10.0 * alpha * std::log10(weight);
 }
 
+namespace {
+
+std::vector<ReportedSensor> within_limit(std::vector<ReportedSensor> sensors, const std::string& file) {
+  if (sensors.size() > kMaxReportedSensors)
+    throw InputError(file, 0, "", std::to_string(sensors.size()) + " sensors; covmap audits at most " +
+                                      std::to_string(kMaxReportedSensors) + " (docs/RELIABILITY.md)");
+  return sensors;
+}
+
+}  // namespace
+
 std::vector<ReportedSensor> parse_reported_sensors(std::string_view text, const std::string& file,
                                                    const ReportedSensorOptions& options, SensorsFormat format) {
-  return parse(text, file, options, format, false);
+  return within_limit(parse(text, file, options, format, false), file);
 }
 
 std::vector<ReportedSensor> read_reported_sensors(const std::filesystem::path& path, const ReportedSensorOptions& options) {
@@ -76,7 +89,7 @@ std::vector<ReportedSensor> read_reported_sensors(const std::filesystem::path& p
   const SensorsFormat format = ext == ".csv"       ? SensorsFormat::kCsv
                                : ext == ".geojson" ? SensorsFormat::kGeoJson
                                                    : SensorsFormat::kDetect;
-  return parse(detail::read_text_file(path), path.string(), options, format, ext == ".json");
+  return within_limit(parse(detail::read_text_file(path), path.string(), options, format, ext == ".json"), path.string());
 }
 
 }  // namespace covmap::io

@@ -5,6 +5,8 @@
 #include <ostream>
 #include <stdexcept>
 
+#include "io/input_error.h"
+#include "io/input_limits.h"
 #include "io/json_fields.h"
 #include "io/site_parsers.h"
 #include "io/text_util.h"
@@ -27,7 +29,11 @@ SitesFormat detect(const std::filesystem::path& path, std::string_view text) {
 
 SiteTable parse_sites(std::string_view text, const std::string& file, SitesFormat format) {
   if (format == SitesFormat::kDetect) format = detect(file, text);
-  return format == SitesFormat::kJson ? detail::parse_sites_json(text, file) : detail::parse_sites_csv(text, file);
+  SiteTable table = format == SitesFormat::kJson ? detail::parse_sites_json(text, file) : detail::parse_sites_csv(text, file);
+  if (table.sites.size() > kMaxSites)
+    throw InputError(file, 0, "", std::to_string(table.sites.size()) + " sites; covmap takes at most " +
+                                      std::to_string(kMaxSites) + " (docs/RELIABILITY.md)");
+  return table;
 }
 
 SiteTable read_sites(const std::filesystem::path& path, SitesFormat format) {

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "io/input_error.h"
+#include "io/input_limits.h"
 #include <nlohmann/json.hpp>
 
 namespace covmap::io::detail {
@@ -40,6 +41,11 @@ std::string read_text_file(const std::filesystem::path& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) {
     throw InputError(path.string(), 0, "", "cannot read file: it is a directory");
+  }
+  if (const auto size = std::filesystem::file_size(path, ec); !ec && size > kMaxInputFileBytes) {
+    throw InputError(path.string(), 0, "",
+                     "the file holds " + std::to_string(size >> 20) + " MiB; covmap reads at most " +
+                         std::to_string(kMaxInputFileBytes >> 20) + " MiB per input (docs/RELIABILITY.md)");
   }
   std::ifstream in(path, std::ios::binary);
   if (!in) {

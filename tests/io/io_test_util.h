@@ -35,6 +35,7 @@ class TempDir {
   // Writes `text` to a file in the directory and returns its path.
   std::filesystem::path write(const std::string& name, const std::string& text) const {
     const auto file = path_ / name;
+    std::filesystem::create_directories(file.parent_path());
     std::ofstream(file, std::ios::binary) << text;
     return file;
   }

@@ -16,7 +16,7 @@ void write_coverage_map(const CoverageMap& map, const std::filesystem::path& dir
       {kSensorsFileName, feature_collection_text(sensors_geojson(map))},
       {kTruthFileName, truth_json(map).dump(1) + "\n"}};
 
-  io::write_files_into_directory(dir, files, ".covmap-make-map-tmp-");
+  io::write_files_into_directory(dir, files);
 }
 
 }  // namespace covmap::mapgen

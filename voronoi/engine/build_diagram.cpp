@@ -48,6 +48,92 @@ void straighten_flat_arcs(Diagram& d) {
   }
 }
 
+// The engine works on sites scaled by powers of two: positions so that the largest |coordinate| is
+// in [0.5, 1), weights so that the largest is in [0.5, 1). Scaling by a power of two changes no
+// bit of a double's mantissa, and the diagram of scaled sites is the scaled diagram (positions
+// scale it, weights only enter as ratios), so every exact decision is the one the input asked
+// for. What the scaling buys is range: the lifted coordinates and the double constructions stay
+// far from overflow (sites at 1e15 gave infinite nodes) and from the magnitudes at which the
+// engine's internal thresholds were chosen (sites at 1e9 gave a wrong diagram). A site whose
+// scaled value would leave the normal range of doubles (coordinates or weights spanning more
+// than ~600 orders of magnitude) is refused: it cannot be scaled exactly.
+struct Scaling {
+  int position_exponent = 0;  // stored = input * 2^-position_exponent
+  int weight_exponent = 0;
+};
+
+Scaling scaling_for(std::span<const Site> sites) {
+  double position = 0.0, weight = 0.0;
+  for (const Site& s : sites) {
+    position = std::max({position, std::fabs(s.x), std::fabs(s.y)});
+    weight = std::max(weight, s.weight);
+  }
+  Scaling scaling;
+  if (position > 0) std::frexp(position, &scaling.position_exponent);
+  std::frexp(weight, &scaling.weight_exponent);
+  return scaling;
+}
+
+std::vector<Site> scaled_sites(std::span<const Site> input, const Scaling& scaling) {
+  std::vector<Site> sites(input.begin(), input.end());
+  std::vector<InvalidSite> problems;
+  const auto exact = [](double v, double scaled, int e) { return std::ldexp(scaled, e) == v && (v == 0 || std::isnormal(scaled)); };
+  for (std::size_t i = 0; i < sites.size(); ++i) {
+    Site& s = sites[i];
+    const double x = std::ldexp(s.x, -scaling.position_exponent), y = std::ldexp(s.y, -scaling.position_exponent);
+    const double w = std::ldexp(s.weight, -scaling.weight_exponent);
+    if (!exact(s.x, x, scaling.position_exponent) || !exact(s.y, y, scaling.position_exponent) ||
+        !exact(s.weight, w, scaling.weight_exponent))
+      problems.push_back({static_cast<int>(i), s.id,
+                          "its coordinates or weight are too small beside the largest ones to be represented "
+                          "together (they span more than ~600 orders of magnitude)"});
+    s.x = x;
+    s.y = y;
+    s.weight = w;
+  }
+  if (!problems.empty()) throw InvalidSites(std::move(problems));
+  return sites;
+}
+
+// Scales the geometry back to the input's units; refuses a diagram whose nodes or curves do not fit
+// in doubles at the input's scale (a node beyond ±1.8e308), naming the sites of the first one.
+void scale_back(Diagram& d, const Scaling& scaling) {
+  const int e = scaling.position_exponent;
+  const auto up = [e](double& v) { v = std::ldexp(v, e); };
+  for (Node& n : d.nodes) {
+    up(n.x);
+    up(n.y);
+  }
+  for (Arc& a : d.arcs) {
+    if (Circle* c = std::get_if<Circle>(&a.curve)) {
+      up(c->cx);
+      up(c->cy);
+      up(c->r);
+    } else if (Line* l = std::get_if<Line>(&a.curve)) {
+      up(l->x);
+      up(l->y);
+      up(l->dx);
+      up(l->dy);
+    }
+  }
+  for (const Arc& a : d.arcs) {
+    const Circle* c = std::get_if<Circle>(&a.curve);
+    const Line* l = std::get_if<Line>(&a.curve);
+    const bool finite = c ? std::isfinite(c->cx) && std::isfinite(c->cy) && std::isfinite(c->r)
+                          : std::isfinite(l->x) && std::isfinite(l->y) && std::isfinite(l->dx) && std::isfinite(l->dy);
+    const bool ends = (a.from == kNone || (std::isfinite(d.nodes[a.from].x) && std::isfinite(d.nodes[a.from].y))) &&
+                      (a.to == kNone || (std::isfinite(d.nodes[a.to].x) && std::isfinite(d.nodes[a.to].y)));
+    if (finite && ends) continue;
+    std::vector<InvalidSite> problems;
+    for (int site : {a.left_site, a.right_site})
+      if (site != kNone)
+        problems.push_back({site, d.sites[site].id,
+                            "the bisector it shares with another site runs beyond ±1.8e308, the largest double; "
+                            "scale the coordinates down"});
+    throw InvalidSites(std::move(problems));
+  }
+}
+
 }  // namespace engine
 
 Diagram build_diagram(std::span<const Site> input, BuildStats* stats_out) {
@@ -56,7 +142,8 @@ Diagram build_diagram(std::span<const Site> input, BuildStats* stats_out) {
     throw InvalidSites(std::move(problems));
   BuildStats stats;
   Diagram out;
-  out.sites.assign(input.begin(), input.end());
+  const Scaling scaling = scaling_for(input);
+  out.sites = scaled_sites(input, scaling);
   using Clock = std::chrono::steady_clock;
   auto seconds_since = [](Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
@@ -64,8 +151,8 @@ Diagram build_diagram(std::span<const Site> input, BuildStats* stats_out) {
   auto start = Clock::now();
   std::vector<RawWeightedPoint> points;
   points.reserve(input.size());
-  for (std::size_t i = 0; i < input.size(); ++i)
-    points.emplace_back(RawPoint(input[i].x, input[i].y, input[i].weight), static_cast<double>(i));
+  for (std::size_t i = 0; i < out.sites.size(); ++i)
+    points.emplace_back(RawPoint(out.sites[i].x, out.sites[i].y, out.sites[i].weight), static_cast<double>(i));
   RegularTriangulation rt(points.begin(), points.end());
   stats.triangulation_seconds = seconds_since(start);
   stats.triangulation_dimension = rt.dimension();
@@ -82,6 +169,8 @@ Diagram build_diagram(std::span<const Site> input, BuildStats* stats_out) {
   start = Clock::now();
   trace_faces(out);
   stats.faces_seconds = seconds_since(start);
+  scale_back(out, scaling);
+  out.sites.assign(input.begin(), input.end());
   if (stats_out) *stats_out = stats;
   return out;
 }

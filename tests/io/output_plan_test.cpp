@@ -1,0 +1,110 @@
+// Outputs never destroy what the user did not ask to replace (issue 10): the rules of
+// io/output_plan.h, each on the file system as a user would meet it.
+#include "io/output_plan.h"
+
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include "io_test_util.h"
+
+namespace covmap::io {
+namespace {
+
+using testing::read_text;
+using testing::TempDir;
+namespace fs = std::filesystem;
+
+const NamedTexts kReports = {{"report.json", "{}"}, {"report.html", "<html>"}};
+
+OutputPlan folder_plan(const fs::path& folder, std::vector<fs::path> inputs = {}) {
+  OutputPlan plan;
+  plan.folder = folder;
+  plan.folder_files = {"report.json", "report.html"};
+  plan.inputs = std::move(inputs);
+  return plan;
+}
+
+TEST(OutputPlan, AFolderWithTheUsersFilesIsRefusedUnlessForced) {
+  TempDir dir;
+  dir.write("d/mydata.txt", "precious");
+  EXPECT_THROW(check_output_plan(folder_plan(dir / "d")), OutputError);
+  EXPECT_THROW(write_report_folder(dir / "d", kReports, false), OutputError);
+  EXPECT_EQ(read_text(dir / "d" / "mydata.txt"), "precious");
+  OutputPlan forced = folder_plan(dir / "d");
+  forced.force = true;
+  EXPECT_NO_THROW(check_output_plan(forced));
+  write_report_folder(dir / "d", kReports, true);
+  EXPECT_EQ(read_text(dir / "d" / "mydata.txt"), "precious");
+  EXPECT_EQ(read_text(dir / "d" / "report.json"), "{}");
+}
+
+TEST(OutputPlan, CovmapsOwnFolderIsReplacedAndStaleReportsGo) {
+  TempDir dir;
+  write_report_folder(dir / "out", {{"report.json", "1"}, {"old.geojson", "x"}}, false);
+  EXPECT_NO_THROW(check_output_plan(folder_plan(dir / "out")));
+  write_report_folder(dir / "out", kReports, false);
+  EXPECT_EQ(read_text(dir / "out" / "report.json"), "{}");
+  EXPECT_FALSE(fs::exists(dir / "out" / "old.geojson"));  // written by covmap before, not now
+  EXPECT_TRUE(fs::exists(dir / "out" / kFolderMarker));
+}
+
+TEST(OutputPlan, AFileIsNeverReplacedByAFolderNorAFolderByAFile) {
+  TempDir dir;
+  dir.write("f.txt", "mine");
+  EXPECT_THROW(check_output_plan(folder_plan(dir / "f.txt")), OutputError);
+  EXPECT_THROW(write_report_folder(dir / "f.txt", kReports, true), OutputError);
+  EXPECT_EQ(read_text(dir / "f.txt"), "mine");
+  dir.write("folder/x", "");
+  OutputPlan plan;
+  plan.files = {dir / "folder"};
+  EXPECT_THROW(check_output_plan(plan), OutputError);
+}
+
+TEST(OutputPlan, AnInputIsNeverAnOutputHoweverSpelled) {
+  TempDir dir;
+  const fs::path input = dir.write("s.json", "{}");
+  OutputPlan plan;
+  plan.inputs = {input};
+  plan.files = {dir.path() / "." / "s.json"};
+  EXPECT_THROW(check_output_plan(plan), OutputError);
+  fs::create_hard_link(input, dir / "link.json");
+  plan.files = {dir / "link.json"};
+  EXPECT_THROW(check_output_plan(plan), OutputError);
+  EXPECT_THROW(check_output_plan(folder_plan(input, {input})), OutputError);
+  // The map inside a folder the report would write into: report.json is not it, so allowed...
+  dir.write("out/.covmap-output", "covmap report folder; covmap wrote the files listed below\n");
+  const fs::path map = dir.write("out/map.geojson", "{}");
+  EXPECT_NO_THROW(check_output_plan(folder_plan(dir / "out", {map})));
+  // ...but an input named like a report file would be overwritten: refused.
+  const fs::path named = dir.write("out/report.json", "{}");
+  EXPECT_THROW(check_output_plan(folder_plan(dir / "out", {named})), OutputError);
+}
+
+TEST(OutputPlan, TrailingSlashesAndDotsAreTheFolderItself) {
+  EXPECT_EQ(normalized_output_path("out/"), fs::path("out"));
+  EXPECT_EQ(normalized_output_path("./a//b/"), fs::path("a/b"));
+  EXPECT_EQ(normalized_output_path("."), fs::path("."));
+  EXPECT_EQ(normalized_output_path("./"), fs::path("."));
+  TempDir dir;
+  write_report_folder((dir / "r").string() + "/", kReports, false);
+  EXPECT_EQ(read_text(dir / "r" / "report.html"), "<html>");
+}
+
+TEST(OutputPlan, LeftoversOfKilledRunsAreRemovedAndNothingElse) {
+  TempDir dir;
+  dir.write(".covmap-tmp-2147483646-3-out/report.json", "dead process");
+  dir.write(std::string(".covmap-tmp-") + std::to_string(::getpid()) + "-9-x", "a live process (this one)");
+  dir.write("out.tmp-12/report.json", "old version");
+  dir.write("out.old-13/report.html", "old version");
+  dir.write("notes.tmp-1/mine.txt", "the user's");
+  dir.write("data.old-2", "a file, not covmap's");
+  EXPECT_EQ(remove_stale_temporaries(dir.path()), 3);
+  EXPECT_TRUE(fs::exists(dir / (".covmap-tmp-" + std::to_string(::getpid()) + "-9-x")));
+  EXPECT_TRUE(fs::exists(dir / "notes.tmp-1" / "mine.txt"));
+  EXPECT_TRUE(fs::exists(dir / "data.old-2"));
+  EXPECT_FALSE(fs::exists(dir / "out.tmp-12"));
+}
+
+}  // namespace
+}  // namespace covmap::io
