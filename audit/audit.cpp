@@ -4,9 +4,12 @@
 #include <chrono>
 #include <cstdio>
 #include <stdexcept>
+#include <string_view>
+#include <unordered_set>
 
 #include "audit/audit_stages.h"
 #include "audit/start_values.h"
+#include "audit/tolerances.h"
 
 namespace covmap::audit {
 namespace {
@@ -31,12 +34,23 @@ class StageTimer {
   std::vector<std::string>& messages_;
 };
 
+// kMaxAuditSensors, checked before any work.
+void refuse_oversized(std::span<const CoverageCell> map) {
+  std::unordered_set<std::string_view> sensors;
+  for (const CoverageCell& cell : map) sensors.insert(cell.sensor);
+  if (sensors.size() > tolerance::kMaxAuditSensors)
+    throw std::invalid_argument("the map names " + std::to_string(sensors.size()) + " sensors; one audit takes at most " +
+                                std::to_string(tolerance::kMaxAuditSensors) +
+                                " (the refinement would run for hours): split the map into regions");
+}
+
 }  // namespace
 
 AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSensor> reported,
                   const AuditOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
   if (map.empty()) throw std::invalid_argument("audit: the map has no cells");
+  refuse_oversized(map);
   auto progress = [&](const std::string& stage, double f) {
     if (options.progress) options.progress(stage, f);
   };
@@ -58,7 +72,14 @@ AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSen
 
   // 3. Refinement on boundary samples (one per bin along each shared boundary), from several starts.
   progress("refinement", 0.3);
-  const RefinementSetup setup = refinement_setup(cleaned, cells.box, out.bin_size_m, options.threads);
+  RefinementSetup setup = refinement_setup(cleaned, cells.box, out.bin_size_m, options.threads);
+  auto last_beat = std::chrono::steady_clock::now();
+  setup.options.on_iteration = [&](int iteration) {
+    const auto now = std::chrono::steady_clock::now();
+    if (std::chrono::duration<double>(now - last_beat).count() < tolerance::kHeartbeatSeconds) return;
+    last_beat = now;
+    progress("refinement, solver iteration " + std::to_string(iteration), 0.3);
+  };
   out.boundary_samples = setup.samples.size();
   StageTimer timer(t0, out.messages);
   timer.lap("cleaning and starting values");

@@ -9,7 +9,10 @@
 // Contract: the input is planar (metres; io projects lon/lat first). Sensors reported but absent
 // from the map are listed with verdict kNotInMap; cells whose sensor was not reported get no
 // verdict. Never throws for a bad fit: a failed stage is reported in the result (stage messages)
-// and the later stages work with what they have. Throws std::invalid_argument for an empty map.
+// and the later stages work with what they have. Throws std::invalid_argument for an empty map
+// and, before any work, for a map naming more than tolerance::kMaxAuditSensors sensors; throws
+// cleaning::SnapTooSmall when the snap distance is too small for the map. Long solves call
+// `progress` at least every tolerance::kHeartbeatSeconds.
 #pragma once
 
 #include <functional>

@@ -81,7 +81,9 @@ int run_audit(const AuditCommandOptions& options) {
     plan.folder_files = {"report.json", "report.html", "sensors.geojson", "diagram.geojson"};
     plan.force = options.force;
     io::check_output_plan(plan);
-    say("reading the map");
+    std::error_code size_error;
+    const auto map_bytes = std::filesystem::file_size(options.map_path, size_error);
+    say("reading the map (" + (size_error ? std::string("size unknown") : fixed(map_bytes / 1e6, 1) + " MB") + ")");
     io::CoverageMapOptions mo;
     mo.sensor_property = options.sensor_property;
     mo.planar = options.planar;

@@ -26,6 +26,19 @@ using detail::SiteBlock;
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
+// Forwards Ceres' iterations to RefineOptions::on_iteration.
+class Heartbeat : public ceres::IterationCallback {
+ public:
+  explicit Heartbeat(const std::function<void(int)>& beat) : beat_(beat) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& summary) override {
+    beat_(summary.iteration);
+    return ceres::SOLVER_CONTINUE;
+  }
+
+ private:
+  const std::function<void(int)>& beat_;
+};
+
 ceres::Solver::Options solver_options(const RefineOptions& options) {
   ceres::Solver::Options solver;
   solver.max_num_iterations = options.max_iterations;
@@ -135,6 +148,8 @@ RefineResult refine_sites(std::span<const Site> initial, std::span<const Boundar
     ceres::Solver::Summary solved;
     ceres::Solver::Options solver = solver_options(options);
     if (solver.use_inner_iterations) solver.inner_iteration_ordering = inner_ordering(blocks, layout, samples);
+    Heartbeat heartbeat(options.on_iteration);
+    if (options.on_iteration) solver.callbacks.push_back(&heartbeat);
     ceres::Solve(solver, built.problem.get(), &solved);
     summary.converged = solved.termination_type == ceres::CONVERGENCE;
     summary.termination = ceres::TerminationTypeToString(solved.termination_type);

@@ -32,6 +32,7 @@
 
 #include <cstddef>
 #include <span>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -98,6 +99,9 @@ struct RefineOptions {
   int threads = 1;
   // Print Ceres' per-iteration progress to stdout.
   bool verbose = false;
+  // Called after every solver iteration with its number (from 0): a heartbeat for long solves.
+  // Empty: not called. Must not throw.
+  std::function<void(int iteration)> on_iteration;
 
   // True when every field is usable; otherwise false with the reason in *error (if not null).
   bool IsValid(std::string* error) const;

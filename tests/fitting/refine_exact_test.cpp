@@ -98,3 +98,28 @@ TEST(ExactRecovery, ProjectedCoordinatesInMetres) {
 
 }  // namespace
 }  // namespace covmap::fitting
+
+namespace covmap::fitting {
+namespace {
+
+// The heartbeat sees every iteration the solver reports, numbered from 0, and changes nothing.
+TEST(RefineHeartbeat, CalledOncePerIterationInOrder) {
+  const auto map = make_map(7, 3, 1.0, 2.0, 8);
+  const auto start = perturbed(map.sites, 103, 0.02, 0.05);
+  RefineOptions options;
+  std::vector<int> seen;
+  options.on_iteration = [&](int iteration) { seen.push_back(iteration); };
+  const RefineResult with = refine_sites(start, map.samples, {}, options);
+  options.on_iteration = nullptr;
+  const RefineResult without = refine_sites(start, map.samples, {}, options);
+  ASSERT_FALSE(seen.empty());
+  for (std::size_t k = 0; k < seen.size(); ++k) EXPECT_EQ(seen[k], static_cast<int>(k));
+  // Ceres reports iteration 0 (the start) and then steps; the step that ends the solve may come
+  // without a callback.
+  EXPECT_GE(static_cast<int>(seen.size()), with.summary.iterations);
+  EXPECT_LE(static_cast<int>(seen.size()), with.summary.iterations + 1);
+  for (std::size_t i = 0; i < with.sites.size(); ++i) EXPECT_EQ(with.sites[i].x, without.sites[i].x);
+}
+
+}  // namespace
+}  // namespace covmap::fitting
