@@ -39,7 +39,7 @@ void refuse_oversized(std::span<const CoverageCell> map) {
   std::unordered_set<std::string_view> sensors;
   for (const CoverageCell& cell : map) sensors.insert(cell.sensor);
   if (sensors.size() > tolerance::kMaxAuditSensors)
-    throw std::invalid_argument("the map names " + std::to_string(sensors.size()) + " sensors; one audit takes at most " +
+    throw MapTooLarge("the map names " + std::to_string(sensors.size()) + " sensors; one audit takes at most " +
                                 std::to_string(tolerance::kMaxAuditSensors) +
                                 " (the refinement would run for hours): split the map into regions");
 }

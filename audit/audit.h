@@ -10,7 +10,7 @@
 // from the map are listed with verdict kNotInMap; cells whose sensor was not reported get no
 // verdict. Never throws for a bad fit: a failed stage is reported in the result (stage messages)
 // and the later stages work with what they have. Throws std::invalid_argument for an empty map
-// and, before any work, for a map naming more than tolerance::kMaxAuditSensors sensors; throws
+// and, before any work, MapTooLarge for a map naming more than tolerance::kMaxAuditSensors; throws
 // cleaning::SnapTooSmall when the snap distance is too small for the map. Long solves call
 // `progress` at least every tolerance::kHeartbeatSeconds.
 #pragma once
@@ -18,6 +18,7 @@
 #include <functional>
 #include <optional>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,12 @@ struct AuditOptions {
   // Worker threads of the least-squares refinement. Until the refinement is made independent of
   // thread scheduling (issue 12), only one thread gives the same numbers on every run.
   int threads = 2;
+};
+
+// The map names more sensors than tolerance::kMaxAuditSensors; thrown before any work.
+class MapTooLarge : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
 };
 
 struct SensorAudit {

@@ -6,6 +6,7 @@
 
 #include "cli/cli_support.h"
 #include "io/diagram_json.h"
+#include "io/input_error.h"
 #include "io/sites_io.h"
 #include "check/check.h"
 
@@ -43,9 +44,9 @@ int run_check(const CheckCommandOptions& options) {
     if (!options.sites_path.empty()) {
       io::SiteTable table = io::read_sites(options.sites_path);
       if (table.sites.size() != diagram.sites.size() && !diagram.sites.empty())
-        throw std::invalid_argument(options.sites_path + ": " + std::to_string(table.sites.size()) +
-                                    " sites, but the diagram has " +
-                                    std::to_string(diagram.sites.size()));
+        throw io::InputError(options.sites_path, 0, "",
+                             std::to_string(table.sites.size()) + " sites, but the diagram '" + options.diagram_path +
+                                 "' has " + std::to_string(diagram.sites.size()));
       diagram.sites = std::move(table.sites);
     }
     check::CheckOptions check;

@@ -8,6 +8,7 @@
 #include <iostream>
 #include <unistd.h>
 
+#include "audit/audit.h"
 #include "cleaning/map_cleaning.h"
 #include "io/atomic_file.h"
 #include "io/input_error.h"
@@ -51,7 +52,7 @@ int guarded(const std::function<int()>& body) {
     return say(std::string(e.what()) + "; give a larger --snap (about the map's staircase step, in map units)", kBadInput);
   } catch (const voronoi::InvalidSites& e) {
     return say(e.what(), kBadInput);
-  } catch (const std::invalid_argument& e) {
+  } catch (const audit::MapTooLarge& e) {
     return say(e.what(), kBadInput);
   } catch (const std::bad_alloc&) {
     return say("out of memory; the input is too large for this machine (see docs/RELIABILITY.md for the limits)",

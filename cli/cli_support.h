@@ -15,7 +15,10 @@ namespace covmap::cli {
 // bisector graph (recognize); 4 internal errors only (a bug in covmap: please report it).
 enum ExitCode : int { kOk = 0, kFindings = 1, kBadInput = 2, kNotBisectorGraph = 3, kInternal = 4 };
 
-// Runs `body`, turning covmap's typed errors into a message on stderr and an exit code.
+// Runs `body`, turning covmap's typed errors into a message on stderr and an exit code: the errors
+// that describe the user's input or outputs (io::InputError, io::OutputError, InvalidSites,
+// cleaning::SnapTooSmall, audit::MapTooLarge) and running out of memory exit kBadInput; anything
+// else is a bug and exits kInternal.
 int guarded(const std::function<int()>& body);
 
 // Maps a command-line parse error onto the contract: help and --version exit 0 after printing;

@@ -9,6 +9,7 @@
 #include "core/readable_numbers.h"
 #include "io/atomic_file.h"
 #include "io/diagram_json.h"
+#include "io/input_error.h"
 #include "io/output_plan.h"
 #include "io/polygon_io.h"
 #include "io/sites_io.h"
@@ -50,11 +51,10 @@ int run_diagram(const DiagramOptions& options) {
       diagram = voronoi::build_diagram(table.sites, &stats);
     } catch (const voronoi::InvalidSites& e) {
       // Name the offending sites by where they were read from.
-      std::ostringstream msg;
-      msg << options.sites_path << ": " << plural(e.problems().size(), "invalid site");
+      std::vector<io::InputProblem> problems;
       for (const auto& p : e.problems())
-        msg << "\n  " << table.origin.at(p.index) << " (site '" << p.id << "'): " << p.problem;
-      throw std::invalid_argument(msg.str());
+        problems.push_back({0, table.origin.at(p.index) + " (site '" + p.id + "')", p.problem});
+      throw io::InputError(options.sites_path, std::move(problems));
     }
     if (!options.clip.empty()) diagram = voronoi::clip_diagram(diagram, io::parse_clip(options.clip));
     // Render everything before writing anything; then all outputs are replaced together or none.

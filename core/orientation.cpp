@@ -1,5 +1,6 @@
 #include "core/orientation.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -63,8 +64,19 @@ int orientation(Point a, Point b, Point c) {
   constexpr double kBound = (3.0 + 16.0 * kEps) * kEps;
   if (std::abs(det) > kBound * (std::abs(left) + std::abs(right))) return sign(det);
 
-  // Exact: expand the determinant into six products of input coordinates (no rounded differences)
-  // and sum their exact two-double representations.
+  // Exact: first scale every coordinate by one power of two so the largest magnitude is in
+  // [0.5, 1): that changes no sign and no mantissa, and keeps every product below 1, so none
+  // overflows (coordinates near 1e308 once gave NaN here) and products of coordinates of similar
+  // size do not underflow (a square of side 1e-162 once looked collinear). Then expand the
+  // determinant into six products of coordinates (no rounded differences) and sum their exact
+  // two-double representations.
+  int exponent = 0;
+  std::frexp(std::max({std::abs(a.x), std::abs(a.y), std::abs(b.x), std::abs(b.y), std::abs(c.x), std::abs(c.y)}),
+             &exponent);
+  for (Point* p : {&a, &b, &c}) {
+    p->x = std::ldexp(p->x, -exponent);
+    p->y = std::ldexp(p->y, -exponent);
+  }
   const std::array<std::array<double, 2>, 6> products = {{{b.x, c.y}, {-b.y, c.x}, {-b.x, a.y},
                                                           {b.y, a.x}, {-a.x, c.y}, {a.y, c.x}}};
   std::array<double, 12> terms{};

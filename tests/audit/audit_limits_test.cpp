@@ -31,7 +31,7 @@ TEST(AuditLimits, TooManySensorsAreRefusedBeforeAnyWork) {
   try {
     audit(cells, {}, options);
     FAIL() << "an oversized map was audited";
-  } catch (const std::invalid_argument& e) {
+  } catch (const MapTooLarge& e) {
     EXPECT_NE(std::string(e.what()).find("split the map into regions"), std::string::npos) << e.what();
   }
   EXPECT_FALSE(any_progress);  // refused before the first stage began

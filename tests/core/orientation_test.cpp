@@ -33,7 +33,9 @@ TEST(Orientation, MatchesIntegerArithmeticOnRandomAndNearlyCollinearPoints) {
       bx = ax + 4 * ((bx - ax) / 4), by = ay + 4 * ((by - ay) / 4);
       ++nearly;
     }
-    for (const double scale : {1.0, 0x1p-60, 0x1p+60}) {
+    // Also at the ends of the double range, where products overflow or underflow (fuzzing found a
+    // ring at ±1e308 read as clockwise and a square of side 1e-162 read as collinear).
+    for (const double scale : {1.0, 0x1p-60, 0x1p+60, 0x1p+980, 0x1p-1000}) {
       const Point a{static_cast<double>(ax) * scale, static_cast<double>(ay) * scale};
       const Point b{static_cast<double>(bx) * scale, static_cast<double>(by) * scale};
       const Point c{static_cast<double>(cx) * scale, static_cast<double>(cy) * scale};
