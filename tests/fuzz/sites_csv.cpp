@@ -1,0 +1,15 @@
+// Fuzz target: the sites CSV reader (io/sites_io.h, parse_sites with SitesFormat::kCsv).
+#include "checks.h"
+#include "io/input_error.h"
+#include "io/sites_io.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  using namespace covmap;
+  try {
+    const io::SiteTable table = io::parse_sites(fuzz::as_text(data, size), "fuzz.csv", io::SitesFormat::kCsv);
+    fuzz::check_sites(table.sites);
+    fuzz::require(table.origin.size() == table.sites.size(), "sites: one origin per site");
+  } catch (const io::InputError&) {
+  }
+  return 0;
+}
