@@ -71,5 +71,14 @@ TEST(InputLimits, TooManyFeaturesAreRefusedBeforeTheGeometryIsRead) {
   EXPECT_NE(message.find("at most " + std::to_string(kMaxMapFeatures)), std::string::npos) << message.substr(0, 300);
 }
 
+TEST(InputLimits, TooManyReportedSensorsAreRefused) {
+  std::string csv = "id,x,y,weight\n";
+  for (std::size_t i = 0; i <= kMaxReportedSensors; ++i) csv += "s" + std::to_string(i) + "," + std::to_string(i) + ",0,1\n";
+  ReportedSensorOptions planar;
+  planar.planar = true;
+  const std::string message = error_of([&] { parse_reported_sensors(csv, "r.csv", planar, SensorsFormat::kCsv); });
+  EXPECT_NE(message.find("at most " + std::to_string(kMaxReportedSensors)), std::string::npos) << message.substr(0, 300);
+}
+
 }  // namespace
 }  // namespace covmap::io
