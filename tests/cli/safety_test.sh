@@ -89,6 +89,9 @@ run 60 diagram "$work/s.csv" -o "$work/new/deeper/d.json" -q
 [ "$code" -eq 0 ] && [ -s "$work/new/deeper/d.json" ] && ok || fail "missing output folder: exit $code"
 run 60 diagram "$work/s.csv" -o "$work/f.txt/d.json" -q
 expect 2 "cannot" "output below a file"
+# 9b. A read-only location (sysfs refuses new files even to root, so this holds in CI too).
+run 60 diagram "$work/s.csv" -o /sys/covmap-test.json -q
+expect 2 "cannot write '/sys/covmap-test.json'.*(Permission denied|Read-only|not permitted)" "read-only location"
 
 # --- Leftovers of killed runs ----------------------------------------------------------------
 # 10. A SIGKILLed run's temporaries (a process id that cannot exist) and the NAME.tmp-N/NAME.old-N
