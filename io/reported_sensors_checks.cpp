@@ -4,6 +4,7 @@
 #include <tuple>
 #include <unordered_map>
 
+#include "io/input_limits.h"
 #include "io/reported_sensors_parsers.h"
 #include "io/text_util.h"
 
@@ -31,6 +32,10 @@ void check_values(SensorDraft& d) {
   if (d.xy) {
     check_finite(d.xy->x, "x", d);
     check_finite(d.xy->y, "y", d);
+    if (std::abs(d.xy->x) > kMaxPlanarCoordinate || std::abs(d.xy->y) > kMaxPlanarCoordinate)
+      d.problems.push_back("position (" + format_number(d.xy->x) + ", " + format_number(d.xy->y) +
+                           ") lies beyond ±1e8 m (100 000 km), where no projected coordinate system has values; "
+                           "is a coordinate mistyped or in the wrong unit?");
   }
   if (d.lon_lat) {
     const LonLat g = *d.lon_lat;
