@@ -1,6 +1,6 @@
 // polygon_check_bench: times the two simplicity checks of covmap::io on large polygons (issue 10,
 // "bounded work on hostile input"): polygon_defect (every --clip polygon, every arc graph's "clip")
-// and detail::first_crossing (every ring set of a coverage map). See docs/PERFORMANCE.md. Measures
+// and detail::find_crossing (every ring set of a coverage map). See docs/PERFORMANCE.md. Measures
 // only; nothing asserts a time.
 //
 //   polygon_check_bench --n 10000,100000,1e6 --shape spiral,circle,comb --check defect,crossing [--json]
@@ -100,7 +100,7 @@ int main(int argc, char** argv) {
   bool json_out = false;
   app.add_option("--n", sizes, "vertex counts (comma separated, 1e6 accepted)")->delimiter(',');
   app.add_option("--shape", shapes, "spiral, circle, comb")->delimiter(',')->check(CLI::IsMember({"spiral", "circle", "comb"}));
-  app.add_option("--check", checks, "defect (io::polygon_defect), crossing (io::detail::first_crossing)")
+  app.add_option("--check", checks, "defect (io::polygon_defect), crossing (io::detail::find_crossing)")
       ->delimiter(',')
       ->check(CLI::IsMember({"defect", "crossing"}));
   app.add_flag("--json", json_out, "one JSON object per row (JSON Lines)");
@@ -125,7 +125,7 @@ int main(int argc, char** argv) {
           answer = defect ? *defect : "none";
         } else {
           const std::vector<std::vector<Point>> rings{ring};
-          const auto crossing = covmap::io::detail::first_crossing(rings);
+          const auto crossing = covmap::io::detail::find_crossing(rings);
           answer = crossing ? "edges " + std::to_string(crossing->first.edge) + " and " + std::to_string(crossing->second.edge)
                             : "none";
         }
