@@ -1,5 +1,7 @@
 #include "io/coverage_map_crossings.h"
 
+#include <utility>
+
 #include "core/orientation.h"
 #include "io/segment_sweep.h"
 
@@ -31,8 +33,12 @@ std::optional<Crossing> find_crossing(std::span<const std::vector<Point>> rings)
   }
   // Accepting exactly the properly crossing pairs is the case io/segment_sweep.h proves: a crossing
   // is found whenever one exists, touching and overlapping edges notwithstanding.
-  const auto pair = find_adjacent_pair(edges, [&](std::size_t i, std::size_t j) {
-    return properly_cross(edges[i].a, edges[i].b, edges[j].a, edges[j].b);
+  const auto end = [&](std::size_t k, std::size_t step) {
+    const auto& ring = rings[refs[k].ring];
+    return ring[(refs[k].edge + step) % ring.size()];
+  };
+  const auto pair = find_adjacent_pair(std::move(edges), [&](std::size_t i, std::size_t j) {
+    return properly_cross(end(i, 0), end(i, 1), end(j, 0), end(j, 1));
   });
   if (!pair) return std::nullopt;
   return Crossing{refs[pair->first], refs[pair->second]};

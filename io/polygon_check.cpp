@@ -29,6 +29,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 #include "core/orientation.h"
@@ -74,6 +75,28 @@ std::string edge(std::span<const Point> ring, std::size_t i) {
   return "edge " + vertex(ring, i) + " -> " + vertex(ring, (i + 1) % ring.size());
 }
 
+// A vertex visited twice: the same point at two places of the ring (never consecutive ones, which
+// polygon_defect rejects before). Names the lexicographically first such point, by its first two
+// indices. O(n log n).
+std::optional<std::string> repeated_vertex(std::span<const Point> ring) {
+  std::vector<std::size_t> by_point(ring.size());
+  std::iota(by_point.begin(), by_point.end(), std::size_t{0});
+  std::sort(by_point.begin(), by_point.end(), [&](std::size_t i, std::size_t j) {
+    const Point p = ring[i], q = ring[j];
+    if (p.x != q.x) return p.x < q.x;
+    if (p.y != q.y) return p.y < q.y;
+    return i < j;
+  });
+  for (std::size_t k = 1; k < by_point.size(); ++k) {
+    const Point p = ring[by_point[k - 1]], q = ring[by_point[k]];
+    if (p.x == q.x && p.y == q.y) {
+      return "the polygon is not simple: vertex " + vertex(ring, by_point[k - 1]) + " and vertex " +
+             vertex(ring, by_point[k]) + " are the same point";
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::optional<std::string> polygon_defect(std::span<const Point> ring) {
@@ -94,30 +117,13 @@ std::optional<std::string> polygon_defect(std::span<const Point> ring) {
     const Point a = ring[i], b = ring[(i + 1) % n], c = ring[(i + 2) % n];
     if (doubles_back(a, b, c)) return edge(ring, i) + " and the next edge overlap";
   }
-  // A vertex visited twice: the same point at two places of the ring (never consecutive, since
-  // consecutive repeats were rejected above). The lexicographically first such point, by its first
-  // two indices.
-  std::vector<std::size_t> by_point(n);
-  std::iota(by_point.begin(), by_point.end(), std::size_t{0});
-  std::sort(by_point.begin(), by_point.end(), [&](std::size_t i, std::size_t j) {
-    const Point p = ring[i], q = ring[j];
-    if (p.x != q.x) return p.x < q.x;
-    if (p.y != q.y) return p.y < q.y;
-    return i < j;
-  });
-  for (std::size_t k = 1; k < n; ++k) {
-    const Point p = ring[by_point[k - 1]], q = ring[by_point[k]];
-    if (p.x == q.x && p.y == q.y) {
-      return "the polygon is not simple: vertex " + vertex(ring, by_point[k - 1]) + " and vertex " +
-             vertex(ring, by_point[k]) + " are the same point";
-    }
-  }
+  if (auto repeated = repeated_vertex(ring)) return repeated;
 
   std::vector<detail::Segment> edges(n);
   for (std::size_t i = 0; i < n; ++i) edges[i] = {ring[i], ring[(i + 1) % n]};
   const auto consecutive = [n](std::size_t i, std::size_t j) { return j == i + 1 || (i == 0 && j == n - 1); };
-  const auto meeting = detail::find_adjacent_pair(edges, [&](std::size_t i, std::size_t j) {
-    return !consecutive(i, j) && segments_meet(edges[i].a, edges[i].b, edges[j].a, edges[j].b);
+  const auto meeting = detail::find_adjacent_pair(std::move(edges), [&](std::size_t i, std::size_t j) {
+    return !consecutive(i, j) && segments_meet(ring[i], ring[(i + 1) % n], ring[j], ring[(j + 1) % n]);
   });
   if (meeting) return "the polygon is not simple: " + edge(ring, meeting->first) + " meets " + edge(ring, meeting->second);
   return std::nullopt;

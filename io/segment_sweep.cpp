@@ -6,6 +6,7 @@
 #include <limits>
 #include <set>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "core/orientation.h"
@@ -15,12 +16,6 @@ namespace {
 
 bool same(Point p, Point q) { return p.x == q.x && p.y == q.y; }
 bool lex_less(Point p, Point q) { return p.x < q.x || (p.x == q.x && p.y < q.y); }
-
-// A segment with its ends in sweep order: left < right lexicographically.
-struct Oriented {
-  Point left;
-  Point right;
-};
 
 struct Event {
   Point at;
@@ -38,7 +33,8 @@ bool event_before(const Event& e, const Event& f) {
 // with the segment being inserted, which starts at `at`, as one of the two arguments.
 class Below {
  public:
-  Below(const std::vector<Oriented>& segments, const Point& at) : segments_(&segments), at_(&at) {}
+  // `segments` have their ends in sweep order: a < b lexicographically.
+  Below(const std::vector<Segment>& segments, const Point& at) : segments_(&segments), at_(&at) {}
 
   bool operator()(std::uint32_t i, std::uint32_t j) const { return order(i, j) < 0; }
 
@@ -46,9 +42,9 @@ class Below {
   // +1 when `at` lies above segment k (k is below the event point), -1 below, 0 when k contains
   // it (k is active, so "on its line" is "on it").
   int side(std::uint32_t k) const {
-    const Oriented& s = (*segments_)[k];
-    if (same(s.left, *at_)) return 0;
-    return orientation(s.left, s.right, *at_);
+    const Segment& s = (*segments_)[k];
+    if (same(s.a, *at_)) return 0;
+    return orientation(s.a, s.b, *at_);
   }
 
   // -1 when i is below j just after the event point, +1 above, 0 for the same segment.
@@ -58,7 +54,7 @@ class Below {
     if (si == 0 && sj == 0) {
       // Both through the event point: by direction out of it (counter-clockwise is above), then
       // collinear overlapping segments by index.
-      const int turn = orientation(*at_, (*segments_)[i].right, (*segments_)[j].right);
+      const int turn = orientation(*at_, (*segments_)[i].b, (*segments_)[j].b);
       if (turn != 0) return -turn;
       return i < j ? -1 : 1;
     }
@@ -71,31 +67,30 @@ class Below {
     return si > sj ? -1 : 1;
   }
 
-  const std::vector<Oriented>* segments_;
+  const std::vector<Segment>* segments_;
   const Point* at_;
 };
 
 }  // namespace
 
-std::optional<SegmentPair> find_adjacent_pair(std::span<const Segment> segments,
+std::optional<SegmentPair> find_adjacent_pair(std::vector<Segment> segments,
                                               const std::function<bool(std::size_t, std::size_t)>& accept) {
   if (segments.size() >= (std::size_t{1} << 31)) throw std::length_error("find_adjacent_pair: too many segments");
-  std::vector<Oriented> oriented(segments.size());
   std::vector<Event> events;
   events.reserve(2 * segments.size());
   for (std::size_t k = 0; k < segments.size(); ++k) {
-    const Segment& s = segments[k];
+    Segment& s = segments[k];
     if (same(s.a, s.b)) continue;
-    oriented[k] = lex_less(s.a, s.b) ? Oriented{s.a, s.b} : Oriented{s.b, s.a};
+    if (lex_less(s.b, s.a)) std::swap(s.a, s.b);  // from here on, a is the left end
     const auto id = static_cast<std::uint32_t>(k);
-    events.push_back({oriented[k].left, id, true});
-    events.push_back({oriented[k].right, id, false});
+    events.push_back({s.a, id, true});
+    events.push_back({s.b, id, false});
   }
   std::sort(events.begin(), events.end(), event_before);
 
   Point at{};
   using Status = std::set<std::uint32_t, Below>;
-  Status status(Below(oriented, at));
+  Status status(Below(segments, at));
   std::vector<Status::iterator> where(segments.size(), status.end());
 
   const auto test = [&](Status::iterator lower, Status::iterator upper) -> std::optional<SegmentPair> {

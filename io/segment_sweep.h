@@ -85,7 +85,7 @@
 #include <cstddef>
 #include <functional>
 #include <optional>
-#include <span>
+#include <vector>
 
 #include "core/diagram.h"
 
@@ -108,7 +108,9 @@ struct SegmentPair {
 // argument (io/polygon_check.cpp has one). Segments of zero length are never inserted, so never
 // tested. The answer is deterministic: it depends only on the coordinates and the order of the
 // segments. Throws std::length_error for 2^31 segments or more.
-std::optional<SegmentPair> find_adjacent_pair(std::span<const Segment> segments,
+// The segments are taken by value (move them in): the sweep puts each one's ends in sweep order in
+// place, and `accept` should read the geometry from the caller's own data.
+std::optional<SegmentPair> find_adjacent_pair(std::vector<Segment> segments,
                                               const std::function<bool(std::size_t, std::size_t)>& accept);
 
 }  // namespace covmap::io::detail
