@@ -594,7 +594,7 @@ TEST(PolygonChecksLarge, FineSpiralIsSimple) {
 
 TEST(PolygonChecksLarge, TouchAndCrossingInALargeIntegerSpiral) {
   // 10^5 vertices on integers; a spike from one turn of the inner spiral reaches exactly onto an
-  // edge of the previous turn's outer spiral (a touch), or one unit past it (a crossing).
+  // edge of the previous turn's outer spiral (a touch), or a little past it (a crossing).
   const std::size_t m = 50000;
   const double turns = 40;
   const Ring r = spiral_ring(m, turns, 10000);
@@ -622,7 +622,7 @@ TEST(PolygonChecksLarge, TouchAndCrossingInALargeIntegerSpiral) {
   EXPECT_NE(defect->find("not simple"), std::string::npos) << *defect;
   EXPECT_FALSE(detail::find_crossing(Rings{touching}));
 
-  // One unit towards the centre: past the edge (the edge is ~10^3 units from the next turn in).
+  // About two units towards the centre: just past the edge, inside the 5 000-unit-wide strip behind it.
   const double norm = std::hypot(touch->x, touch->y);
   const Point past{touch->x - std::round(2 * touch->x / norm), touch->y - std::round(2 * touch->y / norm)};
   const auto crossing = detail::find_crossing(Rings{with_spike(past)});
