@@ -33,8 +33,9 @@
 // --planar ("coordinates look planar (x=...); use --planar"); self-crossing rings; and mixed or
 // non-WGS84 crs declarations. Consecutive repeated positions are dropped silently.
 //
-// Cost: O(V log V) for V vertices (crossings are found with a sparse grid whose cell size follows
-// the edge lengths; only rings with wildly uneven edge density approach the quadratic worst case).
+// Cost: O(V log V) for V vertices, whatever the shape of the rings (crossings are found by a
+// sweep line, io/segment_sweep.h). When a polygon's rings cross at several places, the message
+// names one crossing: the first the sweep meets, which depends only on the input.
 #pragma once
 
 #include <cstddef>

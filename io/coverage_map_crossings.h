@@ -4,12 +4,11 @@
 // pass through each other: each edge has the endpoints of the other strictly on opposite sides.
 // Edges that only touch (an endpoint on the other edge, a shared vertex) or overlap along a line
 // are not proper crossings; neither are consecutive edges, which share a vertex. The decision is
-// exact (io/polygon_check.h orientation(): filtered, exact fallback), so no tolerance is involved.
+// exact (core/orientation.h: filtered, exact fallback), so no tolerance is involved.
 //
-// Cost: edges are bucketed in a sparse grid whose cell size is the median edge length (enlarged so
-// that long edges occupy at most about kCellsPerEdge cells each on average), and only edges sharing
-// a cell are compared: O(E log E) for E edges of evenly sized rings such as exported maps. Many
-// short edges packed into one cell next to a few long edges make it quadratic in the worst case.
+// Cost: O(E log E) time and O(E) memory for E edges, whatever their shape: the sweep of
+// io/segment_sweep.h, which tests only edges that are neighbours on the sweep line and is proved
+// there to find a proper crossing whenever one exists, however many edges touch or overlap.
 #pragma once
 
 #include <cstddef>
@@ -36,9 +35,12 @@ struct Crossing {
 // Whether the segments p1-p2 and q1-q2 cross properly (see above). Exact.
 bool properly_cross(Point p1, Point p2, Point q1, Point q2);
 
-// The crossing with the smallest (first, second) among all proper crossings between edges of the
-// rings (within one ring or between two), or nullopt if there is none. Rings are implicitly closed,
-// have at least 3 vertices and finite coordinates. The answer does not depend on the grid.
-std::optional<Crossing> first_crossing(std::span<const std::vector<Point>> rings);
+// One proper crossing between edges of the rings (within one ring or between two), or nullopt if
+// there is none: exact in both directions. Which crossing, when there are several: the first that
+// the sweep meets, not the one of smallest (first, second) (that one is not known to be findable in
+// O(E log E)); the answer depends only on the rings, so the same input always names the same pair.
+// Rings are implicitly closed and have finite coordinates; edges of zero length (repeated
+// consecutive vertices) are ignored, as they cannot cross anything properly.
+std::optional<Crossing> find_crossing(std::span<const std::vector<Point>> rings);
 
 }  // namespace covmap::io::detail

@@ -104,7 +104,7 @@ std::optional<MapPolygon> make_map_polygon(const std::vector<RingInput>& rings, 
   std::vector<std::vector<Point>> points;
   points.reserve(clean_rings.size());
   for (auto& c : clean_rings) points.push_back(std::move(c.points));
-  if (const auto crossing = first_crossing(points)) {
+  if (const auto crossing = find_crossing(points)) {
     const auto [a, b] = *crossing;
     const auto edge_a = edge_text(rings[a.ring], clean_rings[a.ring].source, a.edge);
     const auto edge_b = edge_text(rings[b.ring], clean_rings[b.ring].source, b.edge);

@@ -1,12 +1,39 @@
+// polygon_defect: local checks in O(n), repeated vertices by sorting, and the sweep of
+// io/segment_sweep.h for edges that meet. O(n log n) time, O(n) memory.
+//
+// Why the sweep finds every meeting of edges here (the sweep's own argument covers proper
+// crossings only; touching needs this one). When the sweep runs, the ring has at least 3 vertices,
+// all finite and pairwise distinct, and no two consecutive edges overlap (double back). Then two
+// consecutive edges meet exactly at their shared vertex, and the defects are the "bad" pairs:
+// non-consecutive edges that meet. The sweep accepts exactly the bad pairs; a properly crossing pair
+// is bad, so find_adjacent_pair's precondition holds, and (G), (C), (N) of io/segment_sweep.h apply.
+// Suppose a bad pair exists; let X be the first point (lexicographically) that lies on both edges
+// of a bad pair. Vertices are distinct, so at most two edges end at X, and if two, they are the two
+// edges of the vertex X, which are consecutive; so one edge of the bad pair, P, has X in its
+// relative interior. Any other edge E through X forms a bad pair with P: were they consecutive,
+// they would meet at their shared vertex and at X, which is not a vertex of P, so they would
+// overlap. No proper crossing comes before X (it would be an earlier bad point). Let T be the edges
+// through X that begin before X (P is one). If the sweep has not stopped before:
+//   - T has another member: T is a contiguous run of the status after the last event before X, in
+//     order (C, G), so P has a neighbour in T there; that pair is bad and was tested (N).
+//   - T = {P}: the other edge of the bad pair begins at X, so X is a vertex and both its edges begin
+//     there (an edge ending at X would be in T). No removal happens at X, and no two edges of the
+//     status cross properly at X (only P has X inside), so by (G) the first insertion at X, E,
+//     searches an ordered status and lands in the order just after X. An edge between P and E just
+//     after X would be squeezed towards X, hence contain X, hence be the other edge of the vertex,
+//     not yet inserted: E lands next to P and the bad pair (P, E) is tested.
+// So the sweep accepts a bad pair whenever there is one, and it accepts nothing else: the ring is
+// simple exactly when the sweep finds nothing.
 #include "io/polygon_check.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <limits>
+#include <numeric>
+#include <utility>
 #include <vector>
 
 #include "core/orientation.h"
+#include "io/segment_sweep.h"
 #include "io/text_util.h"
 
 namespace covmap::io {
@@ -48,6 +75,28 @@ std::string edge(std::span<const Point> ring, std::size_t i) {
   return "edge " + vertex(ring, i) + " -> " + vertex(ring, (i + 1) % ring.size());
 }
 
+// A vertex visited twice: the same point at two places of the ring (never consecutive ones, which
+// polygon_defect rejects before). Names the lexicographically first such point, by its first two
+// indices. O(n log n).
+std::optional<std::string> repeated_vertex(std::span<const Point> ring) {
+  std::vector<std::size_t> by_point(ring.size());
+  std::iota(by_point.begin(), by_point.end(), std::size_t{0});
+  std::sort(by_point.begin(), by_point.end(), [&](std::size_t i, std::size_t j) {
+    const Point p = ring[i], q = ring[j];
+    if (p.x != q.x) return p.x < q.x;
+    if (p.y != q.y) return p.y < q.y;
+    return i < j;
+  });
+  for (std::size_t k = 1; k < by_point.size(); ++k) {
+    const Point p = ring[by_point[k - 1]], q = ring[by_point[k]];
+    if (p.x == q.x && p.y == q.y) {
+      return "the polygon is not simple: vertex " + vertex(ring, by_point[k - 1]) + " and vertex " +
+             vertex(ring, by_point[k]) + " are the same point";
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::optional<std::string> polygon_defect(std::span<const Point> ring) {
@@ -68,14 +117,15 @@ std::optional<std::string> polygon_defect(std::span<const Point> ring) {
     const Point a = ring[i], b = ring[(i + 1) % n], c = ring[(i + 2) % n];
     if (doubles_back(a, b, c)) return edge(ring, i) + " and the next edge overlap";
   }
-  for (std::size_t i = 0; i < n; ++i) {
-    for (std::size_t j = i + 2; j < n; ++j) {
-      if (i == 0 && j == n - 1) continue;  // consecutive through the closing vertex
-      if (segments_meet(ring[i], ring[(i + 1) % n], ring[j], ring[(j + 1) % n])) {
-        return "the polygon is not simple: " + edge(ring, i) + " meets " + edge(ring, j);
-      }
-    }
-  }
+  if (auto repeated = repeated_vertex(ring)) return repeated;
+
+  std::vector<detail::Segment> edges(n);
+  for (std::size_t i = 0; i < n; ++i) edges[i] = {ring[i], ring[(i + 1) % n]};
+  const auto consecutive = [n](std::size_t i, std::size_t j) { return j == i + 1 || (i == 0 && j == n - 1); };
+  const auto meeting = detail::find_adjacent_pair(std::move(edges), [&](std::size_t i, std::size_t j) {
+    return !consecutive(i, j) && segments_meet(ring[i], ring[(i + 1) % n], ring[j], ring[(j + 1) % n]);
+  });
+  if (meeting) return "the polygon is not simple: " + edge(ring, meeting->first) + " meets " + edge(ring, meeting->second);
   return std::nullopt;
 }
 
