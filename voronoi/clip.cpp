@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/box.h"
 #include "voronoi/arc_path.h"
 #include "voronoi/faces.h"
 #include "voronoi/tolerances.h"
@@ -55,11 +56,12 @@ struct Boundary {
   }
 };
 
+// The diagonal of the polygon's bounding box stands for its diameter (it is between the diameter
+// and √2 times it): O(m) where the pairwise diameter took O(m²), 5 s for 30 000 vertices.
 double snap_distance(const std::vector<Point>& polygon) {
-  double diam = 0;
-  for (const Point& p : polygon)
-    for (const Point& q : polygon) diam = std::max(diam, std::hypot(p.x - q.x, p.y - q.y));
-  return tolerance::kClipSnap * diam;
+  Box box;
+  for (const Point& p : polygon) box.add(p.x, p.y);
+  return tolerance::kClipSnap * box.diagonal();
 }
 
 // The nodes of d inside the polygon, copied into `out`; per node of d, its index in `out` (kNone

@@ -27,7 +27,7 @@ inline constexpr double kRayTie = 1e-12;
 inline constexpr double kRayTangent = 1e-12;
 
 // Clipping: a crossing of an arc with the clip boundary closer than this fraction of the clip
-// polygon's diameter to a polygon vertex is snapped onto that vertex, so an arc through a corner
+// polygon's size (the diagonal of its bounding box) to a polygon vertex is snapped onto that vertex, so an arc through a corner
 // is not split into a piece of zero length.
 inline constexpr double kClipSnap = 1e-12;
 
