@@ -34,13 +34,13 @@ class StageTimer {
   std::vector<std::string>& messages_;
 };
 
-// kMaxAuditSensors, checked before any work.
+// kMaxSensors, checked before any work.
 void refuse_oversized(std::span<const CoverageCell> map) {
   std::unordered_set<std::string_view> sensors;
   for (const CoverageCell& cell : map) sensors.insert(cell.sensor);
-  if (sensors.size() > tolerance::kMaxAuditSensors)
+  if (sensors.size() > kMaxSensors)
     throw MapTooLarge("the map names " + std::to_string(sensors.size()) + " sensors; one audit takes at most " +
-                                std::to_string(tolerance::kMaxAuditSensors) +
+                                std::to_string(kMaxSensors) +
                                 " (the refinement would run for hours): split the map into regions");
 }
 

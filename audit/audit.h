@@ -10,11 +10,12 @@
 // from the map are listed with verdict kNotInMap; cells whose sensor was not reported get no
 // verdict. Never throws for a bad fit: a failed stage is reported in the result (stage messages)
 // and the later stages work with what they have. Throws std::invalid_argument for an empty map
-// and, before any work, MapTooLarge for a map naming more than tolerance::kMaxAuditSensors; throws
+// and, before any work, MapTooLarge for a map naming more than kMaxSensors; throws
 // cleaning::SnapTooSmall when the snap distance is too small for the map. Long solves call
 // `progress` at least every tolerance::kHeartbeatSeconds.
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <optional>
 #include <span>
@@ -56,7 +57,13 @@ struct AuditOptions {
   int threads = 2;
 };
 
-// The map names more sensors than tolerance::kMaxAuditSensors; thrown before any work.
+// The most sensors one audit takes. The joint refinement grows faster than linearly (a 10⁴-sensor
+// map took ~80 s end to end on a loaded 2-core machine, docs/RELIABILITY.md), so a map of 10⁶
+// sensors would run for hours; above the limit the audit is refused at once with a message that
+// says to split the map into regions.
+inline constexpr std::size_t kMaxSensors = 100'000;
+
+// The map names more sensors than kMaxSensors; thrown before any work.
 class MapTooLarge : public std::invalid_argument {
  public:
   using std::invalid_argument::invalid_argument;

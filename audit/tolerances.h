@@ -62,12 +62,6 @@ inline constexpr std::size_t kDenseSamplingSensors = 3000;
 // a 10⁴-sensor map: mean IoU 0.942 -> 0.953 for twice the refinement time (55 s end to end).
 inline constexpr int kRestartRounds = 1;
 
-// Not a tolerance but a limit: the most sensors one audit takes. The joint refinement grows faster
-// than linearly (a 10⁴-sensor map took ~150 s of refinement on a loaded 2-core machine, see
-// docs/RELIABILITY.md), so a map of 10⁶ sensors would run for hours; above the limit the audit is
-// refused at once with a message that says to split the map into regions.
-inline constexpr std::size_t kMaxAuditSensors = 100'000;
-
 // Seconds between progress heartbeats inside a long stage (solver iterations).
 inline constexpr double kHeartbeatSeconds = 5.0;
 

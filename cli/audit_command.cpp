@@ -87,6 +87,7 @@ int run_audit(const AuditCommandOptions& options) {
     io::CoverageMapOptions mo;
     mo.sensor_property = options.sensor_property;
     mo.planar = options.planar;
+    mo.max_sensors = audit::kMaxSensors;
     const io::CoverageMap map = io::read_coverage_map(options.map_path, mo);
     std::vector<ReportedSensor> reported;
     if (!options.sensors_path.empty()) {

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string_view>
+#include <unordered_set>
 
 #include "io/coverage_map_rings.h"
 #include "io/geojson_crs.h"
@@ -275,6 +277,14 @@ CoverageMap parse_coverage_map(std::string_view text, const std::string& file, c
   {
     const Json root = detail::parse_json(text, file);  // freed before the second pass
     drafts = read_features(root, file, options, crs);
+  }
+  if (options.max_sensors > 0) {
+    std::unordered_set<std::string_view> sensors;
+    for (const auto& d : drafts) sensors.insert(d.sensor);
+    if (sensors.size() > options.max_sensors)
+      throw InputError(file, 0, "", "the map names " + std::to_string(sensors.size()) + " sensors; one audit takes at most " +
+                                        std::to_string(options.max_sensors) +
+                                        " (the refinement would run for hours): split the map into regions");
   }
   std::size_t vertices = 0;
   for (const auto& d : drafts)

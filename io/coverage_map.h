@@ -68,6 +68,10 @@ struct CoverageMapOptions {
   // true: positions are planar [x, y] in metres (or any one unit), used as they are, and any crs
   // declaration is accepted (`--planar`). false: positions are WGS84 [lon, lat].
   bool planar = false;
+  // Refuse, before the geometry is checked, a map naming more distinct sensors than this (0: no
+  // limit). `covmap audit` passes its own limit (audit::kMaxSensors), so an
+  // oversized map is refused after the JSON is parsed instead of after every ring is validated.
+  std::size_t max_sensors = 0;
 };
 
 CoverageMap read_coverage_map(const std::filesystem::path& path, const CoverageMapOptions& options = {});

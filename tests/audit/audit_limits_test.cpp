@@ -24,7 +24,7 @@ std::vector<CoverageCell> unit_square_cells(std::size_t n) {
 }
 
 TEST(AuditLimits, TooManySensorsAreRefusedBeforeAnyWork) {
-  const auto cells = unit_square_cells(tolerance::kMaxAuditSensors + 1);
+  const auto cells = unit_square_cells(kMaxSensors + 1);
   AuditOptions options;
   bool any_progress = false;
   options.progress = [&](const std::string&, double) { any_progress = true; };
