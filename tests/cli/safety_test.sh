@@ -139,6 +139,18 @@ expect 2 "alpha: must be a positive number" "--alpha nan"
 run 10 audit --planar "$map" -o "$work/a2" --threads 0
 expect 2 "threads: must be a whole number in 1.64" "--threads 0"
 
+# Findings: audit exits 0 whatever the verdicts, 1 with --fail-on-inconsistent when a reported
+# sensor is inconsistent (the generator moved half of the sensors by 800-1200 m); messages in fixed
+# notation.
+"$make_map" --random 8 --area 5,5 --seed 4 --gross-fraction 0.5 --gross-position 800,1200 -o "$work/gross" -q
+run 120 audit --planar "$work/gross/map.geojson" --sensors "$work/gross/sensors.geojson" --alpha 3.5 -o "$work/g0" -q
+expect 0 "inconsistent: position off by [0-9]+ m \([0-9.]+ σ\)" "audit with inconsistent sensors"
+grep -qE "e[+-][0-9]" "$work/out.txt" && fail "exponent in an audit message: $(cat "$work/out.txt")" || ok
+run 120 audit --planar "$work/gross/map.geojson" --sensors "$work/gross/sensors.geojson" --alpha 3.5 -o "$work/g1" -q \
+  --fail-on-inconsistent
+expect 1 "inconsistent" "--fail-on-inconsistent"
+[ -s "$work/g1/report.json" ] && ok || fail "--fail-on-inconsistent: reports not written"
+
 # --- Hostile inputs: exit 2 with the reason, in bounded time -------------------------------
 # 12. ~200 KB of nested brackets in a map's coordinates, in a crs member, in a sensors file.
 python3 - "$work" <<'PY'
