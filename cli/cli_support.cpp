@@ -12,6 +12,7 @@
 #include "cleaning/map_cleaning.h"
 #include "io/atomic_file.h"
 #include "io/input_error.h"
+#include "voronoi/clip.h"
 #include "voronoi/engine.h"
 
 namespace covmap::cli {
@@ -51,6 +52,8 @@ int guarded(const std::function<int()>& body) {
   } catch (const cleaning::SnapTooSmall& e) {
     return say(std::string(e.what()) + "; give a larger --snap (about the map's staircase step, in map units)", kBadInput);
   } catch (const voronoi::InvalidSites& e) {
+    return say(e.what(), kBadInput);
+  } catch (const voronoi::ClipTooLarge& e) {
     return say(e.what(), kBadInput);
   } catch (const audit::MapTooLarge& e) {
     return say(e.what(), kBadInput);

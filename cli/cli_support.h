@@ -17,7 +17,8 @@ enum ExitCode : int { kOk = 0, kFindings = 1, kBadInput = 2, kNotBisectorGraph =
 
 // Runs `body`, turning covmap's typed errors into a message on stderr and an exit code: the errors
 // that describe the user's input or outputs (io::InputError, io::OutputError, InvalidSites,
-// cleaning::SnapTooSmall, audit::MapTooLarge) and running out of memory exit kBadInput; anything
+// cleaning::SnapTooSmall, audit::MapTooLarge, voronoi::ClipTooLarge) and running out of memory
+// exit kBadInput; anything
 // else is a bug and exits kInternal.
 int guarded(const std::function<int()>& body);
 

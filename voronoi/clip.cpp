@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "core/box.h"
 #include "voronoi/arc_path.h"
@@ -214,6 +215,11 @@ void add_frame_arcs(const std::vector<Site>& sites, Boundary& boundary, Diagram&
 
 Diagram clip_diagram(const Diagram& d, const std::vector<Point>& polygon) {
   if (polygon.size() < 3) throw std::invalid_argument("clip polygon needs at least 3 vertices");
+  const double work = static_cast<double>(d.arcs.size() + d.nodes.size()) * static_cast<double>(polygon.size());
+  if (work > tolerance::kMaxClipWork)
+    throw ClipTooLarge("clipping " + std::to_string(d.arcs.size()) + " arcs to a polygon of " +
+                       std::to_string(polygon.size()) + " vertices would take hours (the work grows with their " +
+                       "product); simplify the clip polygon");
   Diagram out;
   out.sites = d.sites;
   out.clip = polygon;

@@ -8,13 +8,22 @@
 // polygon simply has no face. Crossings are computed in floating point: clipping is a
 // construction, not a combinatorial decision of the diagram; crossings within
 // tolerance::kClipSnap of a polygon vertex are snapped onto it.
+//
+// Cost: O((arcs + nodes) × polygon vertices) plus face tracing. Throws ClipTooLarge, before any
+// work, when that product exceeds tolerance::kMaxClipWork.
 #pragma once
 
+#include <stdexcept>
 #include <vector>
 
 #include "core/diagram.h"
 
 namespace covmap::voronoi {
+
+class ClipTooLarge : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
 
 Diagram clip_diagram(const Diagram& d, const std::vector<Point>& polygon);
 

@@ -30,6 +30,11 @@ inline constexpr double kRayTangent = 1e-12;
 // polygon's size (the diagonal of its bounding box) to a polygon vertex is snapped onto that vertex, so an arc through a corner
 // is not split into a piece of zero length.
 inline constexpr double kClipSnap = 1e-12;
+// Not a tolerance but a limit: clipping tests every arc and every node against every polygon
+// edge, so its work is (arcs + nodes) × polygon vertices. Beyond this many such tests (a few
+// minutes) clip_diagram refuses with ClipTooLarge rather than run for hours: 10^5 arcs (and their
+// nodes) against a 20 000-vertex polygon is allowed, 10^4 sites against a 10^6-vertex polygon is not.
+inline constexpr double kMaxClipWork = 4e9;
 
 // Engine: root nodes of different triangulation facets closer than this fraction of the sites'
 // extent are *candidates* for being one node (facets whose lifted sites are coplanar and

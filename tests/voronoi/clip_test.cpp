@@ -11,6 +11,7 @@
 #include "voronoi/clip.h"
 #include "voronoi/engine.h"
 #include "voronoi/faces.h"
+#include "voronoi/tolerances.h"
 
 namespace covmap::voronoi {
 namespace {
@@ -95,6 +96,26 @@ TEST(Clip, PolygonInsideOneRegionIsOneFrameFace) {
   EXPECT_EQ(d.faces[0].site, 0);
   EXPECT_TRUE(d.faces[0].bounded);
   for (const Arc& a : d.arcs) EXPECT_TRUE(a.frame);
+}
+
+// Clipping's work is (arcs + nodes) × polygon vertices: a product beyond kMaxClipWork is refused
+// before any work (issue 10: a 10^6-vertex polygon would have run for hours), one just below it
+// is not refused by the check.
+TEST(Clip, WorkBeyondTheLimitIsRefusedAtOnce) {
+  const Diagram d = build_diagram(testing::make_sites(testing::Family::UniformWeights, 2000, 3));
+  const double items = static_cast<double>(d.arcs.size() + d.nodes.size());
+  const auto ring = [](std::size_t m) {
+    std::vector<Point> polygon(m);
+    for (std::size_t k = 0; k < m; ++k) {
+      const double a = 2 * M_PI * static_cast<double>(k) / static_cast<double>(m);
+      polygon[k] = {1e6 * std::cos(a), 1e6 * std::sin(a)};
+    }
+    return polygon;
+  };
+  const auto over = static_cast<std::size_t>(tolerance::kMaxClipWork / items) + 1;
+  EXPECT_THROW(clip_diagram(d, ring(over)), ClipTooLarge);
+  const Diagram small = build_diagram(testing::make_sites(testing::Family::UniformWeights, 5, 3));
+  EXPECT_NO_THROW(clip_diagram(small, ring(1000)));
 }
 
 }  // namespace
