@@ -5,8 +5,8 @@
 # Usage: safety_test.sh path/to/covmap path/to/covmap-make-map
 # Every covmap call runs under `timeout`: a hang is a failure, not a stuck test suite.
 set -u
-covmap="$1"
-make_map="$2"
+covmap=$(realpath "$1")
+make_map=$(realpath "$2")
 work=$(mktemp -d)
 trap 'chmod -R u+w "$work" 2>/dev/null; rm -rf "$work"' EXIT
 passed=0
