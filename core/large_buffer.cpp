@@ -22,8 +22,12 @@ struct BlockCache {
   std::size_t cached = 0;
 };
 
+// Never destroyed: a static BlockCache was destroyed at exit, its map freed but not the blocks in
+// it (LeakSanitizer reported every kept block as leaked), and a LargeVector freed after that (a
+// static one, a thread still running) would have locked a destroyed mutex. Kept blocks now stay
+// reachable from here until the process ends.
 BlockCache& block_cache() {
-  static BlockCache cache;
+  static BlockCache& cache = *new BlockCache;
   return cache;
 }
 
