@@ -8,6 +8,9 @@
 #if defined(__linux__)
 #include <sys/mman.h>
 #endif
+#if defined(__SANITIZE_ADDRESS__)
+#include <sanitizer/asan_interface.h>
+#endif
 
 namespace covmap {
 namespace {
@@ -22,8 +25,12 @@ struct BlockCache {
   std::size_t cached = 0;
 };
 
+// Never destroyed: a static BlockCache was destroyed at exit, its map freed but not the blocks in
+// it (LeakSanitizer reported every kept block as leaked), and a LargeVector freed after that (a
+// static one, a thread still running) would have locked a destroyed mutex. Kept blocks now stay
+// reachable from here until the process ends.
 BlockCache& block_cache() {
-  static BlockCache cache;
+  static BlockCache& cache = *new BlockCache;
   return cache;
 }
 
@@ -37,6 +44,24 @@ void advise(void* p, std::size_t bytes) {
   const auto begin = (reinterpret_cast<std::uintptr_t>(p) + kHugePage - 1) / kHugePage * kHugePage;
   const auto end = (reinterpret_cast<std::uintptr_t>(p) + bytes) / kHugePage * kHugePage;
   if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+#else
+  (void)p, (void)bytes;
+#endif
+}
+
+// Under AddressSanitizer (scripts/sanitize.sh) a kept block is poisoned, and so is the part of a
+// block beyond the bytes asked for: ASan sees the whole block as one live allocation, so without
+// this a use after deallocate_large, or an overflow into the rounding, would go unnoticed.
+void poison(void* p, std::size_t bytes) {
+#if defined(__SANITIZE_ADDRESS__)
+  ASAN_POISON_MEMORY_REGION(p, bytes);
+#else
+  (void)p, (void)bytes;
+#endif
+}
+void unpoison(void* p, std::size_t bytes) {
+#if defined(__SANITIZE_ADDRESS__)
+  ASAN_UNPOISON_MEMORY_REGION(p, bytes);
 #else
   (void)p, (void)bytes;
 #endif
@@ -63,12 +88,14 @@ void* allocate_large(std::size_t bytes) {
       void* p = it->second;
       cache.cached -= it->first;
       cache.free_blocks.erase(it);
+      unpoison(p, bytes);
       return p;
     }
   }
   void* p = std::aligned_alloc(kHugePage, rounded);
   if (!p) throw std::bad_alloc();
   advise(p, rounded);
+  poison(static_cast<char*>(p) + bytes, rounded - bytes);
   const std::lock_guard lock(cache.mutex);
   cache.size_of[p] = rounded;
   return p;
@@ -84,11 +111,13 @@ void deallocate_large(void* p, std::size_t bytes) noexcept {
   const std::lock_guard lock(cache.mutex);
   const std::size_t size = cache.size_of.at(p);
   if (cache.cached + size <= kMaxCached) {
+    poison(p, size);
     cache.free_blocks.emplace(size, p);
     cache.cached += size;
     return;
   }
   cache.size_of.erase(p);
+  unpoison(p, size);
   std::free(p);
 }
 
@@ -97,6 +126,7 @@ void release_large_buffers() noexcept {
   const std::lock_guard lock(cache.mutex);
   for (const auto& [size, p] : cache.free_blocks) {
     cache.size_of.erase(p);
+    unpoison(p, size);
     std::free(p);
   }
   cache.free_blocks.clear();

@@ -16,11 +16,22 @@ namespace covmap::recognition {
 namespace {
 
 
+// Cells are hashed in unsigned arithmetic: a node 10^6 extents from the origin is ~10^13 cells
+// out, and the signed product overflowed. Coordinates beyond 2^62 cells, infinite or NaN (a node of
+// a degenerate input, recomputed) are clamped to the last cell before the conversion, which was
+// undefined for them; whether such a node matches is still decided by its distance.
 struct Grid {
   double cell;
   std::unordered_map<long long, std::vector<int>> buckets;
-  static long long key(long long x, long long y) { return x * 73856093LL ^ y * 19349663LL; }
-  long long ix(double v) const { return static_cast<long long>(std::floor(v / cell)); }
+  static long long key(long long x, long long y) {
+    return static_cast<long long>(static_cast<unsigned long long>(x) * 73856093ULL ^
+                                  static_cast<unsigned long long>(y) * 19349663ULL);
+  }
+  long long ix(double v) const {
+    constexpr double kLimit = 0x1p62;
+    const double c = std::floor(v / cell);
+    return static_cast<long long>(std::isnan(c) ? kLimit : std::clamp(c, -kLimit, kLimit));
+  }
   void add(double x, double y, int i) { buckets[key(ix(x), ix(y))].push_back(i); }
   template <class F>
   void near(double x, double y, F&& f) const {

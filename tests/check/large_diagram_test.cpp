@@ -7,12 +7,21 @@
 namespace covmap::check::testing {
 namespace {
 
+// The bound is the release build's. Under AddressSanitizer (scripts/sanitize.sh) the checker is ~5x
+// slower (measured on two cores: 1.8-2.4 s release, 11 s sanitized alone, 36 s sanitized among the
+// whole suite with other work on the machine), so there it gets four times as long.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr double kSecondsBound = 120.0;
+#else
+constexpr double kSecondsBound = 30.0;
+#endif
+
 TEST(LargeDiagram, LatticeOfHundredThousandSites) {
   const Diagram d = lattice(317);  // 100489 sites, 200344 arcs, 99856 nodes
   const CheckReport r = check_diagram(d);
   EXPECT_TRUE(is_ok(r));
   EXPECT_EQ(r.nodes_checked, d.nodes.size());
-  EXPECT_LT(r.seconds, 30.0) << r.brief();
+  EXPECT_LT(r.seconds, kSecondsBound) << r.brief();
   std::printf("%s\n", r.brief().c_str());
 }
 

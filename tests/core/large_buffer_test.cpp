@@ -9,6 +9,10 @@
 #include "core/parallel.h"
 #include "core/large_buffer.h"
 
+#if defined(__SANITIZE_ADDRESS__)
+#include <sanitizer/asan_interface.h>
+#endif
+
 namespace covmap::voronoi {
 namespace {
 
@@ -38,6 +42,30 @@ TEST(LargeBuffer, ReleasedBlocksAreReusedAndHoldWhatIsWritten) {
   EXPECT_EQ(small.back(), 4);
   release_large_buffers();
 }
+
+#if defined(__SANITIZE_ADDRESS__)
+// Under AddressSanitizer (scripts/sanitize.sh) a kept block and the rounding beyond the bytes asked
+// for are poisoned: a use after deallocate_large or an overflow into the rounding is reported.
+TEST(LargeBuffer, KeptBlocksAndRoundingArePoisonedUnderAddressSanitizer) {
+  release_large_buffers();
+  const std::size_t bytes = (std::size_t{3} << 20) + 5;  // a 4 MiB block
+  char* p = static_cast<char*>(allocate_large(bytes));
+  EXPECT_FALSE(__asan_address_is_poisoned(p));
+  EXPECT_FALSE(__asan_address_is_poisoned(p + bytes - 1));
+  EXPECT_TRUE(__asan_address_is_poisoned(p + bytes));
+  EXPECT_TRUE(__asan_address_is_poisoned(p + (std::size_t{4} << 20) - 1));
+  deallocate_large(p, bytes);
+  EXPECT_TRUE(__asan_address_is_poisoned(p)) << "a kept block is not to be touched";
+  const std::size_t fewer = bytes - 1000;
+  char* q = static_cast<char*>(allocate_large(fewer));
+  ASSERT_EQ(q, p) << "served from the kept block";
+  EXPECT_FALSE(__asan_address_is_poisoned(q));
+  EXPECT_FALSE(__asan_address_is_poisoned(q + fewer - 1));
+  EXPECT_TRUE(__asan_address_is_poisoned(q + fewer));
+  deallocate_large(q, fewer);
+  release_large_buffers();
+}
+#endif
 
 TEST(LargeBuffer, GrowsThroughReallocationKeepingItsElements) {
   LargeVector<int> v;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 
 #include "recognition/compare.h"
@@ -66,6 +67,32 @@ TEST(Compare, MissingArcMovedNodeAndWrongRadiusAreLocated) {
     const Comparison c = compare_graphs(a, b);
     EXPECT_EQ(c.differences.size(), 2u) << c.brief();  // the arc only in a, its changed copy in b
   }
+}
+
+// Node positions are hashed by grid cell: far from the origin (here 10^6 extents, ~10^13 cells) the
+// cell numbers times the hash factors overflowed a signed 64-bit integer, and a NaN node (as the
+// engine makes for some exactly degenerate inputs after rounding) was converted to an integer
+// (both undefined: scripts/sanitize.sh aborted in RoundTrip.GridSitesWithHighDegreeNodes…).
+TEST(Compare, FarFromTheOriginAndNodesWithoutAPosition) {
+  Diagram a = sample(3);
+  for (auto& s : a.sites) s.x += 1e6, s.y += 1e6;
+  for (auto& v : a.nodes) v.x += 1e6, v.y += 1e6;
+  for (auto& arc : a.arcs) {
+    if (auto* circle = std::get_if<Circle>(&arc.curve)) circle->cx += 1e6, circle->cy += 1e6;
+    if (auto* line = std::get_if<Line>(&arc.curve)) line->x += 1e6, line->y += 1e6;
+  }
+  Diagram b = a;
+  const Comparison same = compare_graphs(a, b);
+  EXPECT_TRUE(same.equal()) << same.brief();
+  EXPECT_EQ(same.nodes_matched, a.nodes.size());
+  EXPECT_EQ(same.arcs_matched, a.arcs.size());
+
+  b.nodes.push_back({std::nan(""), std::nan("")});
+  const Comparison c = compare_graphs(a, b);
+  EXPECT_EQ(c.nodes_matched, a.nodes.size());
+  ASSERT_EQ(c.differences.size(), 1u) << c.brief();
+  EXPECT_EQ(c.differences[0].kind, DifferenceKind::NodeOnlyInB);
+  EXPECT_EQ(c.differences[0].index, static_cast<int>(a.nodes.size()));
 }
 
 }  // namespace

@@ -128,6 +128,11 @@ Node root_node(std::array<long double, 4> a, std::array<long double, 4> b, int r
     t = in01(t1) ? t1 : t2;
   }
   t = std::clamp(t, 0.0L, 1.0L);
+  // An end at infinity (w = 0) on the paraboloid's asymptotic cone is a root of q but no crossing.
+  // When the crossing is at the other end, rounded to just outside [0, 1] (or to -0), the choice
+  // above took the end at infinity and the node came out as 0/0 = NaN: the other root then (t1 <= t2,
+  // so the one away from that end).
+  if ((1 - t) * a[3] + t * b[3] == 0) t = std::clamp(t == 1 ? t1 : t2, 0.0L, 1.0L);
   std::array<long double, 4> p;
   for (int k = 0; k < 4; ++k) p[k] = (1 - t) * a[k] + t * b[k];
   return polish(p[0] / p[3], p[1] / p[3], tri, sites);
