@@ -72,9 +72,10 @@ MapRaster map_raster(std::span<const CoverageCell> map, const MapCells& cells, d
 }
 
 int MapRaster::label_at(double x, double y) const {
-  const int i = static_cast<int>(std::floor((x - grid.x0) / grid.bin));
-  const int j = static_cast<int>(std::floor((y - grid.y0) / grid.bin));
-  if (i < 0 || j < 0 || i >= grid.nx || j >= grid.ny) return kNone;
+  // Compared as doubles before the conversion, which is undefined beyond int's range (or for NaN).
+  const double fi = std::floor((x - grid.x0) / grid.bin), fj = std::floor((y - grid.y0) / grid.bin);
+  if (!(fi >= 0 && fj >= 0 && fi < grid.nx && fj < grid.ny)) return kNone;
+  const int i = static_cast<int>(fi), j = static_cast<int>(fj);
   return raster.labels[grid.index(i, j)];
 }
 

@@ -6,6 +6,14 @@
 
 namespace covmap::check::detail {
 namespace {
+
+// floor(v) as a cell number in [0, n): clamped while still a double, since converting a double
+// beyond int's range (or NaN) to int is undefined behaviour.
+int cell_index(double v, int n) {
+  const double f = std::floor(v);
+  return !(f > 0) ? 0 : f >= n - 1 ? n - 1 : static_cast<int>(f);
+}
+
 constexpr int kMaxCellsPerSide = 1024;
 constexpr double kMaxChunksPerArc = 1e6;  // a guard only: clipped arcs are a few box sizes long
 }  // namespace
@@ -44,13 +52,13 @@ ArcLocator::ArcLocator(const std::vector<std::optional<ArcPath>>& paths, const B
         chunk.add(next);
         chunk = chunk.grown(bulge + reach);
         const int i0 =
-            std::clamp(static_cast<int>(std::floor((chunk.xmin - box_.xmin) / cell_)), 0, nx_ - 1);
+            cell_index((chunk.xmin - box_.xmin) / cell_, nx_);
         const int i1 =
-            std::clamp(static_cast<int>(std::floor((chunk.xmax - box_.xmin) / cell_)), 0, nx_ - 1);
+            cell_index((chunk.xmax - box_.xmin) / cell_, nx_);
         const int j0 =
-            std::clamp(static_cast<int>(std::floor((chunk.ymin - box_.ymin) / cell_)), 0, ny_ - 1);
+            cell_index((chunk.ymin - box_.ymin) / cell_, ny_);
         const int j1 =
-            std::clamp(static_cast<int>(std::floor((chunk.ymax - box_.ymin) / cell_)), 0, ny_ - 1);
+            cell_index((chunk.ymax - box_.ymin) / cell_, ny_);
         for (int i = i0; i <= i1; ++i)
           for (int j = j0; j <= j1; ++j) entries.emplace_back(i * ny_ + j, a);
         prev = next;
@@ -68,8 +76,8 @@ ArcLocator::ArcLocator(const std::vector<std::optional<ArcPath>>& paths, const B
 
 std::vector<int> ArcLocator::candidates(Point p) const {
   if (!box_.contains(p)) return {};
-  const int i = std::clamp(static_cast<int>(std::floor((p.x - box_.xmin) / cell_)), 0, nx_ - 1);
-  const int j = std::clamp(static_cast<int>(std::floor((p.y - box_.ymin) / cell_)), 0, ny_ - 1);
+  const int i = cell_index((p.x - box_.xmin) / cell_, nx_);
+  const int j = cell_index((p.y - box_.ymin) / cell_, ny_);
   const int k = i * ny_ + j;
   return {arcs_.begin() + cell_start_[k], arcs_.begin() + cell_start_[k + 1]};
 }
