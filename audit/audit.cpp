@@ -2,7 +2,6 @@
 #include "audit/audit.h"
 
 #include <chrono>
-#include <cstdio>
 #include <stdexcept>
 #include <string_view>
 #include <unordered_set>
@@ -10,22 +9,21 @@
 #include "audit/audit_stages.h"
 #include "audit/start_values.h"
 #include "audit/tolerances.h"
+#include "core/readable_numbers.h"
 
 namespace covmap::audit {
 namespace {
 
 using namespace stages;
 
-// Appends "<what> took <seconds since the previous lap> s" to the audit's messages.
+// Appends "<what> took <seconds since the previous lap>" (core/readable_numbers.h) to the audit's messages.
 class StageTimer {
  public:
   StageTimer(std::chrono::steady_clock::time_point start, std::vector<std::string>& messages)
       : last_(start), messages_(messages) {}
   void lap(const std::string& what) {
     const auto now = std::chrono::steady_clock::now();
-    char text[64];
-    std::snprintf(text, sizeof text, " took %.2f s", std::chrono::duration<double>(now - last_).count());
-    messages_.push_back(what + text);
+    messages_.push_back(what + " took " + seconds(std::chrono::duration<double>(now - last_).count()));
     last_ = now;
   }
 

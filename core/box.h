@@ -45,6 +45,10 @@ struct Box {
 
   Box grown(double margin) const { return Box{xmin - margin, ymin - margin, xmax + margin, ymax + margin}; }
   bool contains(Point p) const { return p.x >= xmin && p.x <= xmax && p.y >= ymin && p.y <= ymax; }
+  // Euclidean distance from p to the box (0 inside or on it). Precondition: not empty().
+  double distance_to(Point p) const {
+    return std::hypot(std::max({xmin - p.x, 0.0, p.x - xmax}), std::max({ymin - p.y, 0.0, p.y - ymax}));
+  }
   bool overlaps(const Box& o) const {
     return !empty() && !o.empty() && xmin <= o.xmax && o.xmin <= xmax && ymin <= o.ymax && o.ymin <= ymax;
   }

@@ -109,9 +109,7 @@ void read_ring(const Json& positions, const std::string& name, bool planar, Feat
       return;
     }
     if (planar && !range_reported && (std::abs(q.x) > kMaxPlanarCoordinate || std::abs(q.y) > kMaxPlanarCoordinate)) {
-      draft.problems.push_back(name + ", position " + std::to_string(i) + " " + pair_text(q) + " lies beyond ±1e8 m "
-                               "(100 000 km), where no projected coordinate system has values; is a coordinate "
-                               "mistyped or in the wrong unit?");
+      draft.problems.push_back(name + ", position " + std::to_string(i) + " " + pair_text(q) + " " + kBeyondPlanarLimit);
       range_reported = true;
     }
     if (!planar && !range_reported && (std::abs(q.x) > 180.0 || std::abs(q.y) > 90.0)) {

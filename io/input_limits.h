@@ -33,7 +33,10 @@ inline constexpr std::size_t kMaxGraphItems = 20'000'000;
 
 // Coordinates of planar inputs (metres): beyond 10^8 m (2.5 times round the Earth) no projected
 // coordinate reference system has values, so such a number is a typo or a unit mistake.
-// (Messages quote it as "1e8 m (100 000 km)".)
 inline constexpr double kMaxPlanarCoordinate = 1e8;
+// How every reader words a coordinate beyond it (after naming where it is).
+inline constexpr const char* kBeyondPlanarLimit =
+    "lies beyond ±1e8 m (100 000 km), where no projected coordinate system has values; is a coordinate "
+    "mistyped or in the wrong unit?";
 
 }  // namespace covmap::io

@@ -62,7 +62,8 @@ std::string listing(const std::vector<std::string>& names) {
   return text;
 }
 
-void check_folder(const fs::path& folder, bool force) {
+// What is in `folder`, once the rules allow writing there.
+FolderLook checked_folder(const fs::path& folder, bool force) {
   const FolderLook look = look_at(folder);
   if (look.state == FolderState::kNotAFolder)
     throw OutputError(folder, "it is a file, and covmap writes a folder of reports here; give a folder name");
@@ -70,6 +71,7 @@ void check_folder(const fs::path& folder, bool force) {
     throw OutputError(folder, "the folder holds files covmap did not write (" + listing(look.names) +
                                   "); give a new or empty folder, or pass --force to write covmap's files into it "
                                   "(other files are left alone)");
+  return look;
 }
 
 std::vector<std::string> marker_listing(const fs::path& folder) {
@@ -132,7 +134,7 @@ void check_output_plan(const OutputPlan& plan) {
   }
   if (plan.folder) {
     const fs::path folder = normalized_output_path(*plan.folder);
-    check_folder(folder, plan.force);
+    checked_folder(folder, plan.force);
     for (const std::string& name : plan.folder_files) outputs.push_back(folder / name);
     for (const fs::path& input : plan.inputs)
       if (same_file(input, folder)) throw OutputError(folder, "it is one of the inputs; give another folder");
@@ -150,13 +152,13 @@ void write_report_folder(const fs::path& given, const NamedTexts& files, bool fo
   const fs::path folder = normalized_output_path(given);
   if (folder.has_parent_path()) remove_stale_temporaries(folder.parent_path());
   else remove_stale_temporaries(".");
-  check_folder(folder, force);
+  const FolderLook look = checked_folder(folder, force);
   std::ostringstream marker;
   marker << kMarkerTitle << "\n";
   for (const auto& [name, text] : files) marker << name << "\n";
   NamedTexts all = files;
   all.emplace_back(kFolderMarker, marker.str());
-  if (look_at(folder).state == FolderState::kMissing) {
+  if (look.state == FolderState::kMissing) {
     write_new_folder_atomically(folder, all);
     return;
   }

@@ -13,14 +13,8 @@ Box map_box(const CoverageMap& map) {
   Box box;
   for (const MapCell& cell : map.cells)
     for (const MapPolygon& polygon : cell.polygons)
-      for (const Point& p : polygon.outer) box.add(p.x, p.y);
+      for (const Point& p : polygon.outer) box.add(p);
   return box;
-}
-
-double distance_to_box(const Box& box, Point p) {
-  const double dx = std::max({box.xmin - p.x, 0.0, p.x - box.xmax});
-  const double dy = std::max({box.ymin - p.y, 0.0, p.y - box.ymax});
-  return std::hypot(dx, dy);
 }
 
 }  // namespace
@@ -43,7 +37,7 @@ std::optional<std::string> sensors_far_outside(const CoverageMap& map, const std
   double farthest = 0.0;
   std::string farthest_id;
   for (const ReportedSensor& s : sensors) {
-    const double d = distance_to_box(box, s.position);
+    const double d = box.distance_to(s.position);
     if (!(d > limit)) continue;
     ++count;
     if (d > farthest) {

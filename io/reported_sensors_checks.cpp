@@ -34,8 +34,7 @@ void check_values(SensorDraft& d) {
     check_finite(d.xy->y, "y", d);
     if (std::abs(d.xy->x) > kMaxPlanarCoordinate || std::abs(d.xy->y) > kMaxPlanarCoordinate)
       d.problems.push_back("position (" + format_number(d.xy->x) + ", " + format_number(d.xy->y) +
-                           ") lies beyond ±1e8 m (100 000 km), where no projected coordinate system has values; "
-                           "is a coordinate mistyped or in the wrong unit?");
+                           ") " + kBeyondPlanarLimit);
   }
   if (d.lon_lat) {
     const LonLat g = *d.lon_lat;
