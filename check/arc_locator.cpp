@@ -19,10 +19,15 @@ constexpr double kMaxChunksPerArc = 1e6;  // a guard only: clipped arcs are a fe
 }  // namespace
 
 ArcLocator::ArcLocator(const std::vector<std::optional<ArcPath>>& paths, const Box& box,
-                       double reach)
-    : box_(box.grown(reach)) {
+                       const std::vector<double>& reach) {
   int used = 0;
-  for (const auto& p : paths) used += p.has_value();
+  double widest = 0.0;
+  for (std::size_t a = 0; a < paths.size(); ++a)
+    if (paths[a]) {
+      ++used;
+      widest = std::max(widest, reach[a]);
+    }
+  box_ = box.grown(widest);
   // About one cell per arc, so a cell lists a handful of arcs.
   const double w = box_.xmax - box_.xmin, h = box_.ymax - box_.ymin;
   const int side =
@@ -50,7 +55,7 @@ ArcLocator::ArcLocator(const std::vector<std::optional<ArcPath>>& paths, const B
         Box chunk;
         chunk.add(prev);
         chunk.add(next);
-        chunk = chunk.grown(bulge + reach);
+        chunk = chunk.grown(bulge + reach[a]);
         const int i0 =
             cell_index((chunk.xmin - box_.xmin) / cell_, nx_);
         const int i1 =

@@ -1,8 +1,8 @@
 // A uniform grid that answers "which arcs pass within `reach` of this point" inside a box.
 //
 // Each arc is clipped to the box, cut into chunks no longer than half a cell, and every chunk's
-// bounding box, padded by its sagitta (circle chunks bulge off their chord) and by reach, is
-// entered in the cells it overlaps. A point then only needs the arcs listed in its own cell.
+// bounding box, padded by its sagitta (circle chunks bulge off their chord) and by the arc's reach,
+// is entered in the cells it overlaps. A point then only needs the arcs listed in its own cell.
 // Clipping first matters: a bisector circle can have a radius 1e7 times the site spacing.
 #pragma once
 
@@ -15,8 +15,10 @@ namespace covmap::check::detail {
 
 class ArcLocator {
  public:
-  // paths[a] unset: arc a is left out.
-  ArcLocator(const std::vector<std::optional<ArcPath>>& paths, const Box& box, double reach);
+  // paths[a] unset: arc a is left out. reach[a]: how far from arc a a point may be and still be
+  // listed for it (each arc its own: the rounding of a huge circle's numbers is its own).
+  ArcLocator(const std::vector<std::optional<ArcPath>>& paths, const Box& box,
+             const std::vector<double>& reach);
 
   // Arcs that may pass within reach of p (a superset); empty outside the box.
   std::vector<int> candidates(Point p) const;

@@ -23,6 +23,9 @@ TEST(CorrectDiagrams, RhombusSegmentAndRays) { expect_clean(rhombus(), 2); }
 TEST(CorrectDiagrams, WeightedLens) { expect_clean(weighted_lens(), 2); }
 TEST(CorrectDiagrams, WeightedThetaThreeCircles) { expect_clean(weighted_theta(), 2); }
 TEST(CorrectDiagrams, SmallLattice) { expect_clean(lattice(5), 16); }
+// Regression: the coverage probe allowed only the tolerance, not the rounding of a huge circle's
+// own numbers, and reported every correct diagram of nearly equal weights as BoundaryNotCovered.
+TEST(CorrectDiagrams, NearlyEqualWeightsHugeCircle) { expect_clean(nearly_equal_weights(), 0); }
 
 TEST(CorrectDiagrams, WeightedLensNodesMatchClosedForm) {
   // Guards the test data itself: the in-place intersection agrees with t = (-2 +- 2 sqrt 7) / 3.

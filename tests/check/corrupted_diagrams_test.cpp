@@ -119,6 +119,21 @@ TEST(CorruptedDiagrams, DeletedSegmentLeavesBoundaryUncovered) {
   }
 }
 
+// The rounding allowed for a huge circle's numbers (64 ulps of 3e13: ~0.4 here) does not hide a
+// missing arc, nor one moved by about the site spacing.
+TEST(CorruptedDiagrams, HugeCircleDeletedOrMoved) {
+  Diagram d = nearly_equal_weights();
+  clear_faces(d);
+  Diagram moved = d;
+  std::get<Circle>(moved.arcs[0].curve).cx += 1.0;
+  d.arcs.clear();
+  const CheckReport r = check_diagram(d);
+  ASSERT_GT(r.count(ViolationKind::BoundaryNotCovered), 0u) << r.brief();
+  // Every report lies on the true bisector, between the sites (it passes near their midpoint).
+  for (const Violation& v : r.violations) EXPECT_LT(std::hypot(v.x - 0.35, v.y - 0.15), 2.0) << v.message;
+  EXPECT_FALSE(check_diagram(moved).ok());
+}
+
 TEST(CorruptedDiagrams, DeletedRayLeavesBoundaryUncovered) {
   Diagram d = square();
   d.arcs.erase(d.arcs.begin() + 1);  // the ray from (1,1) along +x

@@ -58,6 +58,21 @@ inline Diagram two_weighted_sites() {
   return d;
 }
 
+// (b') Weights equal to 14 digits: s0 (0,0) weight 1, s1 (0.7,0.3) weight 1 + 1.3e-14. The bisector
+// is a circle of radius ~3e13 passing between the sites with s0 inside, centre and radius from
+// NUMERICS.md's closed form (a correction added to s0). Its numbers are only known to ~1e-2.
+inline Diagram nearly_equal_weights() {
+  const double wj = 1.0 + 1.3e-14, dx = 0.7, dy = 0.3;
+  const double k = 1.0 / ((1.0 - wj) * (1.0 + wj));
+  Diagram d;
+  d.sites = {site(0, 0, 1), site(dx, dy, wj)};
+  const double r = wj * std::hypot(dx, dy) * std::abs(k);
+  d.arcs = {circle_arc(kNone, kNone, Circle{k * dx, k * dy, r}, true, 0, 1)};
+  add_face(d, {0, true, false}, {{HalfArc{0, true}}});
+  add_face(d, {1, false, false}, {{HalfArc{0, false}}});
+  return d;
+}
+
 // (c) Acute triangle s0 (0,0), s1 (4,0), s2 (1,3), equal weights. Circumcentre: x = 2 (bisector of
 // s0 s1); |p|^2 = |p - s2|^2 gives 2x + 6y = 10, so y = 1: node (2,1), at distance sqrt(5) from
 // all. Each ray leaves the node through the midpoint of the opposite edge:
