@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "check/check_internal.h"
+#include "check/check_normalization.h"
 
 namespace covmap::check {
 
@@ -20,9 +21,9 @@ double diagram_scale(const Diagram& d) {
   return diag > 0.0 && std::isfinite(diag) ? diag : 1.0;
 }
 
-CheckReport check_diagram(const Diagram& d, const CheckOptions& options) {
-  std::string why;
-  if (!options.is_valid(&why)) throw std::invalid_argument("CheckOptions: " + why);
+namespace {
+
+CheckReport run_checks(const Diagram& d, const CheckOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   CheckReport report;
   detail::CheckContext c(d, options, report);
@@ -33,6 +34,18 @@ CheckReport check_diagram(const Diagram& d, const CheckOptions& options) {
   detail::check_coverage(c);
   detail::check_crossings(c);
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return report;
+}
+
+}  // namespace
+
+CheckReport check_diagram(const Diagram& d, const CheckOptions& options) {
+  std::string why;
+  if (!options.is_valid(&why)) throw std::invalid_argument("CheckOptions: " + why);
+  const detail::Normalization n = detail::normalization_for(d);
+  if (!n.needed()) return run_checks(d, options);
+  CheckReport report = run_checks(detail::normalized(d, n), options);
+  detail::scale_back(report, n);
   return report;
 }
 

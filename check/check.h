@@ -37,6 +37,11 @@
 // k's side of the bisector of k and the claimed site. Distances are thus compared as lengths,
 // whatever the weights.
 //
+// Range. Every finite diagram is checked: one whose extent, coordinates or weights lie near the ends
+// of the double range (where squares overflow or weighted distances become infinite) is checked
+// scaled by powers of two, which changes neither the MWVD nor any mantissa (see
+// CheckReport::message_length_unit).
+//
 // Not guaranteed. The checks sample: a report without violations is strong evidence, not a proof.
 // Crossings of unbounded arcs are only searched inside a box around the sites and nodes (one scale
 // beyond it). Nearly tangent arcs meeting at a shared node can put their second intersection closer
@@ -145,6 +150,10 @@ struct CheckReport {
   double scale = 0.0;                // diagram_scale of the checked diagram
   double eps = 0.0;                  // the tolerance length actually used
   double seconds = 0.0;              // wall time of the check
+  // Lengths inside violation messages are in this unit. It is 1 except for diagrams so large or so
+  // small (beyond ~1e±30 in extent or coordinates) that they were checked scaled by a power of
+  // two; positions (Violation::x, y), scale and eps are always in the diagram's own units.
+  double message_length_unit = 1.0;
 
   std::size_t total_violations() const;
   std::size_t count(ViolationKind kind) const;

@@ -86,6 +86,7 @@ std::string CheckReport::brief() const {
     const Violation& v = violations.front();
     out += strf("; first: %s at (%.17g, %.17g): %s", std::string(to_string(v.kind)).c_str(), v.x,
                 v.y, v.message.c_str());
+    if (message_length_unit != 1.0) out += strf(" (lengths in units of %.17g)", message_length_unit);
   }
   return out;
 }
