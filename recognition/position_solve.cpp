@@ -1,0 +1,133 @@
+// Position solve in recognize(): the sites of all faces refined by least squares over every arc.
+// Propagation fixes each site from its parent's across one arc of a spanning tree, so rounding
+// adds up along the tree path; every arc, though, states that its two sites are mirror images in it
+// (Lemma 1): s_r = M_a(s_l). One Gauss-Newton step on Σ_a |s_r - M_a(s_l)|² / |k_a|, with k_a the
+// derivative of the inversion (δM = k_a conj(δs), |k_a| = (w_r / w_l)²: dividing by it makes the
+// residual the same whichever way the arc is read), solved by Jacobi-preconditioned conjugate
+// gradients from zero. The propagated sites are the linearisation point; the correction is of the
+// size of their rounding (or, for rounded graphs, of the rounding of the graph).
+#include <algorithm>
+#include <cmath>
+
+#include "core/parallel.h"
+#include "mobius/bisector_relation.h"
+#include "recognition/conjugate_gradients.h"
+#include "recognition/recognize_stages.h"
+#include "recognition/tolerances.h"
+
+namespace covmap::recognition::stages {
+namespace {
+
+using mobius::Complex;
+
+// One arc's linearised statement: e + δs_r - k conj(δs_l) ≈ 0, scaled by 1/√|k| and by the
+// accuracy of the arc's numbers.
+struct ArcRow {
+  int l = kNone, r = kNone;
+  Complex e, k;
+  double scale = 1.0;  // 1 / (√|k| · (1 + the arc's node's distance from the graph / extent))
+};
+
+LargeVector<ArcRow> arc_rows(const TracedGraph& t, const LargeVector<FaceSite>& site) {
+  const Diagram& g = t.g;
+  LargeVector<ArcRow> rows;
+  for (std::size_t a = 0; a < g.arcs.size(); ++a) {
+    const int l = t.face_of_half[2 * a], r = t.face_of_half[2 * a + 1];
+    if (g.arcs[a].frame || l == kNone || r == kNone || l == r || !site[l].assigned || !site[r].assigned) continue;
+    const mobius::ArcBisector b = mobius::arc_bisector(g.arcs[a], g.nodes);
+    ArcRow row{l, r, {}, {}, 1.0};
+    const Complex sl = site[l].position;
+    row.e = site[r].position - mobius::partner_across(b, {sl, 1.0}).position;
+    if (b.line) {
+      row.k = b.gamma * b.gamma;  // reflection in a line of unit direction γ: δM = γ² conj(δs)
+    } else {
+      const Complex away = std::conj(sl - b.v - b.gamma);  // conj(δ - γ)
+      row.k = -std::norm(b.gamma) / (away * away);
+    }
+    const double modulus = std::abs(row.k);
+    if (!(modulus > 0) || !std::isfinite(modulus) || !std::isfinite(std::abs(row.e))) continue;
+    // An arc through a far node is stated only to its distance's rounding (verification.cpp): its
+    // residual counts in proportion to that accuracy, so that it does not pull the nearby sites.
+    const double far = 1.0 + t.extent.distance_to({b.v.real(), b.v.imag()}) / t.scale;
+    row.scale = 1.0 / (std::sqrt(modulus) * far);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+// y = Jᵀ J x, the rows gathered per face (arcs scattered to their two faces through per-face
+// lists, so that each output is summed in a fixed order whatever the number of workers).
+struct NormalOperator {
+  const LargeVector<ArcRow>& rows;
+  LargeVector<int> begin, entry;  // per face: the rows it takes part in (entry = 2·row + side)
+
+  NormalOperator(const LargeVector<ArcRow>& rs, std::size_t faces) : rows(rs) {
+    begin.assign(faces + 1, 0);
+    for (const ArcRow& row : rows) ++begin[row.l + 1], ++begin[row.r + 1];
+    for (std::size_t f = 0; f < faces; ++f) begin[f + 1] += begin[f];
+    entry.resize(begin[faces]);
+    LargeVector<int> fill(begin.begin(), begin.end() - 1);
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      entry[fill[rows[k].l]++] = static_cast<int>(2 * k);
+      entry[fill[rows[k].r]++] = static_cast<int>(2 * k + 1);
+    }
+  }
+  Complex row_value(const ArcRow& row, const LargeVector<Complex>& x) const {
+    return row.scale * (x[row.r] - row.k * std::conj(x[row.l]));
+  }
+  void apply(const LargeVector<Complex>& x, LargeVector<Complex>& y) const {
+    const std::size_t n = x.size();
+    parallel_chunks(n, worker_count(n), [&](std::size_t b, std::size_t e, int) {
+      for (std::size_t f = b; f < e; ++f) {
+        Complex sum = 0.0;
+        for (int k = begin[f]; k < begin[f + 1]; ++k) {
+          const ArcRow& row = rows[entry[k] / 2];
+          const Complex v = row_value(row, x);
+          sum += (entry[k] % 2 == 1) ? row.scale * v : -row.scale * row.k * std::conj(v);
+        }
+        y[f] = sum;
+      }
+    });
+  }
+};
+
+// One Gauss-Newton step; the largest correction made (0 when none was made).
+double gauss_newton_step(const TracedGraph& t, const LargeVector<char>& fixed, LargeVector<FaceSite>& site) {
+  const std::size_t n = site.size();
+  const LargeVector<ArcRow> rows = arc_rows(t, site);
+  if (rows.empty()) return 0.0;
+  const NormalOperator op(rows, n);
+  // Right-hand side -Jᵀ e (the residual at x = 0), and the Jacobi preconditioner (each face's
+  // block is a multiple of 1). Fixed faces take no correction: their diagonal is 0 (frozen).
+  LargeVector<Complex> r(n, 0.0), x(n, 0.0);
+  LargeVector<double> diag(n, 0.0);
+  for (const ArcRow& row : rows) {
+    const Complex v = row.scale * row.e;
+    r[row.r] -= row.scale * v;
+    r[row.l] += row.scale * row.k * std::conj(v);
+    diag[row.r] += row.scale * row.scale;
+    diag[row.l] += row.scale * row.scale * std::norm(row.k);
+  }
+  for (std::size_t f = 0; f < n; ++f)
+    if (fixed[f]) diag[f] = 0.0;
+  conjugate_gradients([&](const LargeVector<Complex>& in, LargeVector<Complex>& out) { op.apply(in, out); }, diag, x, r);
+  // A correction comparable with the graph is no refinement: the linearisation would not hold.
+  double largest = 0.0;
+  for (std::size_t f = 0; f < n; ++f) {
+    if (!std::isfinite(std::abs(x[f])) || std::abs(x[f]) > tolerance::kLinearisation * t.scale) return 0.0;
+    largest = std::max(largest, std::abs(x[f]));
+  }
+  for (std::size_t f = 0; f < n; ++f)
+    if (site[f].assigned) site[f].position += x[f];
+  return largest;
+}
+
+}  // namespace
+
+void solve_positions(const TracedGraph& t, const LargeVector<char>& fixed, LargeVector<FaceSite>& site) {
+  // A second step only when the first moved the sites by more than rounding (rounded graphs).
+  for (int step = 0; step < tolerance::kPositionSteps; ++step)
+    if (!(gauss_newton_step(t, fixed, site) > tolerance::kPositionSolveStep * 1e4 * t.scale)) break;
+}
+
+}  // namespace covmap::recognition::stages
