@@ -30,6 +30,8 @@ namespace rt = covmap::recognition::testing;
 
 struct Row {
   int seeds = 0, engine_invalid = 0, accepted = 0, unique = 0, voronoi_yes = 0;
+  std::size_t most_differences = 0;  // over the graphs answered "voronoi: no"
+  std::string first_difference;
   double position = 0.0, weight = 0.0, seconds = 0.0;
   std::string first_rejection;
 };
@@ -101,6 +103,9 @@ int main(int argc, char** argv) {
           ++row.accepted;
           row.unique += r.unique ? 1 : 0;
           row.voronoi_yes += r.voronoi == covmap::recognition::MwvdAnswer::kYes ? 1 : 0;
+          row.most_differences = std::max(row.most_differences, r.voronoi_differences.size());
+          if (row.first_difference.empty() && !r.voronoi_differences.empty())
+            row.first_difference = "seed " + std::to_string(seed) + ": " + r.voronoi_differences.front().message;
           if (!r.unique) continue;  // a family member need not be the drawing sites
           const auto e = rt::round_trip_error(sites, drawn, r);
           row.position = std::max(row.position, e.position);
@@ -112,13 +117,16 @@ int main(int argc, char** argv) {
                               {"tolerance", tolerance}, {"seeds", row.seeds}, {"engine_invalid", row.engine_invalid},
                               {"accepted", row.accepted}, {"unique", row.unique}, {"voronoi_yes", row.voronoi_yes},
                               {"worst_position_error", row.position}, {"worst_weight_error", row.weight},
-                              {"recognize_s", row.seconds}, {"first_rejection", row.first_rejection}};
+                              {"recognize_s", row.seconds}, {"first_rejection", row.first_rejection},
+                              {"most_voronoi_differences", row.most_differences}, {"first_difference", row.first_difference}};
           std::cout << j.dump() << "\n";
         } else {
           std::printf("%-11s %-8s %6d %5d %7d %8d %6d %11d  %12.2e  %10.2e\n", family_name.c_str(),
                       perturbation->name().c_str(), digits, row.seeds, row.engine_invalid, row.accepted, row.unique,
                       row.voronoi_yes, row.position, row.weight);
           if (!row.first_rejection.empty()) std::printf("            first rejection: %s\n", row.first_rejection.c_str());
+          if (!row.first_difference.empty())
+            std::printf("            most differences %zu; first: %s\n", row.most_differences, row.first_difference.c_str());
         }
         std::cout.flush();
       }

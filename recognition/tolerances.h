@@ -35,15 +35,15 @@ inline constexpr double kMaxArcWeight = 1e4;
 // shrunk by kSolveReduction (their start — the propagated sites — is already within ~1e-10 of the
 // answer, so this is well below rounding), or after kSolveIterations passes over the arcs.
 inline constexpr double kSolveReduction = 1e-8;
-// A position step smaller than this fraction of the extent is rounding.
-inline constexpr double kPositionSolveStep = 1e-17;
-// The position solve makes at most kPositionSteps Gauss-Newton steps (a second only when the first
-// moved a site by more than 1e4 · kPositionSolveStep of the extent: a rounded graph), and none
-// whose correction exceeds kLinearisation of the extent (the linearised mirror relations would
-// not hold; the propagated sites are kept and verification judges them).
-inline constexpr int kPositionSteps = 5;
+// The position solve makes at most kPositionSteps Gauss-Newton steps, a further one only while the
+// last moved a site by more than kFurtherStep of the extent — a rounded graph, where the
+// linearisation error of a correction c (~c²) still matters; an exact graph's first correction is
+// ~1e-12 — and none whose correction exceeds kLinearisation of the extent (the linearised mirror
+// relations would not hold; the propagated sites are kept and verification judges them).
+inline constexpr int kPositionSteps = 3;
+inline constexpr double kFurtherStep = 1e-10;
 inline constexpr double kLinearisation = 1e-1;
-inline constexpr int kSolveIterations = 300;
+inline constexpr int kSolveIterations = 100;
 
 // A node's solution circle whose curvature, in the node's frame, is below this fraction of its
 // linear term is its tangent line: radii beyond 1e9 frame units are rounding of a line (the
