@@ -44,6 +44,24 @@ EndOffCurve end_off_curve(const Diagram& g, int a, int v, const InputScale& in) 
   return {a, v, off, in.tol + in.relative * size + rounding};
 }
 
+// The box of the middle half of the node coordinates (quartiles in x and in y).
+Box middle_half(const Diagram& g) {
+  LargeVector<double> xs, ys;
+  xs.reserve(g.nodes.size());
+  ys.reserve(g.nodes.size());
+  for (const Node& n : g.nodes)
+    if (std::isfinite(n.x) && std::isfinite(n.y)) xs.push_back(n.x), ys.push_back(n.y);
+  if (xs.size() < 8) return Box{};
+  auto at = [](LargeVector<double>& v, std::size_t k) {
+    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
+    return v[k];
+  };
+  const std::size_t lo = xs.size() / 4, hi = xs.size() - 1 - xs.size() / 4;
+  Box b;
+  b.xmin = at(xs, lo), b.xmax = at(xs, hi), b.ymin = at(ys, lo), b.ymax = at(ys, hi);
+  return b;
+}
+
 }  // namespace
 
 InputScale prepare_input(Diagram& g, const RecognitionOptions& options) {
@@ -60,6 +78,15 @@ InputScale prepare_input(Diagram& g, const RecognitionOptions& options) {
     for (std::size_t a = b; a < e; ++a) g.arcs[a].left_site = g.arcs[a].right_site = kNone;
   });
   in.extent = graph_extent(g);
+  // Near-degenerate inputs (nearly collinear sites, perturbed grids) put more than 2 % of their
+  // nodes 10^7..10^13 extents out, where nearly parallel bisectors meet; the central 98 % box then
+  // is that far too, and a tolerance relative to it accepts anything. The middle half of the nodes
+  // lies among the sites: the extent is at most kMiddleHalfFactor times its box.
+  const Box middle = middle_half(g);
+  if (!middle.empty() && middle.diagonal() > 0 && in.extent.diagonal() > tolerance::kMiddleHalfFactor * middle.diagonal()) {
+    const double grow = 0.5 * (tolerance::kMiddleHalfFactor - 1.0);
+    in.extent = middle.grown(grow * std::max(middle.width(), middle.height()));
+  }
   in.scale = in.extent.diagonal();
   // All nodes at one point (the rays of cocircular equal-weight sites) fix no length: the
   // coordinates' own size, or 1, stands in.

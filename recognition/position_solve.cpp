@@ -34,14 +34,14 @@ struct ArcRow {
   double scale = 1.0;  // 1 / (√|k| · (1 + the arc's node's distance from the graph / extent))
 };
 
-LargeVector<ArcRow> arc_rows(const TracedGraph& t, const LargeVector<FaceSite>& site) {
+LargeVector<ArcRow> arc_rows(const TracedGraph& t, const SolveOrder& order, const LargeVector<FaceSite>& site) {
   const Diagram& g = t.g;
   LargeVector<ArcRow> rows;
   for (std::size_t a = 0; a < g.arcs.size(); ++a) {
     const int l = t.face_of_half[2 * a], r = t.face_of_half[2 * a + 1];
-    if (g.arcs[a].frame || l == kNone || r == kNone || l == r || !site[l].assigned || !site[r].assigned) continue;
+    if (g.arcs[a].frame || l == kNone || r == kNone || l == r || order.rank[l] == kNone || order.rank[r] == kNone) continue;
     const mobius::ArcBisector b = mobius::arc_bisector(g.arcs[a], g.nodes);
-    ArcRow row{l, r, {}, {}, 1.0};
+    ArcRow row{order.rank[l], order.rank[r], {}, {}, 1.0};
     const Complex sl = site[l].position;
     row.e = site[r].position - mobius::partner_across(b, {sl, 1.0}).position;
     if (b.line) {
@@ -58,8 +58,8 @@ LargeVector<ArcRow> arc_rows(const TracedGraph& t, const LargeVector<FaceSite>& 
     row.scale = 1.0 / (std::sqrt(modulus) * far);
     rows.push_back(row);
   }
-  // In the order of their left faces: the gather per face then reads half its rows' values in
-  // sequence (memory-bound at 10^5 faces and more).
+  // In the order of their left faces' unknowns: the gather per face then reads half its rows'
+  // values in sequence (memory-bound at 10^5 faces and more).
   std::sort(rows.begin(), rows.end(), [](const ArcRow& a, const ArcRow& b) { return a.l < b.l || (a.l == b.l && a.r < b.r); });
   return rows;
 }
@@ -110,9 +110,10 @@ struct NormalOperator {
 };
 
 // One Gauss-Newton step; the largest correction made (0 when none was made).
-double gauss_newton_step(const TracedGraph& t, const LargeVector<char>& fixed, LargeVector<FaceSite>& site) {
-  const std::size_t n = site.size();
-  const LargeVector<ArcRow> rows = arc_rows(t, site);
+double gauss_newton_step(const TracedGraph& t, const SolveOrder& order, const LargeVector<char>& fixed,
+                         LargeVector<FaceSite>& site) {
+  const std::size_t n = order.order.size();
+  const LargeVector<ArcRow> rows = arc_rows(t, order, site);
   if (rows.empty()) return 0.0;
   const NormalOperator op(rows, n);
   // Right-hand side -Jᵀ e (the residual at x = 0), and the Jacobi preconditioner (each face's
@@ -127,7 +128,7 @@ double gauss_newton_step(const TracedGraph& t, const LargeVector<char>& fixed, L
     diag[row.l] += row.scale * row.scale * std::norm(row.k);
   }
   for (std::size_t f = 0; f < n; ++f)
-    if (fixed[f]) diag[f] = 0.0;
+    if (fixed[order.order[f]]) diag[f] = 0.0;
   conjugate_gradients([&](const LargeVector<Complex>& in, LargeVector<Complex>& out) { op.apply(in, out); }, diag, x, r);
   // A correction comparable with the graph is no refinement: the linearisation would not hold.
   double largest = 0.0;
@@ -135,16 +136,21 @@ double gauss_newton_step(const TracedGraph& t, const LargeVector<char>& fixed, L
     if (!std::isfinite(std::abs(x[f])) || std::abs(x[f]) > tolerance::kLinearisation * t.scale) return 0.0;
     largest = std::max(largest, std::abs(x[f]));
   }
-  for (std::size_t f = 0; f < n; ++f)
-    if (site[f].assigned) site[f].position += x[f];
+  for (std::size_t f = 0; f < n; ++f) site[order.order[f]].position += x[f];
   return largest;
 }
 
 }  // namespace
 
-void solve_positions(const TracedGraph& t, const LargeVector<char>& fixed, LargeVector<FaceSite>& site) {
+SolveOrder::SolveOrder(const LargeVector<int>& faces_in_order, std::size_t faces) : order(faces_in_order) {
+  rank.assign(faces, kNone);
+  for (std::size_t k = 0; k < order.size(); ++k) rank[order[k]] = static_cast<int>(k);
+}
+
+void solve_positions(const TracedGraph& t, const SolveOrder& order, const LargeVector<char>& fixed,
+                     LargeVector<FaceSite>& site) {
   for (int step = 0; step < tolerance::kPositionSteps; ++step)
-    if (!(gauss_newton_step(t, fixed, site) > tolerance::kFurtherStep * t.scale)) break;
+    if (!(gauss_newton_step(t, order, fixed, site) > tolerance::kFurtherStep * t.scale)) break;
 }
 
 }  // namespace covmap::recognition::stages

@@ -95,14 +95,15 @@ Reconstruction recognize_in_frame(Reconstruction out, const InputScale& in, cons
   PropagationBuffers buffers(static_cast<int>(g.faces.size()));
   for (const mobius::Complex& p : candidates.points) {
     propagate(traced, at_degenerate_node, start.face, p, buffers);
-    solve_positions(traced, at_degenerate_node, buffers.site);
+    const SolveOrder order(buffers.queue, g.faces.size());
+    solve_positions(traced, order, at_degenerate_node, buffers.site);
     ArcVerification verified = verify_arcs(traced, buffers.site);
     out.timings.propagate += timer.lap();
     if (verified.failure) {
       if (!closest || verified.residuals.arcs_beyond < closest->residuals.arcs_beyond) closest = std::move(verified);
       continue;
     }
-    solve_weights(traced, buffers.site);
+    solve_weights(traced, order, buffers.site);
     solutions.push_back(collect_sites(buffers.site, in.tol, options.weight_snap));
     solutions.back().residuals = std::move(verified.residuals);
     out.timings.sites += timer.lap();

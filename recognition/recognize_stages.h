@@ -235,12 +235,20 @@ void keep_worst(std::vector<Residual> all, ResidualSummary& summary);
 // nodes, whose sites propagation re-anchored on their nodes' solution circles (there the rounding
 // of the sites decides the recomputed diagram's combinatorics). A step whose correction exceeds
 // tolerance::kLinearisation of the extent is not made.
-void solve_positions(const TracedGraph& t, const LargeVector<char>& fixed, LargeVector<FaceSite>& site);
+// Both solves number their unknowns in `order` (the faces in breadth-first order, the propagation's
+// queue): neighbouring faces get nearby numbers, and the iterations read memory nearly in order.
+struct SolveOrder {
+  explicit SolveOrder(const LargeVector<int>& faces_in_order, std::size_t faces);
+  const LargeVector<int>& order;  // unknown -> face
+  LargeVector<int> rank;          // face -> unknown (kNone: not an unknown)
+};
+void solve_positions(const TracedGraph& t, const SolveOrder& order, const LargeVector<char>& fixed,
+                     LargeVector<FaceSite>& site);
 
 // The log-weights of all assigned faces by weighted least squares over every arc between two of
 // them (each arc states log(w_right / w_left) from its two sites' positions), started from the
 // propagated weights: errors no longer accumulate along the breadth-first tree.
-void solve_weights(const TracedGraph& t, LargeVector<FaceSite>& site);
+void solve_weights(const TracedGraph& t, const SolveOrder& order, LargeVector<FaceSite>& site);
 
 // The reconstruction from one site per face (sites, face_site).
 Reconstruction collect_sites(const LargeVector<FaceSite>& site, double tol, double weight_snap);

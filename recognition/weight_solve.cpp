@@ -41,18 +41,22 @@ std::pair<double, double> arc_ratio(const mobius::ArcBisector& b, mobius::Comple
   return {0.5 * std::log(dr / dl), std::clamp(m * m, 1.0, tolerance::kMaxArcWeight)};
 }
 
-ArcSystem arc_system(const TracedGraph& t, const LargeVector<FaceSite>& site) {
+ArcSystem arc_system(const TracedGraph& t, const SolveOrder& order, const LargeVector<FaceSite>& site) {
   const Diagram& g = t.g;
-  const std::size_t faces = site.size();
+  const std::size_t faces = order.order.size();
   ArcSystem s;
   s.begin.assign(faces + 1, 0);
+  // l, r: the two faces; ul, ur: their unknowns.
+  int ul = kNone, ur = kNone;
   auto usable = [&](std::size_t a, int& l, int& r) {
     l = t.face_of_half[2 * a], r = t.face_of_half[2 * a + 1];
-    return !g.arcs[a].frame && l != kNone && r != kNone && l != r && site[l].assigned && site[r].assigned;
+    if (g.arcs[a].frame || l == kNone || r == kNone || l == r) return false;
+    ul = order.rank[l], ur = order.rank[r];
+    return ul != kNone && ur != kNone;
   };
   for (std::size_t a = 0; a < g.arcs.size(); ++a) {
     int l, r;
-    if (usable(a, l, r)) ++s.begin[l + 1], ++s.begin[r + 1];
+    if (usable(a, l, r)) ++s.begin[ul + 1], ++s.begin[ur + 1];
   }
   for (std::size_t f = 0; f < faces; ++f) s.begin[f + 1] += s.begin[f];
   s.other.resize(s.begin[faces]);
@@ -68,8 +72,8 @@ ArcSystem arc_system(const TracedGraph& t, const LargeVector<FaceSite>& site) {
     const double far = 1.0 + t.extent.distance_to({b.v.real(), b.v.imag()}) / t.scale;
     omega /= far * far;
     if (!std::isfinite(d)) d = 0.0, omega = 0.0;  // a site at its arc's centre: the arc states nothing
-    s.other[fill[l]] = r, s.omega[fill[l]] = omega, s.d[fill[l]++] = d;
-    s.other[fill[r]] = l, s.omega[fill[r]] = omega, s.d[fill[r]++] = -d;
+    s.other[fill[ul]] = ur, s.omega[fill[ul]] = omega, s.d[fill[ul]++] = d;
+    s.other[fill[ur]] = ul, s.omega[fill[ur]] = omega, s.d[fill[ur]++] = -d;
   }
   return s;
 }
@@ -89,13 +93,12 @@ void laplacian(const ArcSystem& s, const LargeVector<double>& x, LargeVector<dou
 
 }  // namespace
 
-void solve_weights(const TracedGraph& t, LargeVector<FaceSite>& site) {
-  const std::size_t n = site.size();
-  const ArcSystem s = arc_system(t, site);
+void solve_weights(const TracedGraph& t, const SolveOrder& order, LargeVector<FaceSite>& site) {
+  const std::size_t n = order.order.size();
+  const ArcSystem s = arc_system(t, order, site);
   if (s.other.empty()) return;
   LargeVector<double> u(n, 0.0), r(n, 0.0), q(n, 0.0), diag(n, 0.0);
-  for (std::size_t f = 0; f < n; ++f)
-    if (site[f].assigned) u[f] = std::log(site[f].weight);
+  for (std::size_t f = 0; f < n; ++f) u[f] = std::log(site[order.order[f]].weight);
   // Residual of the normal equations L u = b, b_f = -Σ ω d over f's arcs (d: u_other - u_f).
   laplacian(s, u, q);
   // The rounding of the residual itself (its terms are ~ω·(|d| + |u|)): no iteration gets below it.
@@ -120,9 +123,8 @@ void solve_weights(const TracedGraph& t, LargeVector<FaceSite>& site) {
   conjugate_gradients([&](const LargeVector<double>& in, LargeVector<double>& out) { laplacian(s, in, out); }, diag, u, r,
                       rz_floor);
   for (std::size_t f = 0; f < n; ++f)
-    if (site[f].assigned && !std::isfinite(u[f])) return;  // keep the propagated weights
-  for (std::size_t f = 0; f < n; ++f)
-    if (site[f].assigned) site[f].weight = std::exp(u[f]);
+    if (!std::isfinite(u[f])) return;  // keep the propagated weights
+  for (std::size_t f = 0; f < n; ++f) site[order.order[f]].weight = std::exp(u[f]);
 }
 
 }  // namespace covmap::recognition::stages
