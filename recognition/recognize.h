@@ -16,9 +16,18 @@
 // are generalized disks, intersected by half-space intersection in 3D (feasible_region.h). The
 // region is returned with a representative point, whose propagation is the reconstruction. Frame
 // arcs of clipped maps bound faces but constrain nothing. An arc whose end nodes do not lie on its
-// circle or line (beyond the tolerance) is rejected before anything else. The answer names the arc
-// and the distance when it fails. Linear in the size of the graph; docs/PERFORMANCE.md has times
-// (10^6 faces in about 2 s).
+// circle or line (beyond the tolerance) is rejected before anything else.
+//
+// Everything is computed in the graph's own frame (centred, scaled by a power of two), so the
+// answer does not depend on where the graph sits or how large it is. After propagation the sites
+// are refined by least squares over every arc (Gauss-Newton on the mirror relations) and the
+// weights solved by least squares on every arc's log-weight ratio, so errors do not grow along
+// the propagation tree. One tolerance, RecognitionOptions::relative_tolerance, governs every
+// approximate decision; a graph rounded to d significant digits is accepted with a tolerance of
+// ~10·10^-d. The answer counts the arcs and nodes beyond the tolerance and names the worst
+// (Reconstruction::residuals), and names the first failure with its distance. Linear in the size
+// of the graph per iteration of the solves (at most tolerance::kSolveIterations);
+// docs/PERFORMANCE.md has times.
 #pragma once
 
 #include <optional>

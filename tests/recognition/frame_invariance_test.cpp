@@ -54,15 +54,18 @@ double coordinate_rounding(double offset, double scale) {
 
 // The issue: 300 sites near 1e7 came back with position error 1e-7 and weight error 1.4e-5, and
 // "voronoi: no" with 822 differences, while the same graph at the origin gave 5e-12 and "yes".
+// (Sites spread over 1e3 near 1e7 reproduce it: 1.3e-7, 1.9e-5 and no "yes" in five seeds before
+// the graph frame. A unit extent at 1e7 is not used: the engine's diagram of it fails the
+// independent checker.)
 TEST(FrameInvariance, TranslatedRotatedAndScaledCopiesGiveTheSameAnswer) {
   const Similarity copies[] = {
-      {1.0, 0.0, 0.0, 0.0},     {1.0, 0.0, 1e7, 1e7},   {1e-3, 0.0, 0.0, 0.0}, {1e7, 0.0, 0.0, 0.0},
+      {1.0, 0.0, 0.0, 0.0},     {1e3, 0.0, 1e7, 1e7},   {1e-3, 0.0, 0.0, 0.0}, {1e7, 0.0, 0.0, 0.0},
       {1.0, 0.7, 0.0, 0.0},     {1e5, 2.1, 1e7, -3e6},  {3.7, 0.3, -1e3, 5e2},
   };
   for (std::uint64_t seed = 1; seed <= 4; ++seed)
     for (const Similarity& t : copies) {
       const RoundTrip rt = round_trip(RecognitionFamily::kRandom, 300, seed, {}, t);
-      if (!rt.drawn_valid) continue;
+      ASSERT_TRUE(rt.drawn_valid) << "the engine's diagram fails check_diagram";
       const std::string what = "seed " + std::to_string(seed) + " scale " + std::to_string(t.scale) + " offset " +
                                std::to_string(t.offset_x) + " angle " + std::to_string(t.angle);
       ASSERT_TRUE(rt.r.bisector_graph) << what << ": " << rt.r.reason;
