@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <limits>
 #include <string>
 
@@ -131,6 +132,33 @@ TEST(WeightSolve, WeightsStayAccurateOnLargerGraphs) {
   ASSERT_TRUE(rt.r.bisector_graph) << rt.r.reason;
   EXPECT_LE(rt.error.position, 1e-12);
   EXPECT_LE(rt.error.weight, 1e-12);
+}
+
+}  // namespace
+}  // namespace covmap::recognition
+
+namespace covmap::recognition {
+namespace {
+
+// Three sites: both nodes lie on the same three bisectors and give the same solution circle, so the
+// sites form a one-parameter family (paper 5, §4.2). The member returned — the middle of the widest
+// arc of the circle on which every site keeps to its arcs' sides — must draw the same graph: the
+// engine's diagram of the returned sites is compared with the input (voronoi: yes).
+TEST(Families, ThreeSiteFamiliesReturnAMemberThatDrawsTheGraph) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0), w(1.0, 2.0);
+  int families = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const std::vector<Site> sites = {{"a", u(rng), u(rng), w(rng)}, {"b", u(rng), u(rng), w(rng)}, {"c", u(rng), u(rng), w(rng)}};
+    const Diagram drawn = voronoi::build_diagram(sites);
+    if (!check::check_diagram(drawn).ok()) continue;
+    const Reconstruction r = recognize(drawn);
+    ASSERT_TRUE(r.bisector_graph) << "trial " << trial << ": " << r.reason;
+    if (r.unique) continue;
+    ++families;
+    EXPECT_EQ(r.voronoi, MwvdAnswer::kYes) << "trial " << trial << ": " << r.voronoi_differences.size() << " differences";
+  }
+  EXPECT_GT(families, 20);
 }
 
 }  // namespace
