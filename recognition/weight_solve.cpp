@@ -98,7 +98,23 @@ void solve_weights(const TracedGraph& t, const SolveOrder& order, LargeVector<Fa
   const ArcSystem s = arc_system(t, order, site);
   if (s.other.empty()) return;
   LargeVector<double> u(n, 0.0), r(n, 0.0), q(n, 0.0), diag(n, 0.0);
-  for (std::size_t f = 0; f < n; ++f) u[f] = std::log(site[order.order[f]].weight);
+  // The start: the ratios integrated along the breadth-first tree again, now from both sites of
+  // each arc after the position solve (the propagated weights carry the propagated positions'
+  // rounding). A face's parent is its neighbour first reached, i.e. of smallest unknown number.
+  u[0] = std::log(site[order.order[0]].weight);
+  for (std::size_t f = 1; f < n; ++f) {
+    int parent = kNone;
+    for (int k = s.begin[f]; k < s.begin[f + 1]; ++k)
+      if (parent == kNone || s.other[k] < parent) parent = s.other[k];
+    if (parent == kNone || parent >= static_cast<int>(f)) {
+      u[f] = std::log(site[order.order[f]].weight);
+      continue;
+    }
+    double sum = 0.0, omega = 0.0;
+    for (int k = s.begin[f]; k < s.begin[f + 1]; ++k)
+      if (s.other[k] == parent) sum += s.omega[k] * (u[parent] - s.d[k]), omega += s.omega[k];
+    u[f] = omega > 0 ? sum / omega : std::log(site[order.order[f]].weight);
+  }
   // Residual of the normal equations L u = b, b_f = -Σ ω d over f's arcs (d: u_other - u_f).
   laplacian(s, u, q);
   // The rounding of the residual itself (its terms are ~ω·(|d| + |u|)): no iteration gets below it.
