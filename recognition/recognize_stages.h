@@ -247,7 +247,8 @@ void solve_positions(const TracedGraph& t, const SolveOrder& order, const LargeV
 
 // The log-weights of all assigned faces by weighted least squares over every arc between two of
 // them (each arc states log(w_right / w_left) from its two sites' positions), started from the
-// propagated weights: errors no longer accumulate along the breadth-first tree.
+// ratios integrated along the breadth-first tree from the (refined) sites: errors no longer
+// accumulate along the tree.
 void solve_weights(const TracedGraph& t, const SolveOrder& order, LargeVector<FaceSite>& site);
 
 // The reconstruction from one site per face (sites, face_site).

@@ -37,9 +37,12 @@ inline constexpr double kMatrixCeiling = 1e-2;
 // are the most accurate; a larger spread would only slow the conjugate gradients).
 inline constexpr double kMaxArcWeight = 1e4;
 // The weight and position solves' conjugate gradients stop when the preconditioned residual has
-// shrunk by kSolveReduction (their start — the propagated sites — is already within ~1e-10 of the
-// answer, so this is well below rounding), or after kSolveIterations passes over the arcs.
+// shrunk by kSolveReduction (their start is already within ~1e-10 of the answer, so this is well
+// below rounding), or below its own rounding (weights), or after kSolveIterations passes over the
+// arcs (the Laplacian's condition grows like the number of faces; the cap bounds the cost at 10^6
+// faces, docs/PERFORMANCE.md).
 inline constexpr double kSolveReduction = 1e-8;
+inline constexpr int kSolveIterations = 100;
 // The position solve makes at most kPositionSteps Gauss-Newton steps, a further one only while the
 // last moved a site by more than kFurtherStep of the extent — a rounded graph, where the
 // linearisation error of a correction c (~c²) still matters; an exact graph's first correction is
@@ -48,7 +51,6 @@ inline constexpr double kSolveReduction = 1e-8;
 inline constexpr int kPositionSteps = 3;
 inline constexpr double kFurtherStep = 1e-10;
 inline constexpr double kLinearisation = 1e-1;
-inline constexpr int kSolveIterations = 100;
 
 // A node's solution circle whose curvature, in the node's frame, is below this fraction of its
 // linear term is its tangent line: radii beyond 1e9 frame units are rounding of a line (the
