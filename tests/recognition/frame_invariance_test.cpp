@@ -83,8 +83,9 @@ TEST(FrameInvariance, TranslatedRotatedAndScaledCopiesGiveTheSameAnswer) {
 // the extent when unique — or, when the graph's nodes crowd into a small part of the picture (the
 // centre of perturbed cocircular sites), to the rounding of the nodes magnified by the sites'
 // distance over the nodes' extent, which is all such a graph says about its sites. (Collinear
-// sites are not here: the engine draws most of them invalidly, and the rest put nodes 10^7 extents
-// out — docs/RECOGNITION.md, "Known limits".)
+// sites and grids are not here: the engine draws many of them invalidly, and nearly collinear
+// ones put most nodes 10^4..10^7 extents out, where the tolerance relative to the graph's extent
+// lets wrong sites through — docs/RECOGNITION.md, "Known limits".)
 TEST(NearDegenerate, FamiliesPerturbedSlightlyAreRecovered) {
   const RecognitionFamily families[] = {RecognitionFamily::kCocircular, RecognitionFamily::kEqual};
   const Perturbation perturbations[] = {{true, 0.0}, {false, 1e-15}, {false, 1e-12}, {false, 1e-9}};
