@@ -115,6 +115,10 @@ Reconstruction recognize_in_frame(Reconstruction out, const InputScale& in, cons
   }
   out.residuals = solutions.front().residuals;
   accept(out, solutions, candidates.family, free_root);
+  if (out.residuals.arcs_unverified > 0)
+    out.reason = "every arc between two traced faces separates mirror-image sites; " +
+                 std::to_string(out.residuals.arcs_unverified) +
+                 " arc(s) not verified: tracing the faces by geometry left a side of them open";
   return out;
 }
 

@@ -82,6 +82,9 @@ struct ResidualSummary {
   double tolerance = 0.0;    // the length relative_tolerance stands for in this graph
   int arcs_beyond = 0;       // arcs whose residual exceeds the tolerance
   int nodes_beyond = 0;      // nodes off an arc's curve beyond the tolerance
+  // Arcs not measured because tracing the faces by geometry left one of their sides open (nearly
+  // parallel rays of near-degenerate inputs meeting far out); an accepted graph says so.
+  int arcs_unverified = 0;
   std::vector<Residual> worst;  // at most kWorstResiduals, largest amount / allowed first
   static constexpr std::size_t kWorstResiduals = 5;
 };

@@ -22,7 +22,9 @@ bool larger(const Residual& a, const Residual& b) {
 struct ChunkResult {
   std::vector<Residual> worst;
   int failing = 0;
-  std::optional<RecognitionFailure> first;
+  std::optional<RecognitionFailure> first;           // measured: off by some length
+  std::optional<RecognitionFailure> first_untraced;  // an arc with one face on both sides
+  int unverified = 0;                                // arcs with a side tracing left open
 };
 
 void remember(ChunkResult& r, const Residual& x) {
@@ -33,9 +35,11 @@ void remember(ChunkResult& r, const Residual& x) {
   }
 }
 
-void fail(ChunkResult& r, int arc, int face, mobius::Complex where, double amount, const std::string& message) {
+void fail(ChunkResult& r, int arc, int face, mobius::Complex where, double amount, const std::string& message,
+          bool untraced = false) {
   ++r.failing;
-  if (r.first) return;
+  std::optional<RecognitionFailure>& first = untraced ? r.first_untraced : r.first;
+  if (first) return;
   RecognitionFailure f;
   f.arc = arc;
   f.face = face;
@@ -43,7 +47,7 @@ void fail(ChunkResult& r, int arc, int face, mobius::Complex where, double amoun
   f.y = where.imag();
   f.amount = amount;
   f.message = message;
-  r.first = std::move(f);
+  first = std::move(f);
 }
 
 void verify_chunk(const TracedGraph& t, const LargeVector<FaceSite>& site, std::size_t b, std::size_t e, ChunkResult& r) {
@@ -52,7 +56,21 @@ void verify_chunk(const TracedGraph& t, const LargeVector<FaceSite>& site, std::
   for (std::size_t a = b; a < e; ++a) {
     const Arc& arc = g.arcs[a];
     const int left = face_of_half[2 * a], right = face_of_half[2 * a + 1];
-    if (arc.frame || left == kNone || right == kNone || !site[left].assigned || !site[right].assigned) continue;
+    if (arc.frame) continue;
+    if (left == kNone || right == kNone) {
+      ++r.unverified;  // tracing by geometry left a side open (nearly parallel rays meeting far out)
+      continue;
+    }
+    if (left == right) {
+      // One face on both sides: the arc separates no two sites.
+      const int v = arc.from != kNone ? arc.from : arc.to;
+      const mobius::Complex where = v != kNone ? mobius::Complex(g.nodes[v].x, g.nodes[v].y) : mobius::Complex(0.0, 0.0);
+      std::ostringstream msg;
+      msg << "arc " << a << " has face " << left << " on both sides";
+      fail(r, static_cast<int>(a), left, where, 0.0, msg.str(), true);
+      continue;
+    }
+    if (!site[left].assigned || !site[right].assigned) continue;
     const mobius::ArcBisector bis = mobius::arc_bisector(arc, g.nodes);
     // The face on the left must hold its site on that side: inside the disk when the arc runs
     // counter-clockwise, on the left of a line; the face on the right the other side.
@@ -115,9 +133,13 @@ ArcVerification verify_arcs(const TracedGraph& t, const LargeVector<FaceSite>& s
   std::vector<Residual> all;
   for (ChunkResult& r : found) {
     out.residuals.arcs_beyond += r.failing;
+    out.residuals.arcs_unverified += r.unverified;
     all.insert(all.end(), r.worst.begin(), r.worst.end());
     if (r.first && !out.failure) out.failure = std::move(r.first);  // chunks are in arc order
   }
+  // An arc off by a length is the better evidence; untraced arcs only when there is none.
+  for (ChunkResult& r : found)
+    if (r.first_untraced && !out.failure) out.failure = std::move(r.first_untraced);
   keep_worst(std::move(all), out.residuals);
   if (out.failure) {
     out.failure->arcs_beyond = out.residuals.arcs_beyond;

@@ -79,7 +79,8 @@ void write_reconstruction_json(const recognition::Reconstruction& r, std::ostrea
     worst.push_back({{"element", std::string(recognition::to_string(x.element))}, {"index", x.index},
                      {"x", x.x}, {"y", x.y}, {"amount", x.amount}, {"allowed", x.allowed}});
   j["residuals"] = {{"tolerance", r.residuals.tolerance}, {"arcs_beyond", r.residuals.arcs_beyond},
-                    {"nodes_beyond", r.residuals.nodes_beyond}, {"worst", worst}};
+                    {"nodes_beyond", r.residuals.nodes_beyond}, {"arcs_unverified", r.residuals.arcs_unverified},
+                    {"worst", worst}};
   j["voronoi_differences"] = nlohmann::json::array();
   for (const auto& d : r.voronoi_differences)
     j["voronoi_differences"].push_back({{"kind", recognition::to_string(d.kind)},
