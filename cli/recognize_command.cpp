@@ -35,6 +35,20 @@ CLI::App* setup_recognize(CLI::App& app, RecognizeOptions& options) {
   return cmd;
 }
 
+namespace {
+
+// "worst residual: arc 12 at (x, y): 3e-09 (allowed 1e-07)", or nothing when nothing was measured.
+std::string worst_residual(const recognition::Reconstruction& r) {
+  if (r.residuals.worst.empty()) return "";
+  const recognition::Residual& w = r.residuals.worst.front();
+  std::ostringstream out;
+  out << "; worst residual: " << recognition::to_string(w.element) << " " << w.index << " at (" << w.x << ", " << w.y
+      << "): " << w.amount << " (allowed " << w.allowed << ")";
+  return out.str();
+}
+
+}  // namespace
+
 int run_recognize(const RecognizeOptions& options) {
   return guarded([&]() {
     io::OutputPlan plan;
@@ -63,7 +77,7 @@ int run_recognize(const RecognizeOptions& options) {
     }
     io::write_files_atomically(outputs);
     if (!r.bisector_graph) {
-      std::cout << options.graph_path << ": not a bisector graph: " << r.reason << "\n";
+      std::cout << options.graph_path << ": not a bisector graph: " << r.reason << worst_residual(r) << "\n";
       return kNotBisectorGraph;
     }
     std::cout << options.graph_path << ": bisector graph of " << r.sites.size() << " sites"
@@ -77,7 +91,7 @@ int run_recognize(const RecognizeOptions& options) {
     if (r.voronoi == recognition::MwvdAnswer::kNo && !r.voronoi_differences.empty())
       std::cout << " (" << r.voronoi_differences.size() << " differences; first: "
                 << r.voronoi_differences.front().message << ")";
-    std::cout << "\n";
+    std::cout << worst_residual(r) << "\n";
     return kOk;
   });
 }

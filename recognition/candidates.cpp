@@ -6,14 +6,15 @@
 #include <sstream>
 
 #include "recognition/recognize_stages.h"
+#include "recognition/tolerances.h"
 
 namespace covmap::recognition::stages {
 namespace {
 
 // Tests points against every constraint of the start face and remembers the closest miss.
 struct ConstraintTest {
+  const TracedGraph& t;
   const std::vector<Constraint>& constraints;
-  double tol = 0.0;
   Violation closest;
 
   bool satisfies(mobius::Complex p) {
@@ -29,44 +30,47 @@ struct ConstraintTest {
       if (off > v.amount) v.amount = off, v.constraint = static_cast<int>(k);
     }
     if (v.amount < closest.amount) closest = v;
-    return v.amount <= tol;
+    return v.amount <= t.tol_at(p);
   }
 
   // p as a further candidate when it satisfies every constraint and is no earlier one.
   void add_if_new(std::vector<mobius::Complex>& candidates, mobius::Complex p) {
     if (satisfies(p) && std::none_of(candidates.begin(), candidates.end(),
-                                     [&](mobius::Complex q) { return std::abs(q - p) <= tol; }))
+                                     [&](mobius::Complex q) { return std::abs(q - p) <= t.tol_at(p); }))
       candidates.push_back(p);
   }
 };
 
 // Two solution circles that agree within the tolerance are one circle (computed around two
 // nodes of the same three bisectors, e.g.): their "intersection" would be rounding noise.
-bool same_circle(const mobius::GeneralizedCircle& a, const mobius::GeneralizedCircle& b, double tol,
-                 double matrix_tolerance) {
+bool same_circle(const mobius::GeneralizedCircle& a, const mobius::GeneralizedCircle& b, const TracedGraph& t) {
+  const double tol = t.tol;
   if (a.is_line() != b.is_line()) return false;
   if (a.is_line()) {
     const mobius::Complex ua = a.B / std::abs(a.B), ub = b.B / std::abs(b.B);
     const double sine = std::abs(std::imag(std::conj(ua) * ub));
     const mobius::Complex pa = -a.C * a.B / (2.0 * std::norm(a.B));
-    return sine <= matrix_tolerance && mobius::distance_to(b, pa) <= tol;
+    return sine <= std::max(t.relative, tolerance::kSameDirectionSine) && mobius::distance_to(b, pa) <= t.tol_at(pa);
   }
   const auto ca = a.centre(), cb = b.centre();
   const auto ra = a.radius(), rb = b.radius();
-  return ca && cb && ra && rb && std::abs(*ca - *cb) <= tol && std::abs(*ra - *rb) <= tol;
+  if (!(ca && cb && ra && rb)) return false;
+  // Huge solution circles (nearly equal weights) are stated to `relative` of their own size.
+  const double allowed = tol + t.relative * std::max(*ra, *rb);
+  return std::abs(*ca - *cb) <= allowed && std::abs(*ra - *rb) <= allowed;
 }
 
 // Candidates from the solution circles when no node has isolated fixed points: their pairwise
 // intersections, or, when all circles coincide, points around the one circle (a family).
-void circle_candidates(const std::vector<Constraint>& constraints, double scale, double matrix_tolerance,
-                       ConstraintTest& test, Candidates& out) {
+void circle_candidates(const std::vector<Constraint>& constraints, double scale, ConstraintTest& test,
+                       Candidates& out) {
   std::vector<mobius::GeneralizedCircle> circles;
   for (const Constraint& c : constraints)
     if (c.is_circle) circles.push_back(c.circle);
   bool distinct_pair = false;
   for (std::size_t i = 0; i < circles.size(); ++i)
     for (std::size_t j = i + 1; j < circles.size(); ++j) {
-      if (same_circle(circles[i], circles[j], test.tol, matrix_tolerance)) continue;
+      if (same_circle(circles[i], circles[j], test.t)) continue;
       const auto pts = mobius::intersect(circles[i], circles[j]);
       if (pts.empty()) {
         // Where the two circles come closest (on the line of centres): measured, for the
@@ -88,6 +92,7 @@ void circle_candidates(const std::vector<Constraint>& constraints, double scale,
     // one-parameter family. Points around the circle are tried in turn; propagation decides.
     out.family = true;
     const mobius::GeneralizedCircle& c = circles.front();
+    out.family_circle = c;
     if (c.is_line()) {
       const mobius::Complex p0 = -c.C * c.B / (2.0 * std::norm(c.B));
       const mobius::Complex dir = mobius::Complex(0, 1) * c.B / std::abs(c.B);
@@ -100,23 +105,24 @@ void circle_candidates(const std::vector<Constraint>& constraints, double scale,
 
 }  // namespace
 
-Candidates start_candidates(const std::vector<Constraint>& constraints, const std::optional<SiteRegion>& free_root,
-                            double tol, double scale, double matrix_tolerance) {
+Candidates start_candidates(const TracedGraph& t, const std::vector<Constraint>& constraints,
+                            const std::optional<SiteRegion>& free_root) {
   Candidates out;
-  ConstraintTest test{constraints, tol, {}};
+  ConstraintTest test{t, constraints, {}};
   out.family = free_root.has_value();
   if (free_root) out.points.push_back({free_root->representative.x, free_root->representative.y});
   for (const Constraint& c : constraints)
     for (const mobius::Complex& p : c.points) test.add_if_new(out.points, p);
-  if (out.points.empty() && !free_root) circle_candidates(constraints, scale, matrix_tolerance, test, out);
+  if (out.points.empty() && !free_root) circle_candidates(constraints, t.scale, test, out);
   if (!out.family)
-    for (mobius::Complex& p : out.points) p = polish(p, constraints, tol);
+    for (mobius::Complex& p : out.points) p = polish(p, constraints, t.tol_at(p));
   out.closest = test.closest;
   return out;
 }
 
-Rejection no_common_point(const Diagram& g, int start, const std::vector<Constraint>& constraints,
+Rejection no_common_point(const TracedGraph& t, int start, const std::vector<Constraint>& constraints,
                           const Violation& closest) {
+  const Diagram& g = t.g;
   RecognitionFailure fail;
   fail.face = start;
   std::ostringstream msg;
@@ -130,13 +136,13 @@ Rejection no_common_point(const Diagram& g, int start, const std::vector<Constra
     fail.y = g.nodes[fail.node].y;
     fail.amount = empty_set->gap;
     msg << ": going around node " << fail.node << " maps no point to itself (its solution circles miss by "
-        << fail.amount << ")";
+        << fail.amount << " of the node's scale)";
   } else if (closest.constraint >= 0) {
     fail.node = constraints[closest.constraint].node;
     fail.x = closest.at.real();
     fail.y = closest.at.imag();
     fail.amount = closest.amount;
-    msg << ": the best candidate misses the solution set of node " << fail.node << " by " << fail.amount;
+    msg << ": the best candidate misses the solution set of node " << fail.node << " by " << t.unit * fail.amount;
   }
   fail.message = msg.str();
   return Rejection{fail.message, fail};

@@ -11,23 +11,29 @@
 namespace covmap::recognition::stages {
 namespace {
 
-// Paper 5 §3: when no node constrains a site, the sites are fixed by one root site through the
-// inversions along a spanning tree of the faces, and each arc asks for its two sites to lie on its
-// two sides. Pulled back to the root by the composed (anti-)Möbius map, each such demand is a
-// generalized disk for the root's site. The root is an unbounded face when there is one.
-SiteRegion root_region(const Diagram& g, const LargeVector<int>& face_of_half,
-                       const LargeVector<char>& outside) {
-  SiteRegion region;
+// The root is an unbounded face when there is one.
+int root_face(const Diagram& g, const LargeVector<char>& outside) {
   const int faces = static_cast<int>(g.faces.size());
-  for (int f = 0; f < faces && region.face == kNone; ++f)
-    if (!outside[f] && !g.faces[f].bounded) region.face = f;
-  for (int f = 0; f < faces && region.face == kNone; ++f)
-    if (!outside[f]) region.face = f;
-  if (region.face == kNone) return region;
+  for (int f = 0; f < faces; ++f)
+    if (!outside[f] && !g.faces[f].bounded) return f;
+  for (int f = 0; f < faces; ++f)
+    if (!outside[f]) return f;
+  return kNone;
+}
+
+}  // namespace
+
+// Paper 5 §3: the sites are fixed by one root site through the inversions along a spanning tree of
+// the faces, and each arc asks for its two sites to lie on its two sides. Pulled back to the root
+// by the composed (anti-)Möbius map, each such demand is a generalized disk for the root's site.
+std::vector<mobius::GeneralizedCircle> pulled_back_bounds(const TracedGraph& t, int root) {
+  const Diagram& g = t.g;
+  std::vector<mobius::GeneralizedCircle> bounds;
+  const int faces = static_cast<int>(g.faces.size());
   LargeVector<mobius::Mobius> to_face(faces);
   LargeVector<char> reached(faces, 0), arc_used(g.arcs.size(), 0);
-  std::deque<int> queue{region.face};
-  reached[region.face] = 1;
+  std::deque<int> queue{root};
+  reached[root] = 1;
   while (!queue.empty()) {
     const int f = queue.front();
     queue.pop_front();
@@ -39,24 +45,24 @@ SiteRegion root_region(const Diagram& g, const LargeVector<int>& face_of_half,
         const mobius::GeneralizedCircle c = curve_of(arc);
         const bool f_left_is_inside = std::holds_alternative<Line>(arc.curve) ? h.forward : (h.forward == arc.ccw);
         const mobius::GeneralizedCircle side = f_left_is_inside ? c : mobius::GeneralizedCircle{-c.A, -c.B, -c.C};
-        region.bounds.push_back(to_face[f].inverse().apply(side));
-        const int other = face_of_half[half_id({h.arc, !h.forward})];
+        bounds.push_back(to_face[f].inverse().apply(side));
+        const int other = t.face_of_half[half_id({h.arc, !h.forward})];
         if (other == kNone || reached[other]) continue;
         reached[other] = 1;
         to_face[other] = mobius::Mobius::inversion(c).after(to_face[f]);
         queue.push_back(other);
       }
   }
-  return region;
+  return bounds;
 }
-
-}  // namespace
 
 std::variant<SiteRegion, Rejection> free_root_region(const TracedGraph& t, const Box& extent) {
   const Diagram& g = t.g;
   const double scale = t.scale;
-  SiteRegion region = root_region(g, t.face_of_half, t.outside);
+  SiteRegion region;
+  region.face = root_face(g, t.outside);
   if (region.face == kNone) return Rejection{"the graph has no face that could hold a site", std::nullopt};
+  region.bounds = pulled_back_bounds(t, region.face);
   const mobius::FeasibleRegion fr = mobius::feasible_region(region.bounds, mobius::Complex(0.5 * (extent.xmin + extent.xmax), 0.5 * (extent.ymin + extent.ymax)),
                                             std::max(2.0 * scale, 1.0));
   if (fr.empty) {

@@ -6,14 +6,19 @@
 
 #include "mobius/node_constraint.h"
 #include "recognition/recognize_stages.h"
+#include "recognition/tolerances.h"
 
 namespace covmap::recognition::stages {
+
+double matrix_tolerance(const TracedGraph& t, double L) {
+  return std::clamp(t.relative * t.scale / L, tolerance::kMatrixRounding, tolerance::kMatrixCeiling);
+}
 
 // Composed in the node's own frame z' = (z - v) / L, where every arc at v passes through the
 // origin and has a normalised form: an arc of a huge circle (nearly equal weights) is then a
 // near-reflection with O(1) matrix entries, where in plane coordinates its inversion matrix has
 // entries ~R² that cancel in the composition (the solution circle would lose ~(R/L)² digits).
-std::optional<Constraint> node_constraint(const TracedGraph& t, double matrix_tolerance, int f, int h_out) {
+std::optional<Constraint> node_constraint(const TracedGraph& t, int f, int h_out) {
   const Diagram& g = t.g;
   const LargeVector<int>& face_of_half = t.face_of_half;
   const LargeVector<int>& next_half = t.next_half;
@@ -25,6 +30,7 @@ std::optional<Constraint> node_constraint(const TracedGraph& t, double matrix_to
   double L = far_end != kNone ? std::abs(mobius::Complex(g.nodes[far_end].x, g.nodes[far_end].y) - at) : 0.0;
   if (!(L > 0)) L = scale;
   const mobius::NodeFrame frame{at, L};
+  const double mt = matrix_tolerance(t, L);
   mobius::Mobius h_total;
   int h = h_out, face = f, steps = 0;
   do {
@@ -36,11 +42,13 @@ std::optional<Constraint> node_constraint(const TracedGraph& t, double matrix_to
     if (++steps > 64) return std::nullopt;
   } while (face != f || h != h_out);
   Constraint c;
-  static_cast<mobius::NodeConstraint&>(c) = mobius::exact_fixed_set(h_total, matrix_tolerance);
-  // A solution circle through the node whose radius exceeds L / matrix_tolerance is its tangent
-  // line to within the tolerance over the node's neighbourhood: a line (A exactly 0), so that a
-  // rounding-level A does not become a circle of radius 1e16 in plane coordinates.
-  if (c.is_circle && std::abs(c.circle.A) <= matrix_tolerance * std::abs(c.circle.B)) c.circle.A = 0.0;
+  static_cast<mobius::NodeConstraint&>(c) = mobius::exact_fixed_set(h_total, mt);
+  // A solution circle through the node whose curvature is at the rounding of the composition
+  // (radius beyond L / kSolutionLine) is its tangent line (A exactly 0), so that a rounding-level A
+  // does not become a circle of radius 1e16 in plane coordinates. (Not mt: a curvature within a
+  // rounded graph's noise is still a circle — taking it as a line would move the site, which may
+  // lie many L away, by far more than that noise.)
+  if (c.is_circle && std::abs(c.circle.A) <= tolerance::kSolutionLine * std::abs(c.circle.B)) c.circle.A = 0.0;
   if (c.is_circle) c.circle = frame.to_plane(c.circle);
   for (mobius::Complex& p : c.points) p = frame.to_plane(p);
   return c;
@@ -50,7 +58,7 @@ std::optional<Constraint> node_constraint(const TracedGraph& t, double matrix_to
 // at degenerate nodes (FaceIndex::degenerate_node: rounding of the sites decides their
 // combinatorics, and re-anchoring on the nodes' solution circles lets the recomputed diagram
 // reproduce them).
-std::vector<Constraint> face_circle_constraints(const TracedGraph& t, double matrix_tolerance, int f) {
+std::vector<Constraint> face_circle_constraints(const TracedGraph& t, int f) {
   const Diagram& g = t.g;
   std::vector<Constraint> cs;
   std::vector<int> seen_nodes;
@@ -61,7 +69,7 @@ std::vector<Constraint> face_circle_constraints(const TracedGraph& t, double mat
       if (v == kNone || t.on_frame[v] || arc.frame) continue;
       if (std::find(seen_nodes.begin(), seen_nodes.end(), v) != seen_nodes.end()) continue;
       seen_nodes.push_back(v);
-      if (auto c = node_constraint(t, matrix_tolerance, f, half_id(hh)); c && c->is_circle) cs.push_back(*c);
+      if (auto c = node_constraint(t, f, half_id(hh)); c && c->is_circle) cs.push_back(*c);
       if (cs.size() >= 4) return cs;
     }
   return cs;

@@ -23,8 +23,7 @@ LargeVector<char> faces_at_degenerate_nodes(const Diagram& g, const voronoi::Fac
 
 PropagationBuffers::PropagationBuffers(int faces) : site(faces), reached(faces) { queue.reserve(faces); }
 
-void propagate(const TracedGraph& t, const LargeVector<char>& at_degenerate_node, double matrix_tolerance,
-               int start, mobius::Complex p, PropagationBuffers& buffers) {
+void propagate(const TracedGraph& t, const LargeVector<char>& at_degenerate_node, int start, mobius::Complex p, PropagationBuffers& buffers) {
   const Diagram& g = t.g;
   const LargeVector<int>& face_of_half = t.face_of_half;
   LargeVector<FaceSite>& site = buffers.site;
@@ -70,7 +69,7 @@ void propagate(const TracedGraph& t, const LargeVector<char>& at_degenerate_node
         if (other == kNone || reached[other] || g.arcs[h.arc].frame) continue;
         reached[other] = 1;
         const mobius::WeightedPoint partner = mobius::partner_across(mobius::arc_bisector(g.arcs[h.arc], g.nodes), {here.position, here.weight});
-        const mobius::Complex at = at_degenerate_node[other] ? polish(partner.position, face_circle_constraints(t, matrix_tolerance, other), t.tol) : partner.position;
+        const mobius::Complex at = at_degenerate_node[other] ? polish(partner.position, face_circle_constraints(t, other), t.tol) : partner.position;
         site[other] = {true, at, partner.weight};
         queue.push_back(other);
       }

@@ -55,23 +55,19 @@ void accept(Reconstruction& out, std::vector<Reconstruction>& solutions, bool fa
                          : "every arc separates mirror-image sites";
 }
 
-}  // namespace
-
-Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
-  Reconstruction out;
-  LapTimer timer;
-  out.graph = std::move(input);
+// Recognition proper, in the graph's frame: everything from the traced faces to the accepted sites.
+Reconstruction recognize_in_frame(Reconstruction out, const InputScale& in, const RecognitionOptions& options,
+                                  const GraphFrame& frame, LapTimer& timer) {
   Diagram& g = out.graph;
-  const InputScale in = prepare_input(g, options);
-  if (auto off = arc_end_off_curve(g, in.tol)) return rejected(std::move(out), std::move(*off));
   voronoi::FaceIndex face_index;
   voronoi::trace_faces(g, voronoi::FaceLabels::kGeometry, &face_index);
   out.timings.faces = timer.lap();
-  const FrameMarks frame = frame_marks(g, face_index.face_of_half);
-  const TracedGraph traced{g, face_index.face_of_half, face_index.next_half, frame.on_frame, frame.outside, in.scale, in.tol};
+  const FrameMarks marks = frame_marks(g, face_index.face_of_half);
+  const TracedGraph traced{g,         face_index.face_of_half, face_index.next_half, marks.on_frame, marks.outside,
+                           in.scale,  in.tol,                  in.relative,          frame.unit,     in.extent};
 
   // The start face and its candidate sites: fixed by its nodes, or (no node fixes any site) free.
-  StartFace start = start_face(traced, options.matrix_tolerance);
+  StartFace start = start_face(traced);
   std::optional<SiteRegion> free_root;
   if (start.face < 0 || start.constraints.empty()) {
     auto root = free_root_region(traced, in.extent);
@@ -79,35 +75,78 @@ Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
     free_root = std::move(std::get<SiteRegion>(root));
     start.face = free_root->face;
   }
-  const Candidates candidates = start_candidates(start.constraints, free_root, in.tol, in.scale, options.matrix_tolerance);
+  Candidates candidates = start_candidates(traced, start.constraints, free_root);
+  if (candidates.family_circle) {
+    // The members in the middle of the allowed pieces of the circle first; the fixed samples after
+    // them only guard against a bound spoiled by rounding along a deep tree.
+    std::vector<mobius::Complex> members = family_members(traced, start.face, *candidates.family_circle);
+    members.insert(members.end(), candidates.points.begin(), candidates.points.end());
+    candidates.points = std::move(members);
+  }
   const LargeVector<char> at_degenerate_node = faces_at_degenerate_nodes(g, face_index);
   if (candidates.points.empty())
-    return rejected(std::move(out), no_common_point(g, start.face, start.constraints, candidates.closest));
+    return rejected(std::move(out), no_common_point(traced, start.face, start.constraints, candidates.closest));
   out.timings.start = timer.lap();
 
-  // Each candidate propagated to every face, every arc verified, the survivors' sites collected.
+  // Each candidate propagated to every face, every arc verified, the survivors' weights solved over
+  // all arcs and their sites collected.
   std::vector<Reconstruction> solutions;
-  std::optional<RecognitionFailure> last_failure;
+  std::optional<ArcVerification> closest;
   PropagationBuffers buffers(static_cast<int>(g.faces.size()));
   for (const mobius::Complex& p : candidates.points) {
-    propagate(traced, at_degenerate_node, options.matrix_tolerance, start.face, p, buffers);
-    std::optional<RecognitionFailure> failure = first_arc_failure(traced, buffers.site);
+    propagate(traced, at_degenerate_node, start.face, p, buffers);
+    const SolveOrder order(buffers.queue, g.faces.size());
+    solve_positions(traced, order, at_degenerate_node, buffers.site);
+    ArcVerification verified = verify_arcs(traced, buffers.site);
     out.timings.propagate += timer.lap();
-    if (failure) {
-      last_failure = failure;
+    if (verified.failure) {
+      if (!closest || verified.residuals.arcs_beyond < closest->residuals.arcs_beyond) closest = std::move(verified);
       continue;
     }
+    solve_weights(traced, order, buffers.site);
     solutions.push_back(collect_sites(buffers.site, in.tol, options.weight_snap));
+    solutions.back().residuals = std::move(verified.residuals);
     out.timings.sites += timer.lap();
   }
   if (solutions.empty()) {
-    std::string reason = last_failure ? last_failure->message : "no candidate survived";
-    return rejected(std::move(out), Rejection{std::move(reason), last_failure});
+    std::string reason = closest ? closest->failure->message : "no candidate survived";
+    if (closest) out.residuals = std::move(closest->residuals);
+    return rejected(std::move(out), Rejection{std::move(reason), closest ? closest->failure : std::nullopt});
   }
+  out.residuals = solutions.front().residuals;
   accept(out, solutions, candidates.family, free_root);
+  if (out.residuals.arcs_unverified > 0)
+    out.reason = "every arc between two traced faces separates mirror-image sites; " +
+                 std::to_string(out.residuals.arcs_unverified) +
+                 " arc(s) not verified: tracing the faces by geometry left a side of them open";
+  return out;
+}
 
-  if (options.voronoi_check) {
-    mwvd_check(out, in.clipped, options);
+}  // namespace
+
+std::string_view to_string(ResidualElement element) {
+  switch (element) {
+    case ResidualElement::kArc: return "arc";
+    case ResidualElement::kNode: return "node";
+  }
+  return "?";
+}
+
+Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
+  Reconstruction out;
+  LapTimer timer;
+  out.graph = std::move(input);
+  const InputScale plane = prepare_input(out.graph, options);
+  if (auto off = arc_end_off_curve(out.graph, plane, out.residuals)) return rejected(std::move(out), std::move(*off));
+
+  // Into the graph's frame for the geometry, and back for the answer and the MWVD check.
+  const GraphFrame frame = graph_frame(plane.extent, plane.scale);
+  SavedGeometry saved = to_frame(out.graph, frame);
+  out = recognize_in_frame(std::move(out), scale_in_frame(plane, frame), options, frame, timer);
+  to_plane(out.graph, frame, saved);
+  to_plane(out, frame);
+  if (out.bisector_graph && options.voronoi_check) {
+    mwvd_check(out, plane.clipped, options);
     out.timings.voronoi_check = timer.lap();
   }
   return out;

@@ -16,9 +16,18 @@
 // are generalized disks, intersected by half-space intersection in 3D (feasible_region.h). The
 // region is returned with a representative point, whose propagation is the reconstruction. Frame
 // arcs of clipped maps bound faces but constrain nothing. An arc whose end nodes do not lie on its
-// circle or line (beyond the tolerance) is rejected before anything else. The answer names the arc
-// and the distance when it fails. Linear in the size of the graph; docs/PERFORMANCE.md has times
-// (10^6 faces in about 2 s).
+// circle or line (beyond the tolerance) is rejected before anything else.
+//
+// Everything is computed in the graph's own frame (centred, scaled by a power of two), so the
+// answer does not depend on where the graph sits or how large it is. After propagation the sites
+// are refined by least squares over every arc (Gauss-Newton on the mirror relations) and the
+// weights solved by least squares on every arc's log-weight ratio, so errors do not grow along
+// the propagation tree. One tolerance, RecognitionOptions::relative_tolerance, governs every
+// approximate decision; a graph rounded to d significant digits is accepted with a tolerance of
+// ~10·10^-d. The answer counts the arcs and nodes beyond the tolerance and names the worst
+// (Reconstruction::residuals), and names the first failure with its distance. Linear in the size
+// of the graph per iteration of the solves (at most tolerance::kSolveIterations);
+// docs/PERFORMANCE.md has times.
 #pragma once
 
 #include <optional>
@@ -33,21 +42,51 @@
 namespace covmap::recognition {
 
 struct RecognitionOptions {
-  // Relative to the diameter of the graph's nodes: how far a propagated site may be from where an
-  // arc says it must be. Exact (double-precision) graphs need ~1e-9; noisy maps use issue 4's
-  // tolerant path instead.
+  // THE tolerance, relative to the graph's extent (the diagonal of its nodes' box, measured in the
+  // graph's own frame: centred and scaled, so recognition does not depend on where the graph
+  // sits). It governs every approximate decision: how far an arc's end node may be off its curve
+  // (the numbers that state a curve are trusted to this fraction of their own size, so a rounded
+  // huge circle still passes through its ends), how far a site may be from where an arc says it
+  // must be (plus the same fraction of the site's distance from the graph), and, expressed in each
+  // node's frame, when a composed Möbius matrix is "proportional", "zero" or "the identity"
+  // (tolerance::kMatrixRounding is the floor). Exact (double-precision) graphs need ~1e-9; a graph
+  // written with d significant digits needs ~10^(1-d).
   double relative_tolerance = 1e-7;
   // Recompute the MWVD of the reconstructed sites with the engine and compare it with the input
   // (paper 5, §5): a bisector graph need not be the Voronoi diagram (e.g. a missing orphan face).
+  // The comparison uses relative_tolerance too.
   bool voronoi_check = true;
-  // Relative to the largest entry of a composed 2×2 Möbius matrix: entries smaller than this are
-  // zero, when deciding whether going around a node is the identity (no constraint), has one or
-  // two fixed points, or fixes a whole circle.
-  double matrix_tolerance = 1e-9;
   // Reconstructed weights that agree to this relative amount are made equal: weights reach faces
   // through chains of inversions and pick up rounding there, while equal weights are exactly what
   // turns bisectors into lines (a weight ratio of 1 + 1e-16 is a circle of radius 1e16).
   double weight_snap = 1e-12;
+};
+
+// One element of the graph and how far it is from agreeing with the reconstruction: an arc whose
+// two sites are not mirror images in it (or a site on its wrong side), or a node off one of its
+// arcs' curves. Lengths in the graph's coordinates.
+enum class ResidualElement { kArc, kNode };
+std::string_view to_string(ResidualElement element);
+struct Residual {
+  ResidualElement element = ResidualElement::kArc;
+  int index = kNone;
+  double x = 0.0, y = 0.0;  // where
+  double amount = 0.0;      // by how much (a length)
+  double allowed = 0.0;     // how much the tolerance allows this element (a length; see RecognitionOptions)
+};
+
+// Every arc and node measured against the reconstruction (or, when recognition fails, against the
+// best attempt): how many exceed the tolerance, and the worst few — nearest to or farthest beyond
+// what the tolerance allows them — first.
+struct ResidualSummary {
+  double tolerance = 0.0;    // the length relative_tolerance stands for in this graph
+  int arcs_beyond = 0;       // arcs whose residual exceeds the tolerance
+  int nodes_beyond = 0;      // nodes off an arc's curve beyond the tolerance
+  // Arcs not measured because tracing the faces by geometry left one of their sides open (nearly
+  // parallel rays of near-degenerate inputs meeting far out); an accepted graph says so.
+  int arcs_unverified = 0;
+  std::vector<Residual> worst;  // at most kWorstResiduals, largest amount / allowed first
+  static constexpr std::size_t kWorstResiduals = 5;
 };
 
 struct RecognitionFailure {
@@ -57,6 +96,10 @@ struct RecognitionFailure {
   int face = kNone;
   double x = 0.0, y = 0.0;  // where
   double amount = 0.0;      // by how much (a length)
+  // How many arcs and nodes disagree beyond the tolerance (Reconstruction::residuals names the
+  // worst); the fields above describe the first failure met.
+  int arcs_beyond = 0;
+  int nodes_beyond = 0;
 };
 
 // Where the site of one face may lie when the graph does not fix it (paper 5, §3): inside every
@@ -95,6 +138,9 @@ struct Reconstruction {
   bool unique = true;  // false: the graph fixes the sites only up to a family (see region)
   std::optional<SiteRegion> region;  // set when the root site ranges over a 2D region (§3)
   std::optional<RecognitionFailure> failure;
+  // The residual of every arc and node against the returned sites (accepted graphs: all within the
+  // tolerance; rejected ones: against the candidate that came closest, when one was propagated).
+  ResidualSummary residuals;
   // Whether the graph is the MWVD of the sites, and where the recomputed diagram differs from the
   // input when it is not.
   MwvdAnswer voronoi = MwvdAnswer::kUnknown;

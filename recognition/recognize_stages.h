@@ -3,6 +3,7 @@
 //
 // In the order recognize() runs them:
 //   input preparation   input_preparation.cpp  clear the input's labels, the tolerance, arc ends
+//   graph frame         graph_frame.cpp        the graph centred and scaled, and back
 //   frame               frame.cpp              nodes on a clipped map's frame, the face outside it
 //   start face          start_face.cpp         the face whose nodes constrain its site the most
 //   node constraints    node_constraint.cpp    going around a node: the fixed set of the inversions
@@ -10,6 +11,8 @@
 //   candidates          candidates.cpp         the start face's candidate sites, polished
 //   propagation         propagation.cpp        one candidate to every face, breadth first
 //   verification        verification.cpp       every arc against the two sites it separates
+//   position solve      position_solve.cpp     sites refined by least squares over all arcs
+//   weight solve        weight_solve.cpp       log-weights by least squares over all arcs
 //   site collection     site_collection.cpp    one site per face into the reconstruction's sites
 //   MWVD check          mwvd_check.cpp         the recomputed diagram against the input
 #pragma once
@@ -52,8 +55,24 @@ struct Rejection {
 struct InputScale {
   bool clipped = false;  // some arc is a frame arc
   Box extent;
-  double scale = 0.0;
-  double tol = 0.0;
+  double scale = 0.0;     // the extent's diagonal (a fallback length when the nodes coincide)
+  double relative = 0.0;  // RecognitionOptions::relative_tolerance
+  double tol = 0.0;       // relative · scale, plus the rounding of the input's coordinates
+};
+
+// The graph's own frame, z_frame = (z - origin) / unit (mobius::NodeFrame maps back): centred on
+// its extent when that lies far from the origin, and scaled by a power of two to an extent near 1.
+// In plane coordinates a graph near 1e7 loses ~14 digits in every generalized-circle form
+// (|z|² ~ 1e14 beside radii ~1); in its frame it keeps them.
+struct GraphFrame : mobius::NodeFrame {
+  bool translated = false;
+  mobius::Complex to_frame(mobius::Complex z) const { return (z - origin) / unit; }
+};
+// The input's node coordinates and curves while the graph is in its frame (only when translated:
+// scaling by a power of two is undone exactly).
+struct SavedGeometry {
+  LargeVector<Node> nodes;
+  LargeVector<Curve> curves;
 };
 
 // Per node: on the frame of a clipped map; per face: outside the frame (no site).
@@ -72,7 +91,18 @@ struct TracedGraph {
   const LargeVector<char>& outside;
   double scale = 0.0;
   double tol = 0.0;
+  double relative = 0.0;  // RecognitionOptions::relative_tolerance
+  double unit = 1.0;      // the graph frame's unit: lengths in messages are multiplied by it
+  // The tolerance for a point at p: tol plus `relative` times p's distance from the extent's box
+  // (sites may lie far from the nodes — cocircular sites around one node — and are only as
+  // accurate as their own size).
+  Box extent;
+  double tol_at(mobius::Complex p) const { return tol + relative * extent.distance_to({p.real(), p.imag()}); }
 };
+
+// The matrix tolerance of a node whose frame unit is L: the graph's tolerance expressed in the
+// node's frame (relative · scale / L), between tolerance::kMatrixRounding and kMatrixCeiling.
+double matrix_tolerance(const TracedGraph& t, double L);
 
 // Lemmas 5 and §4.4: going once around node v from face f, across every arc at v and back, maps
 // f's site to itself. The composition of the inversions is an anti-Möbius map for an odd number
@@ -104,6 +134,7 @@ struct Violation {
 struct Candidates {
   std::vector<mobius::Complex> points;
   bool family = false;  // the sites form a family (a free root, or coinciding solution circles)
+  std::optional<mobius::GeneralizedCircle> family_circle;  // the one solution circle of a family
   Violation closest;    // the candidate that came closest, for the failure when there is none
 };
 
@@ -128,8 +159,19 @@ struct PropagationBuffers {
 InputScale prepare_input(Diagram& g, const RecognitionOptions& options);
 
 // Arcs whose ends are not on their curves: malformed, and invisible to the inversions, which take
-// each arc through its node (bisector_relation.h). The first such arc end, in arc order.
-std::optional<Rejection> arc_end_off_curve(const Diagram& g, double tol);
+// each arc through its node (bisector_relation.h). Allowed: `in.tol` plus `in.relative` of the
+// numbers that state the curve (their own rounding). The first such arc end, in arc order, with
+// how many nodes are off and the worst of them in `residuals`.
+std::optional<Rejection> arc_end_off_curve(const Diagram& g, const InputScale& in, ResidualSummary& residuals);
+
+// The frame of a graph with this extent; the graph moved into it (its input geometry saved when
+// translated), and back.
+GraphFrame graph_frame(const Box& extent, double scale);
+SavedGeometry to_frame(Diagram& g, const GraphFrame& frame);
+void to_plane(Diagram& g, const GraphFrame& frame, SavedGeometry& saved);
+InputScale scale_in_frame(const InputScale& in, const GraphFrame& frame);
+// The reconstruction's sites, candidates, region and failure from frame to plane coordinates.
+void to_plane(Reconstruction& r, const GraphFrame& frame);
 
 FrameMarks frame_marks(const Diagram& g, const LargeVector<int>& face_of_half);
 
@@ -139,22 +181,31 @@ std::vector<Point> clip_polygon_of(const Diagram& g);
 
 // The constraint of the node where half-arc h_out (leaving it, on face f's boundary) starts;
 // nullopt when the walk around the node meets a frame arc or an open end.
-std::optional<Constraint> node_constraint(const TracedGraph& t, double matrix_tolerance, int f, int h_out);
+std::optional<Constraint> node_constraint(const TracedGraph& t, int f, int h_out);
 
 // The solution circles of the nodes of face f (at most four), for re-anchoring the sites of faces
 // at degenerate nodes.
-std::vector<Constraint> face_circle_constraints(const TracedGraph& t, double matrix_tolerance, int f);
+std::vector<Constraint> face_circle_constraints(const TracedGraph& t, int f);
 
-StartFace start_face(const TracedGraph& t, double matrix_tolerance);
+StartFace start_face(const TracedGraph& t);
 
 // No node fixes any site (paper 5, §3): the root's site ranges over a region, or nowhere.
 std::variant<SiteRegion, Rejection> free_root_region(const TracedGraph& t, const Box& extent);
 
-Candidates start_candidates(const std::vector<Constraint>& constraints, const std::optional<SiteRegion>& free_root,
-                            double tol, double scale, double matrix_tolerance);
+Candidates start_candidates(const TracedGraph& t, const std::vector<Constraint>& constraints,
+                            const std::optional<SiteRegion>& free_root);
+
+// Every arc's demand that its two sites lie on its two sides, pulled back to the site of face `root`
+// through the inversions of a breadth-first spanning tree (paper 5, §3): generalized disks.
+std::vector<mobius::GeneralizedCircle> pulled_back_bounds(const TracedGraph& t, int root);
+
+// A one-parameter family on `circle` (the start face's one solution circle): the members in the
+// middle of each piece of the circle inside every pulled-back bound, widest piece first; none when
+// no member puts every site on its arcs' sides (family_arc.cpp).
+std::vector<mobius::Complex> family_members(const TracedGraph& t, int start, const mobius::GeneralizedCircle& circle);
 
 // The failure when the start face has no candidate.
-Rejection no_common_point(const Diagram& g, int start, const std::vector<Constraint>& constraints,
+Rejection no_common_point(const TracedGraph& t, int start, const std::vector<Constraint>& constraints,
                           const Violation& closest);
 
 // Gauss-Newton on the distances to the solution circles among `cs`: an intersection of two
@@ -166,11 +217,39 @@ mobius::Complex polish(mobius::Complex p, const std::vector<Constraint>& cs, dou
 LargeVector<char> faces_at_degenerate_nodes(const Diagram& g, const voronoi::FaceIndex& index);
 
 // Candidate p as the site of face `start`, propagated to every face reachable from it.
-void propagate(const TracedGraph& t, const LargeVector<char>& at_degenerate_node, double matrix_tolerance,
-               int start, mobius::Complex p, PropagationBuffers& buffers);
+void propagate(const TracedGraph& t, const LargeVector<char>& at_degenerate_node, int start, mobius::Complex p, PropagationBuffers& buffers);
 
-// The first arc (in arc order) whose two sites are not on its two sides as mirror images.
-std::optional<RecognitionFailure> first_arc_failure(const TracedGraph& t, const LargeVector<FaceSite>& site);
+// Every arc against its two sites (on its two sides, mirror images): the residual summary, and the
+// first failing arc (in arc order) as the failure, with the counts.
+struct ArcVerification {
+  ResidualSummary residuals;
+  std::optional<RecognitionFailure> failure;
+};
+ArcVerification verify_arcs(const TracedGraph& t, const LargeVector<FaceSite>& site);
+
+// Keeps the kWorstResiduals largest of `all` in `summary.worst`, largest first.
+void keep_worst(std::vector<Residual> all, ResidualSummary& summary);
+
+// The sites of all assigned faces refined by Gauss-Newton steps of least squares over every arc
+// (each arc: its two sites are mirror images in it), except the `fixed` ones: faces at degenerate
+// nodes, whose sites propagation re-anchored on their nodes' solution circles (there the rounding
+// of the sites decides the recomputed diagram's combinatorics). A step whose correction exceeds
+// tolerance::kLinearisation of the extent is not made.
+// Both solves number their unknowns in `order` (the faces in breadth-first order, the propagation's
+// queue): neighbouring faces get nearby numbers, and the iterations read memory nearly in order.
+struct SolveOrder {
+  explicit SolveOrder(const LargeVector<int>& faces_in_order, std::size_t faces);
+  const LargeVector<int>& order;  // unknown -> face
+  LargeVector<int> rank;          // face -> unknown (kNone: not an unknown)
+};
+void solve_positions(const TracedGraph& t, const SolveOrder& order, const LargeVector<char>& fixed,
+                     LargeVector<FaceSite>& site);
+
+// The log-weights of all assigned faces by weighted least squares over every arc between two of
+// them (each arc states log(w_right / w_left) from its two sites' positions), started from the
+// ratios integrated along the breadth-first tree from the (refined) sites: errors no longer
+// accumulate along the tree.
+void solve_weights(const TracedGraph& t, const SolveOrder& order, LargeVector<FaceSite>& site);
 
 // The reconstruction from one site per face (sites, face_site).
 Reconstruction collect_sites(const LargeVector<FaceSite>& site, double tol, double weight_snap);

@@ -5,7 +5,7 @@
 
 namespace covmap::recognition::stages {
 
-StartFace start_face(const TracedGraph& t, double matrix_tolerance) {
+StartFace start_face(const TracedGraph& t) {
   const Diagram& g = t.g;
   const int faces = static_cast<int>(g.faces.size());
   int start = -1;
@@ -21,7 +21,7 @@ StartFace start_face(const TracedGraph& t, double matrix_tolerance) {
         if (v == kNone || t.on_frame[v] || arc.frame) continue;
         if (std::find(seen_nodes.begin(), seen_nodes.end(), v) != seen_nodes.end()) continue;
         seen_nodes.push_back(v);
-        if (auto c = node_constraint(t, matrix_tolerance, f, half_id(hh)); c && !c->any) {
+        if (auto c = node_constraint(t, f, half_id(hh)); c && !c->any) {
           c->node = v;
           found.push_back(*c);
         }

@@ -1,5 +1,5 @@
 // Every fixed approximate comparison of the recognition library, in one place. (Tolerances a user
-// may set — relative_tolerance, matrix_tolerance, weight_snap, the comparison's horizon — live in
+// may set — relative_tolerance, weight_snap, the comparison's horizon — live in
 // RecognitionOptions and CompareOptions with their documentation.)
 #pragma once
 
@@ -10,6 +10,53 @@ namespace covmap::recognition::tolerance {
 // for a line through p): the three numbers are each rounded once, and huge circles (nearly equal
 // weights) carry absolute errors ~ε·r that no tolerance relative to the graph's extent absorbs.
 inline constexpr double kArcEndRoundingUlps = 16.0;
+
+// The graph frame (graph_frame.cpp) is centred on the graph when the middle of its extent is more
+// than this many extents from the origin; nearer, centring would gain less than a bit.
+inline constexpr double kFrameTranslation = 2.0;
+
+// The graph's extent is at most this many times the box of the middle half of its nodes (graphs
+// with more than 2 % of their nodes far out: input_preparation.cpp). For well-spread nodes the
+// central 98 % box is about twice the middle half's, so this changes nothing there.
+inline constexpr double kMiddleHalfFactor = 8.0;
+
+// An extent whose diagonal is below this fraction of the coordinates' size has collapsed to one
+// point (every node at the centre of cocircular equal-weight sites, up to rounding): it fixes no
+// length, and the coordinates' size stands in for it.
+inline constexpr double kCollapsedExtent = 1e-6;
+
+// The matrix tolerance of a node (RecognitionOptions::relative_tolerance in the node's frame) is
+// never below kMatrixRounding — the rounding of composing up to a few dozen 2×2 complex products
+// with O(1) entries — and never above kMatrixCeiling, beyond which "proportional" and "identity"
+// would lose their meaning (a node much shorter than the tolerance).
+inline constexpr double kMatrixRounding = 1e-12;
+inline constexpr double kMatrixCeiling = 1e-2;
+
+// The weight solve (weight_solve.cpp): an arc's statement of log(w_r / w_l) weighs (|c - s| over the
+// sites' spacing)², between 1 and kMaxArcWeight (lines, and huge circles of nearly equal weights,
+// are the most accurate; a larger spread would only slow the conjugate gradients).
+inline constexpr double kMaxArcWeight = 1e4;
+// The weight and position solves' conjugate gradients stop when the preconditioned residual has
+// shrunk by kSolveReduction (their start is already within ~1e-10 of the answer, so this is well
+// below rounding), or below its own rounding (weights), or after kSolveIterations passes over the
+// arcs (the Laplacian's condition grows like the number of faces; the cap bounds the cost at 10^6
+// faces, docs/PERFORMANCE.md).
+inline constexpr double kSolveReduction = 1e-8;
+inline constexpr int kSolveIterations = 100;
+// The position solve makes at most kPositionSteps Gauss-Newton steps, a further one only while the
+// last moved a site by more than kFurtherStep of the extent — a rounded graph, where the
+// linearisation error of a correction c (~c²) still matters; an exact graph's first correction is
+// ~1e-12 — and none whose correction exceeds kLinearisation of the extent (the linearised mirror
+// relations would not hold; the propagated sites are kept and verification judges them).
+inline constexpr int kPositionSteps = 3;
+inline constexpr double kFurtherStep = 1e-10;
+inline constexpr double kLinearisation = 1e-1;
+
+// A node's solution circle whose curvature, in the node's frame, is below this fraction of its
+// linear term is its tangent line: radii beyond 1e9 frame units are rounding of a line (the
+// composition's entries are exact to ~1e-15), and keeping them as circles would make forms with
+// entries ~1e18 in plane coordinates.
+inline constexpr double kSolutionLine = 1e-9;
 
 // Gauss-Newton polishing stops when the solution circles' normal equations are this close to
 // singular (all circles nearly parallel at the point): a step would then be noise.

@@ -69,10 +69,18 @@ void write_reconstruction_json(const recognition::Reconstruction& r, std::ostrea
   if (r.failure) {
     j["failure"] = {{"message", r.failure->message}, {"arc", index_or_null(r.failure->arc)},
                     {"node", index_or_null(r.failure->node)}, {"face", index_or_null(r.failure->face)},
-                    {"x", r.failure->x}, {"y", r.failure->y}, {"amount", r.failure->amount}};
+                    {"x", r.failure->x}, {"y", r.failure->y}, {"amount", r.failure->amount},
+                    {"arcs_beyond", r.failure->arcs_beyond}, {"nodes_beyond", r.failure->nodes_beyond}};
   } else {
     j["failure"] = nullptr;
   }
+  nlohmann::json worst = nlohmann::json::array();
+  for (const auto& x : r.residuals.worst)
+    worst.push_back({{"element", std::string(recognition::to_string(x.element))}, {"index", x.index},
+                     {"x", x.x}, {"y", x.y}, {"amount", x.amount}, {"allowed", x.allowed}});
+  j["residuals"] = {{"tolerance", r.residuals.tolerance}, {"arcs_beyond", r.residuals.arcs_beyond},
+                    {"nodes_beyond", r.residuals.nodes_beyond}, {"arcs_unverified", r.residuals.arcs_unverified},
+                    {"worst", worst}};
   j["voronoi_differences"] = nlohmann::json::array();
   for (const auto& d : r.voronoi_differences)
     j["voronoi_differences"].push_back({{"kind", recognition::to_string(d.kind)},
