@@ -10,9 +10,9 @@
 
 #include "check/arc_geometry.h"
 #include "check/check.h"
-#include "check/weighted_owner.h"
+#include "core/weighted_owner.h"
 
-namespace covmap::check::detail {
+namespace covmap {
 
 struct CheckContext {
   CheckContext(const Diagram& diagram, const CheckOptions& opts, CheckReport& out);
@@ -65,4 +65,4 @@ void check_arcs(CheckContext& c);
 void check_coverage(CheckContext& c);
 void check_crossings(CheckContext& c);
 
-}  // namespace covmap::check::detail
+}  // namespace covmap

@@ -62,6 +62,7 @@ Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
   LapTimer timer;
   out.graph = std::move(input);
   Diagram& g = out.graph;
+  const std::optional<InputLabels> labels = input_labels(g);  // prepare_input takes them off
   const InputScale in = prepare_input(g, options);
   if (auto off = arc_end_off_curve(g, in.tol)) return rejected(std::move(out), std::move(*off));
   voronoi::FaceIndex face_index;
@@ -107,9 +108,10 @@ Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
   accept(out, solutions, candidates.family, free_root);
 
   if (options.voronoi_check) {
-    mwvd_check(out, in.clipped, options);
+    mwvd_check(out, in, options);
     out.timings.voronoi_check = timer.lap();
   }
+  if (labels) out.input_sites = compare_input_sites(*labels, out, in.tol, options.relative_tolerance);
   return out;
 }
 
