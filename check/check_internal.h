@@ -12,7 +12,7 @@
 #include "check/check.h"
 #include "core/weighted_owner.h"
 
-namespace covmap {
+namespace covmap::check::detail {
 
 struct CheckContext {
   CheckContext(const Diagram& diagram, const CheckOptions& opts, CheckReport& out);
@@ -65,4 +65,4 @@ void check_arcs(CheckContext& c);
 void check_coverage(CheckContext& c);
 void check_crossings(CheckContext& c);
 
-}  // namespace covmap
+}  // namespace covmap::check::detail

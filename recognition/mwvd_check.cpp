@@ -3,6 +3,9 @@
 // the diagram the engine recomputes from them against the input (mwvd_check.h says how).
 #include "recognition/mwvd_check.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "recognition/recognize_stages.h"
 #include "voronoi/clip.h"
 #include "voronoi/engine.h"
@@ -27,12 +30,16 @@ void mwvd_check(Reconstruction& out, const InputScale& in, const RecognitionOpti
   const Diagram& g = out.graph;
   const mwvd::Allowance allowance{options.relative_tolerance, in.scale};
   const std::vector<mwvd::ArcSites> labels = mwvd::arc_sites(g, out.face_site);
-  std::vector<Difference> differences = mwvd::input_against_sites(g, labels, out.sites, allowance);
+  const WeightedSiteIndex index(out.sites);
+  double smallest_weight = INFINITY;
+  for (const Site& s : out.sites) smallest_weight = std::min(smallest_weight, s.weight);
+  const mwvd::Sites sites{out.sites, index, smallest_weight};
+  std::vector<Difference> differences = mwvd::input_against_sites(g, labels, sites, allowance);
   // The sites must be distinct for a Voronoi diagram; coinciding sites already answer "no".
   try {
     Diagram recomputed = voronoi::build_diagram(out.sites);
     if (in.clipped) recomputed = voronoi::clip_diagram(recomputed, clip_polygon_of(g));
-    std::vector<Difference> missing = mwvd::recomputed_against_input(recomputed, g, labels, out.sites, allowance);
+    std::vector<Difference> missing = mwvd::recomputed_against_input(recomputed, g, labels, sites, allowance);
     differences.insert(differences.begin(), missing.begin(), missing.end());
   } catch (const voronoi::InvalidSites& e) {
     differences.insert(differences.begin(), {DifferenceKind::NodeOnlyInA, kNone, 0, 0, e.what()});

@@ -15,8 +15,10 @@
 //   2. D against G (recomputed_against_input): the MWVD may still have regions that G lacks
 //      altogether (a missing orphan face). Every arc of D must have a counterpart in G — an arc
 //      between the same two sites passing through the D-arc's midpoint — unless the arc is shorter
-//      than what site errors of that size can move its end nodes by (then G may draw the node
-//      differently: degenerate nodes, far nodes of nearly tangent circles). A face of D none of
+//      than what site errors of that size can move its end nodes by, or a third site is within the
+//      allowance of being as close at its midpoint (then G may draw the node differently:
+//      degenerate nodes, far nodes of nearly tangent circles, parallel bisectors of nearly
+//      collinear sites meeting far away after rounding). A face of D none of
 //      whose arcs has a counterpart is reported as a missing face, at a point of it.
 // Together: G is the MWVD of S within the tolerance. Linear in the size of the graphs (nearest-site
 // queries by a kd-tree, counterparts by a hash of site pairs).
@@ -25,6 +27,7 @@
 #include <vector>
 
 #include "core/diagram.h"
+#include "core/weighted_owner.h"
 #include "recognition/compare.h"
 
 namespace covmap::recognition::mwvd {
@@ -49,11 +52,18 @@ struct Allowance {
   double residual(const Site& a, double da, const Site& b, double db, double magnitude) const;
 };
 
-std::vector<Difference> input_against_sites(const Diagram& g, const std::vector<ArcSites>& labels,
-                                            const std::vector<Site>& sites, const Allowance& allowance);
+// The sites, for nearest-site queries (index: built over sites).
+struct Sites {
+  const std::vector<Site>& sites;
+  const WeightedSiteIndex& index;
+  double smallest_weight = 0.0;
+};
+
+std::vector<Difference> input_against_sites(const Diagram& g, const std::vector<ArcSites>& labels, const Sites& s,
+                                            const Allowance& allowance);
 
 std::vector<Difference> recomputed_against_input(const Diagram& recomputed, const Diagram& g,
-                                                 const std::vector<ArcSites>& labels,
-                                                 const std::vector<Site>& sites, const Allowance& allowance);
+                                                 const std::vector<ArcSites>& labels, const Sites& s,
+                                                 const Allowance& allowance);
 
 }  // namespace covmap::recognition::mwvd

@@ -148,9 +148,10 @@ double Allowance::residual(const Site& a, double da, const Site& b, double db, d
          tolerance::kPointRoundingUlps * kEps * magnitude * inverse_weights;
 }
 
-std::vector<Difference> input_against_sites(const Diagram& g, const std::vector<ArcSites>& labels,
-                                            const std::vector<Site>& sites, const Allowance& allowance) {
-  const WeightedSiteIndex index(sites);
+std::vector<Difference> input_against_sites(const Diagram& g, const std::vector<ArcSites>& labels, const Sites& s,
+                                            const Allowance& allowance) {
+  const std::vector<Site>& sites = s.sites;
+  const WeightedSiteIndex& index = s.index;
   const NodeSites ns = node_sites(g, labels);
   std::vector<Difference> out = in_order(g.nodes.size(), [&](std::size_t v, std::vector<Difference>& found) {
     const std::vector<int> own = own_sites(ns, v);
@@ -172,8 +173,8 @@ std::vector<Difference> input_against_sites(const Diagram& g, const std::vector<
     if (own.empty()) return;
     const voronoi::ArcPathView path = voronoi::arc_path(arc, g.nodes);
     Finding worst;
-    for (double s : sample_parameters(path, centre, allowance.scale)) {
-      const Point p = path.at(s);
+    for (double t : sample_parameters(path, centre, allowance.scale)) {
+      const Point p = path.at(t);
       const Finding f = test_point(p, own, sites, index, allowance, curve_magnitude(arc) + std::abs(p.x) + std::abs(p.y));
       if (f.excess > worst.excess) worst = f;
     }

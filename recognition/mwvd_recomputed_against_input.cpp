@@ -109,6 +109,26 @@ double distance_to_arc(const voronoi::ArcPathView& p, Point q) {
   return std::hypot(q.x - on.x, q.y - on.y);
 }
 
+// Whether a site other than a and b is, at m, within the allowance of being as close as they are:
+// then m is within the conditioning of a node, and whether the a–b arc passes there is not decided
+// by the sites' accuracy.
+bool third_site_as_close(Point m, int a, int b, const Sites& s, const Allowance& allowance) {
+  const Site& sa = s.sites[a];
+  const double da = weighted_distance(m, sa), magnitude = std::abs(m.x) + std::abs(m.y);
+  // residual(a, k) ≤ c + τ(da + dk) for every site k (none is lighter than the lightest), so a site
+  // within it has dk ≤ (da(1 + τ) + c) / (1 − τ): the query's bound.
+  const Site lightest{"", 0.0, 0.0, s.smallest_weight};
+  const double c = allowance.residual(sa, 0.0, lightest, 0.0, magnitude);
+  const double bound = (da * (1 + allowance.tau) + c) / (1 - allowance.tau);
+  bool found = false;
+  s.index.for_each_closer(m, std::nextafter(bound, INFINITY), [&](int k, double dk) {
+    if (k == a || k == b) return true;
+    found = dk - da <= allowance.residual(sa, da, s.sites[k], dk, magnitude);
+    return !found;
+  });
+  return found;
+}
+
 // What each arc of D is: tiny (no evidence either way), matched in G, or missing from G.
 enum class Evidence { kTiny, kMatched, kMissing };
 
@@ -139,7 +159,8 @@ Point point_of_face(const Diagram& d, const Face& face, const std::vector<vorono
 }  // namespace
 
 std::vector<Difference> recomputed_against_input(const Diagram& d, const Diagram& g, const std::vector<ArcSites>& labels,
-                                                 const std::vector<Site>& sites, const Allowance& allowance) {
+                                                 const Sites& s, const Allowance& allowance) {
+  const std::vector<Site>& sites = s.sites;
   std::unordered_map<long long, std::vector<int>> g_arcs;  // G's arcs by the pair of sites they separate
   for (std::size_t a = 0; a < g.arcs.size(); ++a)
     if (labels[a].left != kNone && labels[a].right != kNone)
@@ -158,6 +179,7 @@ std::vector<Difference> recomputed_against_input(const Diagram& d, const Diagram
     const Point m = midpoint(paths[j], allowance.scale);
     const Site& a = sites[arc.left_site];
     const Site& b = sites[arc.right_site];
+    if (third_site_as_close(m, arc.left_site, arc.right_site, s, allowance)) continue;
     const Point grad = residual_gradient(m, a, b);
     const double across = allowance.residual(a, weighted_distance(m, a), b, weighted_distance(m, b),
                                              std::abs(m.x) + std::abs(m.y)) / std::hypot(grad.x, grad.y);
