@@ -5,7 +5,6 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
-#include <unordered_map>
 
 #include "core/extent.h"
 #include "core/weighted_owner.h"
@@ -135,6 +134,7 @@ enum class Evidence { kTiny, kMatched, kMissing };
 // A point to name a missing face by: the centre of its outer boundary's sample points when that
 // lies inside them (bounded faces), else the midpoint of its longest arc.
 Point point_of_face(const Diagram& d, const Face& face, const std::vector<voronoi::ArcPathView>& paths, double scale) {
+  if (face_cycles(d, face).empty()) return {};
   std::vector<Point> ring;
   Point longest{};
   double longest_length = -1;
@@ -161,10 +161,12 @@ Point point_of_face(const Diagram& d, const Face& face, const std::vector<vorono
 std::vector<Difference> recomputed_against_input(const Diagram& d, const Diagram& g, const std::vector<ArcSites>& labels,
                                                  const Sites& s, const Allowance& allowance) {
   const std::vector<Site>& sites = s.sites;
-  std::unordered_map<long long, std::vector<int>> g_arcs;  // G's arcs by the pair of sites they separate
+  // G's arcs by the pair of sites they separate, sorted by it (one flat array: 10^6-site graphs).
+  std::vector<std::pair<long long, int>> g_arcs;
   for (std::size_t a = 0; a < g.arcs.size(); ++a)
     if (labels[a].left != kNone && labels[a].right != kNone)
-      g_arcs[pair_key(labels[a].left, labels[a].right)].push_back(static_cast<int>(a));
+      g_arcs.emplace_back(pair_key(labels[a].left, labels[a].right), static_cast<int>(a));
+  std::sort(g_arcs.begin(), g_arcs.end());
   const std::vector<double> kappa = conditioning_of_nodes(d, allowance);
   std::vector<voronoi::ArcPathView> paths;
   paths.reserve(d.arcs.size());
@@ -184,10 +186,10 @@ std::vector<Difference> recomputed_against_input(const Diagram& d, const Diagram
     const double across = allowance.residual(a, weighted_distance(m, a), b, weighted_distance(m, b),
                                              std::abs(m.x) + std::abs(m.y)) / std::hypot(grad.x, grad.y);
     evidence[j] = Evidence::kMissing;
-    const auto it = g_arcs.find(pair_key(arc.left_site, arc.right_site));
-    if (it == g_arcs.end()) continue;
-    for (int k : it->second)
-      if (distance_to_arc(voronoi::arc_path(g.arcs[k], g.nodes), m) <= across) {
+    const long long key = pair_key(arc.left_site, arc.right_site);
+    const auto first = std::lower_bound(g_arcs.begin(), g_arcs.end(), std::pair<long long, int>{key, -1});
+    for (auto it = first; it != g_arcs.end() && it->first == key; ++it)
+      if (distance_to_arc(voronoi::arc_path(g.arcs[it->second], g.nodes), m) <= across) {
         evidence[j] = Evidence::kMatched;
         break;
       }
