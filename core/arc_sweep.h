@@ -6,9 +6,10 @@
 // decided by its end node indices first, by angles only where the indices cannot decide:
 //   from == to == kNone   the full circle, from angle 0;
 //   from == to            a loop: the full circle, from the node's angle round to it again;
-//   from != to            the angle swept from `from` to `to` in the arc's sense, in [0, 2π). Two
-//                         distinct nodes at the same angle (the swept angle rounds to 0 or to 2π)
-//                         bound an arc of length zero: a full circle always has one node or none.
+//   from != to            the angle swept from `from` to `to` in the arc's sense, in [0, 2π)
+//                         (swept_angle). Two distinct nodes at the same angle (the swept angle is 0,
+//                         or rounds to 2π) bound an arc of length zero: a full circle always has one
+//                         node or none.
 // Constructions only: numbers in, numbers out.
 #pragma once
 
@@ -29,6 +30,15 @@ inline double wrap_angle(double a) {
   return a;
 }
 
+// The angle swept around a centre from direction (ax, ay) to direction (ex, ey) (each a node minus
+// the centre), counter-clockwise when ccw, in [0, 2π): one atan2 of the two directions' cross and
+// dot products (no cancellation of two large angles when the sweep is small). Exactly 0 when the
+// directions are parallel and alike.
+inline double swept_angle(double ax, double ay, double ex, double ey, bool ccw) {
+  const double turn = std::atan2(ax * ey - ay * ex, ax * ex + ay * ey);  // in [-π, π]
+  return wrap_angle(ccw ? turn : -turn);
+}
+
 // Where a circle arc starts (the angle of its `from` node around the centre, 0 without nodes) and
 // how far it turns in its own sense (sweep ∈ [0, 2π], 2π exactly for full circles and loops).
 struct CircleSweep {
@@ -45,8 +55,7 @@ inline CircleSweep circle_arc_sweep(const Arc& arc, const Circle& c, const std::
   out.start_angle = std::atan2(a.y - c.cy, a.x - c.cx);
   if (arc.from == arc.to) return out;
   const Node& b = nodes[arc.to];
-  const double sense = arc.ccw ? 1.0 : -1.0;
-  out.sweep = wrap_angle(sense * (std::atan2(b.y - c.cy, b.x - c.cx) - out.start_angle));
+  out.sweep = swept_angle(a.x - c.cx, a.y - c.cy, b.x - c.cx, b.y - c.cy, arc.ccw);
   out.full = false;
   return out;
 }

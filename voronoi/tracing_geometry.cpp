@@ -52,8 +52,10 @@ TracingGeometry tracing_geometry(const Diagram& d, bool with_boxes) {
           g.depart[2 * a] = {pseudo_angle(sense * -ay, sense * ax), sense / c->r};
           g.depart[2 * a + 1] = {pseudo_angle(-sense * -ey, -sense * ex), -sense / c->r};
         }
-        // The extent as every reader of arcs sees it (core/arc_sweep.h).
-        const double sweep = circle_arc_sweep(arc, *c, d.nodes).sweep;
+        // The extent as every reader of arcs sees it (core/arc_sweep.h: the same swept_angle).
+        double sweep = kTwoPi;
+        if (arc.from != kNone && arc.from != arc.to)
+          sweep = swept_angle(from.x - c->cx, from.y - c->cy, to.x - c->cx, to.y - c->cy, arc.ccw);
         g.segment_area2[a] = sense * c->r * c->r * (sweep - std::sin(sweep));
       } else {
         const Line& l = std::get<Line>(arc.curve);
