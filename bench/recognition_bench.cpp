@@ -22,48 +22,11 @@
 #include <vector>
 
 #include "bench/diagram_cache.h"
+#include "bench/reconstruction_error.h"
 #include "bench/site_distributions.h"
 #include "recognition/recognize.h"
 #include "voronoi/engine.h"
 
-namespace {
-
-// Every reconstructed site against the nearest original one (a grid over the unit square, where
-// make_sites puts them): the largest distance, and the largest relative difference of weights
-// normalised to a largest of 1 (the heaviest site always owns a face, so both sets share it).
-std::pair<double, double> reconstruction_error(const std::vector<covmap::Site>& truth,
-                                               const covmap::recognition::Reconstruction& r) {
-  const int side = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(truth.size()))));
-  std::vector<std::vector<int>> cell(static_cast<std::size_t>(side) * side);
-  auto cell_of = [&](double v) { return std::clamp(static_cast<int>(v * side), 0, side - 1); };
-  double wmax = 0.0;
-  for (std::size_t k = 0; k < truth.size(); ++k) {
-    cell[static_cast<std::size_t>(cell_of(truth[k].y)) * side + cell_of(truth[k].x)].push_back(static_cast<int>(k));
-    wmax = std::max(wmax, truth[k].weight);
-  }
-  double worst_position = 0.0, worst_weight = 0.0;
-  for (const auto& s : r.sites) {
-    double best = INFINITY;
-    int match = -1;
-    const int ci = cell_of(s.x), cj = cell_of(s.y);
-    for (int ring = 0; ring < side && match < 0; ++ring)  // grow the search until something is found,
-      for (int j = cj - ring - 1; j <= cj + ring + 1; ++j)  // then one more ring covers the nearest
-        for (int i = ci - ring - 1; i <= ci + ring + 1; ++i) {
-          if (i < 0 || j < 0 || i >= side || j >= side) continue;
-          for (int k : cell[static_cast<std::size_t>(j) * side + i]) {
-            const double d = std::hypot(truth[k].x - s.x, truth[k].y - s.y);
-            if (d < best) best = d, match = k;
-          }
-        }
-    if (match < 0) return {INFINITY, INFINITY};
-    worst_position = std::max(worst_position, best);
-    const double w = truth[match].weight / wmax;
-    worst_weight = std::max(worst_weight, std::abs(s.weight - w) / w);
-  }
-  return {worst_position, worst_weight};
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"time recognition of MWVD arc graphs"};
@@ -135,7 +98,7 @@ int main(int argc, char** argv) {
     const double s2 = seconds(t1, Clock::now());
     const auto& st = r1.timings;
     double worst_position = 0.0, worst_weight = 0.0;
-    if (verify) std::tie(worst_position, worst_weight) = reconstruction_error(covmap::bench::make_sites(n, *dist, seed), r1);
+    if (verify) std::tie(worst_position, worst_weight) = covmap::bench::reconstruction_error(covmap::bench::make_sites(n, *dist, seed), r1);
     if (json_out) {
       nlohmann::json row = {{"n", n},          {"dist", dist->name()},
                             {"faces", r1.graph.faces.size()}, {"arcs", d.arcs.size()},

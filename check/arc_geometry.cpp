@@ -5,16 +5,10 @@
 #include <optional>
 #include <variant>
 
+#include "core/arc_sweep.h"
+
 namespace covmap::check::detail {
 namespace {
-
-// An angle reduced to [0, 2pi).
-double wrap_angle(double a) {
-  a = std::fmod(a, kTwoPi);
-  if (a < 0.0) a += kTwoPi;
-  if (a >= kTwoPi) a -= kTwoPi;
-  return a;
-}
 
 double dist(Point a, Point b) { return std::hypot(a.x - b.x, a.y - b.y); }
 
@@ -67,15 +61,10 @@ ArcPath make_arc_path(const Arc& arc, const std::vector<Node>& nodes) {
     p.radius = c->r;
     p.sense = arc.ccw ? 1.0 : -1.0;
     p.s0 = 0.0;
-    if (arc.from == kNone) {
-      p.closed = true;
-      p.s1 = kTwoPi;
-      return p;
-    }
-    p.start_angle = std::atan2(p.from_point.y - c->cy, p.from_point.x - c->cx);
-    const double end = std::atan2(p.to_point.y - c->cy, p.to_point.x - c->cx);
-    p.s1 = wrap_angle(p.sense * (end - p.start_angle));
-    if (arc.from == arc.to) p.s1 = kTwoPi;  // a loop from a node once round the circle
+    const CircleSweep sweep = circle_arc_sweep(arc, *c, nodes);  // the extent's one reading (core)
+    p.closed = arc.from == kNone;
+    p.start_angle = sweep.start_angle;
+    p.s1 = sweep.sweep;
     return p;
   }
   const Line& l = std::get<Line>(arc.curve);

@@ -7,17 +7,20 @@
 #include <utility>
 #include <vector>
 
+#include "core/arc_sweep.h"
 #include "core/box.h"
 #include "core/diagram.h"
 
 namespace covmap::check::detail {
 
 inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
-inline constexpr double kTwoPi = 6.283185307179586476925286766559;
+using covmap::kTwoPi;
 
 
 // An arc as a path p(s), s in [s0, s1]. Circles: s is the angle travelled from the start node (or
-// from angle 0 for a full circle), in the arc's sense, so s0 = 0 and s1 = sweep in (0, 2pi]. Lines:
+// from angle 0 for a full circle), in the arc's sense, so s0 = 0 and s1 = sweep in [0, 2pi] as
+// core/arc_sweep.h decides it (a loop from == to is the full circle; two distinct nodes at the
+// same angle bound an arc of length zero), the same reading as voronoi/arc_path.h. Lines:
 // s is signed length along the unit direction from origin; s0 / s1 are -inf / +inf at kNone ends.
 struct ArcPath {
   bool circle = false;

@@ -16,7 +16,7 @@ namespace covmap::check {
 double diagram_scale(const Diagram& d) {
   Box box;
   for (const Site& s : d.sites)
-    if (detail::site_is_valid(s)) box.add({s.x, s.y});
+    if (site_is_valid(s)) box.add({s.x, s.y});
   const double diag = box.empty() ? 0.0 : std::hypot(box.xmax - box.xmin, box.ymax - box.ymin);
   return diag > 0.0 && std::isfinite(diag) ? diag : 1.0;
 }

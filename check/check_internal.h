@@ -10,7 +10,7 @@
 
 #include "check/arc_geometry.h"
 #include "check/check.h"
-#include "check/weighted_owner.h"
+#include "core/weighted_owner.h"
 
 namespace covmap::check::detail {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <variant>
 
-#include "check/weighted_owner.h"
+#include "core/weighted_owner.h"
 
 namespace covmap::check::detail {
 namespace {

@@ -21,8 +21,10 @@ namespace covmap::cli {
 CLI::App* setup_recognize(CLI::App& app, RecognizeOptions& options) {
   CLI::App* cmd = app.add_subcommand(
       "recognize", "Decide whether an arc graph is a weighted bisector graph / an MWVD and "
-                   "reconstruct its sites (exit 0 yes, 3 no)");
-  cmd->add_option("graph", options.graph_path, "a covmap.arcgraph/1 file (its sites are ignored)")
+                   "reconstruct its sites (exit 0 yes, 3 no; 1 when the graph's own sites disagree "
+                   "with the reconstruction)");
+  cmd->add_option("graph", options.graph_path,
+                  "a covmap.arcgraph/1 file (its sites, if any, are not used, only compared with the reconstruction)")
       ->required()
       ->check(input_file());
   cmd->add_option("-o,--output", options.output_path, "write covmap.reconstruction/1 JSON");
@@ -56,7 +58,7 @@ int run_recognize(const RecognizeOptions& options) {
     if (!options.output_path.empty()) plan.files.push_back(options.output_path);
     if (!options.svg_path.empty()) plan.files.push_back(options.svg_path);
     io::check_output_plan(plan);
-    Diagram graph = io::read_diagram_json(options.graph_path, io::ArcLabels::kIgnored);
+    Diagram graph = io::read_diagram_json(options.graph_path, io::ArcLabels::kOptional);
     const auto repairs = recognition::prepare_input_graph(graph);
     for (const auto& r : repairs) std::cerr << "covmap: repaired: " << r.what << "\n";
     recognition::RecognitionOptions ro;
@@ -92,6 +94,15 @@ int run_recognize(const RecognizeOptions& options) {
       std::cout << " (" << r.voronoi_differences.size() << " differences; first: "
                 << r.voronoi_differences.front().message << ")";
     std::cout << worst_residual(r) << "\n";
+    if (r.input_sites) {
+      const auto& in = *r.input_sites;
+      std::cout << options.graph_path << ": the graph's own sites " << (in.agree ? "agree" : "disagree")
+                << " with the reconstruction" << (in.positions_compared ? "" : " (labels only: the sites are not unique)");
+      if (!in.agree)
+        std::cout << " (" << in.differences.size() << " differences; first: " << in.differences.front().message << ")";
+      std::cout << "\n";
+      if (!in.agree) return kFindings;
+    }
     return kOk;
   });
 }

@@ -55,7 +55,11 @@ struct Line {
 using Curve = std::variant<Circle, Line>;
 
 // One arc of the graph. Circle arcs run from -> to counter-clockwise around the centre when ccw is
-// true (clockwise otherwise); from == to == kNone is the full circle. Line arcs run along +d; a
+// true (clockwise otherwise). Their extent is decided by the end node indices (core/arc_sweep.h,
+// read the same way by every algorithm and by the checker): from == to == kNone is the full circle;
+// from == to is a loop once round the circle from that node; distinct nodes bound the angle swept
+// from `from` to `to`, in [0, 2π): two distinct nodes at the same angle bound an arc of length
+// zero, never a full circle. Line arcs run along +d; a
 // kNone end is at infinity (both kNone: the whole line). left_site / right_site are the sites on
 // the left and right of the arc's direction of travel; a frame arc has kNone on the outer side.
 struct Arc {

@@ -232,8 +232,13 @@ void write_diagram_json(const Diagram& d, std::ostream& out) {
 Diagram parse_diagram_json(std::string_view text, const std::string& file, ArcLabels labels) {
   const Json root = detail::parse_json(text, file);
   detail::check_format_tag(root, "covmap.arcgraph/1", file);
+  if (labels == ArcLabels::kOptional) {
+    const auto sites = root.find("sites");
+    const bool carried = sites != root.end() && !(sites->is_array() && sites->empty());
+    labels = carried ? ArcLabels::kOptional : ArcLabels::kIgnored;
+  }
   Reader reader{root, file, labels == ArcLabels::kIgnored, {}};
-  if (labels == ArcLabels::kRequired) {
+  if (labels != ArcLabels::kIgnored) {
     const auto sites = root.find("sites");
     if (sites == root.end()) throw InputError(file, 0, "sites", "missing");
     reader.diagram.sites = detail::sites_from_json(*sites, "sites", file).sites;

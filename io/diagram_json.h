@@ -39,7 +39,10 @@ void write_diagram_json(const Diagram& diagram, std::ostream& out);
 // kRequired: a diagram, sites and labels checked as above. kIgnored: an arc graph whose sites are
 // unknown (the input of recognition and comparison): "sites", the arcs' "sites" and "faces" may be
 // absent and are ignored; the result has no sites, no faces and kNone labels.
-enum class ArcLabels { kRequired, kIgnored };
+// kOptional: an arc graph that may carry sites (the input of recognition, which compares them with
+// its reconstruction): without "sites" (or with an empty list) as kIgnored; with sites, their labels
+// are read and checked as for kRequired, but "faces" are ignored.
+enum class ArcLabels { kRequired, kIgnored, kOptional };
 
 Diagram read_diagram_json(const std::filesystem::path& path, ArcLabels labels = ArcLabels::kRequired);
 

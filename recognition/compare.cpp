@@ -57,9 +57,7 @@ Point midpoint(const Diagram& d, const Arc& a) {
 double distance_to_arc(const voronoi::ArcPathView& p, Point q) {
   double s;
   if (p.circle) {
-    const double angle = std::atan2(q.y - p.cy, q.x - p.cx);
-    s = std::fmod(p.sense * (angle - p.start_angle), 6.283185307179586);
-    if (s < 0) s += 6.283185307179586;
+    s = p.param_of(q);
     if (s > p.s1) {
       const Point e0 = p.at(p.s0), e1 = p.at(p.s1);
       return std::min(std::hypot(q.x - e0.x, q.y - e0.y), std::hypot(q.x - e1.x, q.y - e1.y));
@@ -193,9 +191,7 @@ bool beyond_horizon(const Measures& m, const Diagram& d, const Arc& arc) {
   const voronoi::ArcPathView p = voronoi::arc_path(arc, d.nodes);
   double s;
   if (p.circle) {
-    const double angle = std::atan2(m.centre.y - p.cy, m.centre.x - p.cx);
-    s = std::fmod(p.sense * (angle - p.start_angle), 6.283185307179586);
-    if (s < 0) s += 6.283185307179586;
+    s = p.param_of(m.centre);
     if (s < p.s0 || s > p.s1) return true;  // the nearest point is an end: far
   } else {
     s = std::clamp((m.centre.x - p.ox) * p.ux + (m.centre.y - p.oy) * p.uy, p.s0, p.s1);
@@ -422,6 +418,7 @@ const char* to_string(DifferenceKind kind) {
     case DifferenceKind::NodeOnlyInB: return "NodeOnlyInB";
     case DifferenceKind::ArcOnlyInA: return "ArcOnlyInA";
     case DifferenceKind::ArcOnlyInB: return "ArcOnlyInB";
+    case DifferenceKind::FaceOnlyInB: return "FaceOnlyInB";
   }
   return "?";
 }

@@ -33,13 +33,16 @@ struct CompareOptions {
   double horizon = 1e6;
 };
 
-enum class DifferenceKind { NodeOnlyInA, NodeOnlyInB, ArcOnlyInA, ArcOnlyInB };
+// A is the first graph (recognition: the input), B the second (recognition: the diagram recomputed
+// from the reconstructed sites). FaceOnlyInB: a face of B none of whose arcs A has (recognition's
+// MWVD check only: a face missing from the input, e.g. an orphan face).
+enum class DifferenceKind { NodeOnlyInA, NodeOnlyInB, ArcOnlyInA, ArcOnlyInB, FaceOnlyInB };
 const char* to_string(DifferenceKind kind);
 
 struct Difference {
   DifferenceKind kind = DifferenceKind::NodeOnlyInA;
-  int index = kNone;  // node or arc index in its graph
-  double x = 0.0, y = 0.0;     // where (a node, or an arc's midpoint)
+  int index = kNone;  // node, arc or face index in its graph
+  double x = 0.0, y = 0.0;     // where (a node, a point of the arc, a point of the face)
   std::string message;
 };
 

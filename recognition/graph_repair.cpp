@@ -11,8 +11,7 @@ namespace covmap::recognition {
 
 
 std::vector<Repair> prepare_input_graph(Diagram& g) {
-  g.sites.clear();
-  for (auto& a : g.arcs) a.left_site = a.right_site = kNone;
+  clear_faces(g);
   // Nodes of degree 2 on one curve are no nodes of a bisector graph: repaired and reported.
   double extent = 0;
   for (const auto& n : g.nodes) extent = std::max({extent, std::abs(n.x), std::abs(n.y)});

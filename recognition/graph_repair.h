@@ -20,9 +20,10 @@ struct Repair {
 // centre and radius (or line) equal within `tolerance` (a length). Returns what was done.
 std::vector<Repair> merge_degree_two_nodes(Diagram& g, double tolerance);
 
-// Makes an arc graph read from a file ready for recognize(): its sites and arc labels are dropped
-// (recognition reconstructs them from the arcs alone), and nodes of degree 2 on one curve are
-// merged away (merge_degree_two_nodes, with a tolerance of tolerance::kRepairRelative times the
+// Makes an arc graph read from a file ready for recognize(): its faces are dropped (recognition
+// traces them by geometry); its sites and arc labels are kept for recognize() to compare with its
+// reconstruction (input_sites.h), which it makes from the arcs alone; nodes of degree 2 on one
+// curve are merged away where their two arcs name the same sites (merge_degree_two_nodes, with a tolerance of tolerance::kRepairRelative times the
 // largest coordinate magnitude, at least 1). Returns what was repaired.
 std::vector<Repair> prepare_input_graph(Diagram& g);
 

@@ -1,28 +1,52 @@
 // The MWVD check of recognize() (paper 5, §5): a bisector graph need not be the Voronoi diagram of
-// its sites (e.g. a missing orphan face); the diagram of the reconstructed sites is recomputed and
-// compared with the input.
-#include "recognition/compare.h"
+// its sites (e.g. a missing orphan face). The input is judged against the reconstructed sites, and
+// the diagram the engine recomputes from them against the input (mwvd_check.h says how).
+#include "recognition/mwvd_check.h"
+
+#include <algorithm>
+#include <cmath>
+
 #include "recognition/recognize_stages.h"
 #include "voronoi/clip.h"
 #include "voronoi/engine.h"
 
-namespace covmap::recognition::stages {
+namespace covmap::recognition {
 
-void mwvd_check(Reconstruction& out, bool clipped, const RecognitionOptions& options) {
+namespace mwvd {
+
+std::vector<ArcSites> arc_sites(const Diagram& g, const std::vector<int>& face_site) {
+  std::vector<ArcSites> out(g.arcs.size());
+  for (std::size_t f = 0; f < g.faces.size() && f < face_site.size(); ++f)
+    for (const auto cycle : face_cycles(g, static_cast<int>(f)))
+      for (const HalfArc& h : cycle) (h.forward ? out[h.arc].left : out[h.arc].right) = face_site[f];
+  return out;
+}
+
+}  // namespace mwvd
+
+namespace stages {
+
+void mwvd_check(Reconstruction& out, const InputScale& in, const RecognitionOptions& options) {
   const Diagram& g = out.graph;
+  const mwvd::Allowance allowance{options.relative_tolerance, in.scale};
+  const std::vector<mwvd::ArcSites> labels = mwvd::arc_sites(g, out.face_site);
+  const WeightedSiteIndex index(out.sites);
+  double smallest_weight = INFINITY;
+  for (const Site& s : out.sites) smallest_weight = std::min(smallest_weight, s.weight);
+  const mwvd::Sites sites{out.sites, index, smallest_weight};
+  std::vector<Difference> differences = mwvd::input_against_sites(g, labels, sites, allowance);
   // The sites must be distinct for a Voronoi diagram; coinciding sites already answer "no".
   try {
     Diagram recomputed = voronoi::build_diagram(out.sites);
-    if (clipped) recomputed = voronoi::clip_diagram(recomputed, clip_polygon_of(g));
-    CompareOptions co;
-    co.relative_tolerance = options.relative_tolerance;
-    const Comparison c = compare_graphs(g, recomputed, co);
-    out.voronoi = c.equal() ? MwvdAnswer::kYes : MwvdAnswer::kNo;
-    out.voronoi_differences = c.differences;
+    if (in.clipped) recomputed = voronoi::clip_diagram(recomputed, clip_polygon_of(g));
+    std::vector<Difference> missing = mwvd::recomputed_against_input(recomputed, g, labels, sites, allowance);
+    differences.insert(differences.begin(), missing.begin(), missing.end());
   } catch (const voronoi::InvalidSites& e) {
-    out.voronoi = MwvdAnswer::kNo;
-    out.voronoi_differences.push_back({DifferenceKind::NodeOnlyInA, kNone, 0, 0, e.what()});
+    differences.insert(differences.begin(), {DifferenceKind::NodeOnlyInA, kNone, 0, 0, e.what()});
   }
+  out.voronoi = differences.empty() ? MwvdAnswer::kYes : MwvdAnswer::kNo;
+  out.voronoi_differences = std::move(differences);
 }
 
-}  // namespace covmap::recognition::stages
+}  // namespace stages
+}  // namespace covmap::recognition

@@ -136,6 +136,7 @@ Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
   Reconstruction out;
   LapTimer timer;
   out.graph = std::move(input);
+  const std::optional<InputLabels> labels = input_labels(out.graph);  // prepare_input takes them off
   const InputScale plane = prepare_input(out.graph, options);
   if (auto off = arc_end_off_curve(out.graph, plane, out.residuals)) return rejected(std::move(out), std::move(*off));
 
@@ -146,9 +147,10 @@ Reconstruction recognize(Diagram input, const RecognitionOptions& options) {
   to_plane(out.graph, frame, saved);
   to_plane(out, frame);
   if (out.bisector_graph && options.voronoi_check) {
-    mwvd_check(out, plane.clipped, options);
+    mwvd_check(out, plane, options);
     out.timings.voronoi_check = timer.lap();
   }
+  if (labels) out.input_sites = compare_input_sites(*labels, out, plane.tol, options.relative_tolerance);
   return out;
 }
 

@@ -2,7 +2,7 @@
 // sites drew it? (seed paper 5, §4: degree-3 nodes, Lemmas 3-7.)
 //
 // Contract (this stage): the input is a planar circular-arc graph (Diagram nodes and arcs; any
-// sites in it are ignored). Faces are traced by geometry. When some face has at least three nodes
+// sites in it are not used, only compared with the reconstruction afterwards: input_sites.h). Faces are traced by geometry. When some face has at least three nodes
 // of degree three, its site is the intersection of the nodes' solution circles (Lemma 5/6, at
 // most two candidates); each candidate is propagated to every face by inversion across the arcs
 // (Lemma 1), breadth first, and every arc is verified: the sites it separates must be each
@@ -36,6 +36,7 @@
 #include <vector>
 
 #include "recognition/compare.h"
+#include "recognition/input_sites.h"
 #include "mobius/generalized_circle.h"
 #include "core/diagram.h"
 
@@ -145,6 +146,8 @@ struct Reconstruction {
   // input when it is not.
   MwvdAnswer voronoi = MwvdAnswer::kUnknown;
   std::vector<Difference> voronoi_differences;
+  // When the input carried sites (and is a bisector graph): do they agree with these (input_sites.h)?
+  std::optional<InputSitesComparison> input_sites;
   Diagram graph;  // the input with its faces traced (face_site refers to these)
   RecognitionTimings timings;
 };

@@ -2,6 +2,7 @@
 // the recognition library: not a public header (recognition/CMakeLists.txt).
 //
 // In the order recognize() runs them:
+//   input labels        input_sites.cpp        a copy of the input's sites and labels, if any
 //   input preparation   input_preparation.cpp  clear the input's labels, the tolerance, arc ends
 //   graph frame         graph_frame.cpp        the graph centred and scaled, and back
 //   frame               frame.cpp              nodes on a clipped map's frame, the face outside it
@@ -14,7 +15,9 @@
 //   position solve      position_solve.cpp     sites refined by least squares over all arcs
 //   weight solve        weight_solve.cpp       log-weights by least squares over all arcs
 //   site collection     site_collection.cpp    one site per face into the reconstruction's sites
-//   MWVD check          mwvd_check.cpp         the recomputed diagram against the input
+//   MWVD check          mwvd_check.cpp         the input against the sites, the recomputed diagram
+//                                              against the input (mwvd_check.h)
+//   input sites         input_sites.cpp        the input's own sites against the reconstruction
 #pragma once
 
 #include <cmath>
@@ -254,7 +257,16 @@ void solve_weights(const TracedGraph& t, const SolveOrder& order, LargeVector<Fa
 // The reconstruction from one site per face (sites, face_site).
 Reconstruction collect_sites(const LargeVector<FaceSite>& site, double tol, double weight_snap);
 
-// Sets out.voronoi and out.voronoi_differences: is out.graph the MWVD of out.sites?
-void mwvd_check(Reconstruction& out, bool clipped, const RecognitionOptions& options);
+// The input's sites and arc labels (input_sites.h), before prepare_input takes them off; nullopt
+// when the input carries no sites.
+std::optional<InputLabels> input_labels(const Diagram& g);
+
+// The input's sites against the reconstruction of a bisector graph (input_sites.h); tol is a
+// length (positions), tau relative (weights).
+InputSitesComparison compare_input_sites(const InputLabels& in, const Reconstruction& r, double tol, double tau);
+
+// Sets out.voronoi and out.voronoi_differences: is out.graph the MWVD of out.sites, judged at
+// options.relative_tolerance of the input's scale (mwvd_check.h)?
+void mwvd_check(Reconstruction& out, const InputScale& in, const RecognitionOptions& options);
 
 }  // namespace covmap::recognition::stages

@@ -62,6 +62,14 @@ inline constexpr double kSolutionLine = 1e-9;
 // singular (all circles nearly parallel at the point): a step would then be noise.
 inline constexpr double kSingularNormalEquations = 1e-12;
 
+// The MWVD check (mwvd_check.h) allows a difference of weighted distances at a point what the
+// reconstruction's uncertainty makes of it (RecognitionOptions::relative_tolerance) plus this many
+// units of rounding of the numbers that state the point (machine epsilon times |p|, and |c| + r
+// for a point computed on a circle with centre c and radius r), over the sites' weights: the input
+// states its nodes and curves to the last bit at best, and points on huge circles (nearly equal
+// weights) carry absolute errors ~ε·r.
+inline constexpr double kPointRoundingUlps = 16.0;
+
 // Two lines are the same direction (compare_graphs) / run the same way (graph repair) when the
 // sine, respectively 1 − cosine, of their angle is below these. Directions of bisector lines come
 // from rounded site differences (errors ~1e-16); distinct real bisectors differ by far more.

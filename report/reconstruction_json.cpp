@@ -88,6 +88,21 @@ void write_reconstruction_json(const recognition::Reconstruction& r, std::ostrea
                                         {"x", d.x},
                                         {"y", d.y},
                                         {"message", d.message}});
+  j["input_sites"] = nullptr;
+  if (r.input_sites) {
+    nlohmann::json differences = nlohmann::json::array();
+    for (const auto& d : r.input_sites->differences)
+      differences.push_back({{"kind", std::string(recognition::to_string(d.kind))},
+                             {"site", index_or_null(d.input_site)},
+                             {"reconstructed_site", index_or_null(d.reconstructed_site)},
+                             {"arc", index_or_null(d.arc)},
+                             {"amount", d.amount},
+                             {"relative", std::isfinite(d.relative) ? nlohmann::json(d.relative) : nlohmann::json()},
+                             {"message", d.message}});
+    j["input_sites"] = {{"agree", r.input_sites->agree},
+                        {"positions_compared", r.input_sites->positions_compared},
+                        {"differences", differences}};
+  }
   out << j.dump() << "\n";
 }
 

@@ -4,17 +4,20 @@
 #include <cmath>
 #include <limits>
 
-namespace covmap::voronoi {
-namespace {
-constexpr double kTwoPi = 6.283185307179586476925286766559;
-}
+#include "core/arc_sweep.h"
 
+namespace covmap::voronoi {
 Point ArcPathView::at(double s) const {
   if (circle) {
     const double a = start_angle + sense * s;
     return {cx + r * std::cos(a), cy + r * std::sin(a)};
   }
   return {ox + s * ux, oy + s * uy};
+}
+
+double ArcPathView::param_of(Point q) const {
+  if (circle) return wrap_angle(sense * (std::atan2(q.y - cy, q.x - cx) - start_angle));
+  return (q.x - ox) * ux + (q.y - oy) * uy;
 }
 
 Point ArcPathView::tangent(double s) const {
@@ -33,23 +36,9 @@ ArcPathView arc_path(const Arc& arc, const std::vector<Node>& nodes) {
     p.cy = c->cy;
     p.r = c->r;
     p.sense = arc.ccw ? 1.0 : -1.0;
-    if (arc.from == kNone) {
-      p.start_angle = 0.0;
-      p.s1 = kTwoPi;
-      return p;
-    }
-    const Node& a = nodes[arc.from];
-    const Node& b = nodes[arc.to];
-    p.start_angle = std::atan2(a.y - c->cy, a.x - c->cx);
-    if (arc.from == arc.to) {
-      p.s1 = kTwoPi;
-      return p;
-    }
-    const double end = std::atan2(b.y - c->cy, b.x - c->cx);
-    double sweep = p.sense * (end - p.start_angle);
-    sweep = std::fmod(sweep, kTwoPi);
-    if (sweep <= 0) sweep += kTwoPi;
-    p.s1 = sweep;
+    const CircleSweep sweep = circle_arc_sweep(arc, *c, nodes);  // the extent's one reading (core)
+    p.start_angle = sweep.start_angle;
+    p.s1 = sweep.sweep;
     return p;
   }
   const Line& l = std::get<Line>(arc.curve);
@@ -79,9 +68,7 @@ std::vector<double> path_segment_crossings(const ArcPathView& path, Point a, Poi
     for (double t : {q / qa, q != 0 ? qc / q : -qb / (2 * qa)}) {
       if (t < 0 || t > 1) continue;
       const double x = a.x + t * dx - path.cx, y = a.y + t * dy - path.cy;
-      double s = path.sense * (std::atan2(y, x) - path.start_angle);
-      s = std::fmod(s, kTwoPi);
-      if (s < 0) s += kTwoPi;
+      const double s = path.param_of({x + path.cx, y + path.cy});
       if (s >= path.s0 && s <= path.s1) out.push_back(s);
     }
   } else {

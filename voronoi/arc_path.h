@@ -2,7 +2,8 @@
 // tracing, clipping). Constructions only: numbers in, numbers out.
 //
 // Circles: parameter s is the angle travelled from the start (the `from` node, or angle 0 for a
-// full circle) in the arc's sense, s ∈ [0, sweep], sweep ∈ (0, 2π]. Lines: s is the signed length
+// full circle) in the arc's sense, s ∈ [0, sweep], sweep ∈ [0, 2π] as core/arc_sweep.h decides it
+// (the checker reads arcs the same way: check/arc_geometry.h). Lines: s is the signed length
 // along the unit direction from the line's anchor point; ±∞ at kNone ends.
 #pragma once
 
@@ -26,6 +27,9 @@ struct ArcPathView {
   double s0 = 0.0, s1 = 0.0;
 
   Point at(double s) const;
+  // The parameter of the point of the full curve nearest to q (circles: in [0, 2π), whatever the
+  // arc's extent).
+  double param_of(Point q) const;
   // Unit direction of travel at s.
   Point tangent(double s) const;
   // Signed curvature of the path (positive when it turns left), 0 for lines.

@@ -211,10 +211,7 @@ bool contains_with(const Diagram& d, std::span<const HalfArc> cycle, Point p, Pa
         const double sq = std::sqrt(disc);
         for (double t : {-b - sq, -b + sq}) {
           if (t <= 0) continue;
-          const double x = fx + t * dir.x, y = fy + t * dir.y;
-          double s = path.sense * (std::atan2(y, x) - path.start_angle);
-          s = std::fmod(s, kTwoPi);
-          if (s < 0) s += kTwoPi;
+          const double s = path.param_of({p.x + t * dir.x, p.y + t * dir.y});
           if (s > path.s0 && s < path.s1) ++crossings;
         }
       }

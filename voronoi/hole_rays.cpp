@@ -92,8 +92,7 @@ class ArcRays {
       if (h2 <= 0) return;
       const double h = std::sqrt(h2);
       for (double x : {p.cx - h, p.cx + h}) {
-        double s = std::fmod(p.sense * (std::atan2(dy, x - p.cx) - p.start_angle), kTwoPi);
-        if (s < 0) s += kTwoPi;
+        const double s = p.param_of({x, y});
         // A full circle has no end where the ray could pass through a node: its start angle
         // is an ordinary point (concentric circles are hit exactly there).
         const bool full = d_.arcs[a].from == kNone;
@@ -140,8 +139,7 @@ Point rightmost_point(const Diagram& d, std::span<const int> hole) {
     if (std::isfinite(p.s0)) consider(p.at(p.s0));
     if (std::isfinite(p.s1)) consider(p.at(p.s1));
     if (p.circle) {
-      double t = std::fmod(p.sense * (0.0 - p.start_angle), kTwoPi);
-      if (t < 0) t += kTwoPi;
+      const double t = p.param_of({p.cx + p.r, p.cy});
       if (t >= p.s0 && t <= p.s1) consider(p.at(t));
     }
   }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/arc_sweep.h"
 #include "core/extent.h"
 #include "core/parallel.h"
 #include "voronoi/arc_path.h"
@@ -43,7 +44,6 @@ TracingGeometry tracing_geometry(const Diagram& d, bool with_boxes) {
       if (with_boxes) g.box[a] = to_float_outward(arc_bounds(arc, from, to));
       if (const Circle* c = std::get_if<Circle>(&arc.curve)) {
         const double sense = arc.ccw ? 1.0 : -1.0;
-        double sweep = kTwoPi;
         if (arc.from != kNone) {
           const double ax = from.x - c->cx, ay = from.y - c->cy;
           const double ex = to.x - c->cx, ey = to.y - c->cy;
@@ -51,11 +51,11 @@ TracingGeometry tracing_geometry(const Diagram& d, bool with_boxes) {
           // backward travel at the end: the reverse of forward travel there.
           g.depart[2 * a] = {pseudo_angle(sense * -ay, sense * ax), sense / c->r};
           g.depart[2 * a + 1] = {pseudo_angle(-sense * -ey, -sense * ex), -sense / c->r};
-          if (arc.from != arc.to) {
-            sweep = sense * std::atan2(ax * ey - ay * ex, ax * ex + ay * ey);
-            if (sweep <= 0) sweep += kTwoPi;
-          }
         }
+        // The extent as every reader of arcs sees it (core/arc_sweep.h: the same swept_angle).
+        double sweep = kTwoPi;
+        if (arc.from != kNone && arc.from != arc.to)
+          sweep = swept_angle(from.x - c->cx, from.y - c->cy, to.x - c->cx, to.y - c->cy, arc.ccw);
         g.segment_area2[a] = sense * c->r * c->r * (sweep - std::sin(sweep));
       } else {
         const Line& l = std::get<Line>(arc.curve);

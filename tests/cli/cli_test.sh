@@ -72,6 +72,36 @@ PY
 "$covmap" recognize "$work/bent.json" >"$work/rec2.txt"
 code=$?
 [ "$code" -eq 3 ] && ok || fail "bent graph: exit $code, $(cat "$work/rec2.txt")"
+# 7b. The graph's own sites (d.json carries them) are compared with the reconstruction: they agree;
+#     two sites swapped, one moved or one reweighted disagree: exit 1 and input_sites.agree false.
+grep -q '"input_sites":{"agree":true' "$work/r.json" && grep -q "sites agree" "$work/rec.txt" && ok ||
+  fail "input sites of d.json: $(cat "$work/rec.txt")"
+for change in swap move reweight; do
+  python3 - "$work/d.json" "$work/$change.json" "$change" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+s = d["sites"]
+if sys.argv[3] == "swap":
+    for k in ("x", "y", "weight"):
+        s[0][k], s[1][k] = s[1][k], s[0][k]
+elif sys.argv[3] == "move":
+    s[2]["x"] += 1e-3
+else:
+    s[3]["weight"] *= 1.01
+json.dump(d, open(sys.argv[2], "w"))
+PY
+  "$covmap" recognize "$work/$change.json" -o "$work/$change-r.json" >"$work/$change.txt"
+  code=$?
+  [ "$code" -eq 1 ] && grep -q "sites disagree" "$work/$change.txt" && ok ||
+    fail "$change: exit $code, $(cat "$work/$change.txt")"
+  python3 - "$work/$change-r.json" "$change" <<'PY' && ok || fail "$change: input_sites in the reconstruction"
+import json, sys
+r = json.load(open(sys.argv[1]))
+kinds = {"swap": "swapped_label", "move": "position", "reweight": "weight"}
+i = r["input_sites"]
+sys.exit(0 if i["agree"] is False and kinds[sys.argv[2]] in [x["kind"] for x in i["differences"]] else 1)
+PY
+done
 # 8. compare: a graph equals itself; the clipped one differs.
 "$covmap" compare "$work/d.json" "$work/d.json" >/dev/null && ok || fail "compare equal"
 "$covmap" compare "$work/d.json" "$work/c.json" >/dev/null

@@ -127,6 +127,32 @@ TEST(DiagramJson, FacesAndClipAreOptional) {
   EXPECT_EQ(d.arcs.size(), 6u);
 }
 
+// kOptional (recognition's input): a graph with sites keeps them and its arcs' labels (checked as
+// for a diagram) but not its faces; without sites, or with an empty list, it reads as kIgnored.
+TEST(DiagramJson, OptionalLabelsAreReadWhenSitesAreCarried) {
+  const Diagram full = sample();
+  const Diagram carried = parse_diagram_json(to_json(full), "g.json", ArcLabels::kOptional);
+  EXPECT_EQ(carried.sites.size(), full.sites.size());
+  for (std::size_t a = 0; a < full.arcs.size(); ++a) {
+    EXPECT_EQ(carried.arcs[a].left_site, full.arcs[a].left_site) << "arc " << a;
+    EXPECT_EQ(carried.arcs[a].right_site, full.arcs[a].right_site) << "arc " << a;
+  }
+  EXPECT_TRUE(carried.faces.empty());
+  auto j = nlohmann::json::parse(to_json(full));
+  for (auto& arc : j["arcs"]) arc.erase("sites");
+  j["sites"] = nlohmann::json::array();
+  const Diagram bare = parse_diagram_json(j.dump(), "g.json", ArcLabels::kOptional);
+  EXPECT_TRUE(bare.sites.empty());
+  for (const Arc& a : bare.arcs) EXPECT_TRUE(a.left_site == kNone && a.right_site == kNone);
+  j.erase("sites");
+  EXPECT_EQ(parse_diagram_json(j.dump(), "g.json", ArcLabels::kOptional).arcs.size(), full.arcs.size());
+  // Sites carried but an arc without its labels: the reader says where.
+  auto half = nlohmann::json::parse(to_json(full));
+  half["arcs"][2].erase("sites");
+  const auto e = input_error_from([&] { parse_diagram_json(half.dump(), "g.json", ArcLabels::kOptional); });
+  EXPECT_NE(std::string(e.what()).find("arcs[2]"), std::string::npos) << e.what();
+}
+
 TEST(DiagramJson, UnknownMembersAreIgnored) {
   auto j = nlohmann::json::parse(to_json(sample()));
   j["generator"] = "elsewhere";

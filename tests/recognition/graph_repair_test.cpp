@@ -64,12 +64,16 @@ TEST(GraphRepair, PreparedInputIsRecognisedLikeTheUnsplitDiagram) {
   ASSERT_EQ(splits, 6);
   const auto repairs = prepare_input_graph(split);
   EXPECT_EQ(repairs.size(), 6u);
-  EXPECT_TRUE(split.sites.empty());
-  for (const Arc& a : split.arcs) EXPECT_TRUE(a.left_site == kNone && a.right_site == kNone);
+  // The sites and labels stay (recognize() compares them with its reconstruction); faces go.
+  EXPECT_EQ(split.sites.size(), sites.size());
+  for (const Arc& a : split.arcs) EXPECT_TRUE(a.left_site != kNone && a.right_site != kNone);
+  EXPECT_TRUE(split.faces.empty());
   EXPECT_EQ(split.arcs.size(), d.arcs.size());
   const Reconstruction r = recognize(split);
   EXPECT_TRUE(r.bisector_graph) << r.reason;
   EXPECT_EQ(r.sites.size(), sites.size());
+  ASSERT_TRUE(r.input_sites.has_value());
+  EXPECT_TRUE(r.input_sites->agree) << r.input_sites->differences.front().message;
 }
 
 }  // namespace

@@ -1,11 +1,11 @@
 // The kd-tree ownership queries must agree exactly with a linear scan written here.
-#include "check/weighted_owner.h"
+#include "core/weighted_owner.h"
 
 #include <gtest/gtest.h>
 
 #include <random>
 
-namespace covmap::check::detail {
+namespace covmap {
 namespace {
 
 std::vector<Site> random_sites(int n, double max_weight, std::mt19937_64& rng) {
@@ -100,4 +100,4 @@ TEST(WeightedOwner, BisectorOffsetStaysAccurateFarAway) {
 }
 
 }  // namespace
-}  // namespace covmap::check::detail
+}  // namespace covmap

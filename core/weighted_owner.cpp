@@ -1,11 +1,11 @@
-#include "check/weighted_owner.h"
+#include "core/weighted_owner.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
 
-namespace covmap::check::detail {
+namespace covmap {
 namespace {
 constexpr int kLeafSize = 8;
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -146,4 +146,4 @@ void WeightedSiteIndex::for_each_closer(Point p, double bound,
   }
 }
 
-}  // namespace covmap::check::detail
+}  // namespace covmap

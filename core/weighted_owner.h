@@ -1,6 +1,8 @@
 // Brute-force-exact weighted ownership: which site minimises |p - s| / w.
 //
-// The checker's ground truth. The answer is exactly that of a linear scan over all sites (same
+// The checker's ground truth (check/), and the nearest-site queries of recognition's MWVD check
+// (recognition/mwvd_check.cpp). It lives in core, apart from the engine, so that the checker still
+// shares no code with what it checks. The answer is exactly that of a linear scan over all sites (same
 // floating-point distances, same tie-break by smallest index); a kd-tree only skips subtrees that
 // provably cannot win, using the lower bound dist(p, box) / max weight in the box. Sites with
 // non-finite data or weight <= 0 are left out (the caller reports them).
@@ -11,7 +13,7 @@
 
 #include "core/diagram.h"
 
-namespace covmap::check::detail {
+namespace covmap {
 
 // |p - s| / w.
 double weighted_distance(Point p, const Site& s);
@@ -54,4 +56,4 @@ class WeightedSiteIndex {
   int root_ = -1;
 };
 
-}  // namespace covmap::check::detail
+}  // namespace covmap

@@ -1,0 +1,152 @@
+// The input's own sites against the reconstruction (input_sites.h).
+#include "recognition/input_sites.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "recognition/mwvd_check.h"
+#include "recognition/recognize_stages.h"
+
+namespace covmap::recognition {
+
+std::string_view to_string(SiteDifferenceKind kind) {
+  switch (kind) {
+    case SiteDifferenceKind::kPosition: return "position";
+    case SiteDifferenceKind::kWeight: return "weight";
+    case SiteDifferenceKind::kSwappedLabel: return "swapped_label";
+    case SiteDifferenceKind::kConflictingLabel: return "conflicting_label";
+    case SiteDifferenceKind::kMissingLabel: return "missing_label";
+  }
+  return "position";  // unreachable: every enumerator is handled above
+}
+
+namespace {
+
+std::string quoted(const std::vector<Site>& sites, int k) { return "'" + sites[k].id + "'"; }
+
+// Input site ↔ reconstructed site, read off every arc side; label faults on the way.
+struct Pairing {
+  std::map<int, std::set<int>> of_input, of_reconstructed;
+  std::map<std::pair<int, int>, int> first_arc;  // (input, reconstructed) → an arc showing it
+  std::vector<SiteDifference> label_faults;
+};
+
+Pairing pair_sites(const InputLabels& in, const Reconstruction& r) {
+  const std::vector<mwvd::ArcSites> rec = mwvd::arc_sites(r.graph, r.face_site);
+  Pairing p;
+  bool missing_reported = false;
+  for (std::size_t a = 0; a < rec.size() && a < in.left.size(); ++a)
+    for (const auto& [label, site] : {std::pair{in.left[a], rec[a].left}, std::pair{in.right[a], rec[a].right}}) {
+      if (site == kNone) continue;  // outside the frame, or a face recognition gave no site
+      if (label == kNone) {
+        if (!missing_reported && !r.graph.arcs[a].frame) {
+          std::ostringstream m;
+          m << "arc " << a << " names no site on the side of reconstructed site " << site;
+          p.label_faults.push_back({SiteDifferenceKind::kMissingLabel, kNone, site, static_cast<int>(a), 1.0, INFINITY, m.str()});
+          missing_reported = true;  // one is enough to disagree; the rest say the same
+        }
+        continue;
+      }
+      p.of_input[label].insert(site);
+      p.of_reconstructed[site].insert(label);
+      p.first_arc.emplace(std::pair{label, site}, static_cast<int>(a));
+    }
+  for (const auto& [label, sites] : p.of_input)
+    if (sites.size() > 1) {
+      std::ostringstream m;
+      m << "input site " << quoted(in.sites, label) << " names the faces of " << sites.size()
+        << " different reconstructed sites";
+      p.label_faults.push_back({SiteDifferenceKind::kConflictingLabel, label, *sites.begin(),
+                                p.first_arc.at({label, *std::next(sites.begin())}), static_cast<double>(sites.size()),
+                                INFINITY, m.str()});
+    }
+  for (const auto& [site, labels] : p.of_reconstructed)
+    if (labels.size() > 1) {
+      std::ostringstream m;
+      m << "the faces of reconstructed site " << site << " are named by " << labels.size()
+        << " different input sites (" << quoted(in.sites, *labels.begin()) << ", "
+        << quoted(in.sites, *std::next(labels.begin())) << ")";
+      p.label_faults.push_back({SiteDifferenceKind::kConflictingLabel, *std::next(labels.begin()), site,
+                                p.first_arc.at({*std::next(labels.begin()), site}), static_cast<double>(labels.size()),
+                                INFINITY, m.str()});
+    }
+  return p;
+}
+
+// Swapped labels are looked for (by a scan of the sites) for this many position differences; the
+// rest are reported as positions (a graph whose labels are all wrong needs no more evidence).
+constexpr std::size_t kSwapLookups = 1000;
+
+// The reconstructed site at q (within tol) other than `except`; kNone if none.
+int other_site_at(const std::vector<Site>& sites, Point q, int except, double tol) {
+  for (std::size_t k = 0; k < sites.size(); ++k)
+    if (static_cast<int>(k) != except && std::hypot(sites[k].x - q.x, sites[k].y - q.y) <= tol)
+      return static_cast<int>(k);
+  return kNone;
+}
+
+void compare_positions_and_weights(const InputLabels& in, const Reconstruction& r, const Pairing& p, double tol,
+                                   double tau, std::vector<SiteDifference>& out) {
+  std::vector<std::pair<int, int>> pairs;  // one-to-one pairs only (conflicts are reported already)
+  for (const auto& [label, sites] : p.of_input)
+    if (sites.size() == 1 && p.of_reconstructed.at(*sites.begin()).size() == 1) pairs.emplace_back(label, *sites.begin());
+  std::vector<double> ratios;
+  for (const auto& [label, site] : pairs) ratios.push_back(in.sites[label].weight / r.sites[site].weight);
+  if (ratios.empty()) return;
+  std::nth_element(ratios.begin(), ratios.begin() + ratios.size() / 2, ratios.end());
+  const double common = ratios[ratios.size() / 2];
+  for (const auto& [label, site] : pairs) {
+    const Site& s = in.sites[label];
+    const Site& t = r.sites[site];
+    const int arc = p.first_arc.at({label, site});
+    const double distance = std::hypot(s.x - t.x, s.y - t.y);
+    if (distance > tol) {
+      const int other = out.size() < kSwapLookups ? other_site_at(r.sites, {s.x, s.y}, site, tol) : kNone;
+      std::ostringstream m;
+      m << "input site " << quoted(in.sites, label) << " at (" << s.x << ", " << s.y << ") names the face of the site "
+        << "reconstructed at (" << t.x << ", " << t.y << "), " << distance << " away (" << distance / tol
+        << " tolerances)";
+      if (other != kNone) m << "; its position is that of reconstructed site " << other << ": a swapped label";
+      out.push_back({other != kNone ? SiteDifferenceKind::kSwappedLabel : SiteDifferenceKind::kPosition, label, site,
+                     arc, distance, distance / tol, m.str()});
+      continue;  // its weight belongs to another site too
+    }
+    const double off = std::abs(s.weight / t.weight / common - 1.0);
+    if (off > tau) {
+      std::ostringstream m;
+      m << "input site " << quoted(in.sites, label) << ": weight " << s.weight << " is " << s.weight / common
+        << " after the common factor " << common << " of all sites; the reconstruction says " << t.weight
+        << " (off by a factor " << s.weight / t.weight / common << ", " << off / tau << " tolerances)";
+      out.push_back({SiteDifferenceKind::kWeight, label, site, arc, off, off / tau, m.str()});
+    }
+  }
+}
+
+}  // namespace
+
+namespace stages {
+
+std::optional<InputLabels> input_labels(const Diagram& g) {
+  if (g.sites.empty()) return std::nullopt;
+  InputLabels out{g.sites, {}, {}};
+  out.left.reserve(g.arcs.size());
+  out.right.reserve(g.arcs.size());
+  for (const Arc& a : g.arcs) out.left.push_back(a.left_site), out.right.push_back(a.right_site);
+  return out;
+}
+
+InputSitesComparison compare_input_sites(const InputLabels& in, const Reconstruction& r, double tol, double tau) {
+  InputSitesComparison out;
+  Pairing p = pair_sites(in, r);
+  out.differences = std::move(p.label_faults);
+  out.positions_compared = r.unique;
+  if (r.unique) compare_positions_and_weights(in, r, p, tol, tau, out.differences);
+  out.agree = out.differences.empty();
+  return out;
+}
+
+}  // namespace stages
+}  // namespace covmap::recognition

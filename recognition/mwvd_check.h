@@ -1,0 +1,69 @@
+// The two halves of recognize()'s MWVD check (paper 5, §5; the stage is mwvd_check.cpp). Internal
+// to the recognition library.
+//
+// Is the input graph G the MWVD of the reconstructed sites S? Deciding it by matching G's nodes
+// and arcs with the recomputed diagram D by position answers "no" wherever D's rounding moves an
+// element by more than a fixed tolerance (far nodes of nearly tangent circles, degenerate nodes
+// redrawn with another topology). Instead each element is judged against S at its own
+// conditioning:
+//   1. G against S (input_against_sites): every node of G is weighted-equidistant to the sites of
+//      its faces, and sample points of every arc to the sites on its two sides, with no other site
+//      closer; the residual of each test is allowed what the reconstruction's own uncertainty
+//      (sites to τ·scale, weights to a relative τ, τ = RecognitionOptions::relative_tolerance)
+//      and rounding can make of it at that point. This holds at every point of G iff each of G's
+//      arcs is a piece of the MWVD's boundary between the right two regions.
+//   2. D against G (recomputed_against_input): the MWVD may still have regions that G lacks
+//      altogether (a missing orphan face). Every arc of D must have a counterpart in G — an arc
+//      between the same two sites passing through the D-arc's midpoint — unless the arc is shorter
+//      than what site errors of that size can move its end nodes by, or a third site is within the
+//      allowance of being as close at its midpoint (then G may draw the node differently:
+//      degenerate nodes, far nodes of nearly tangent circles, parallel bisectors of nearly
+//      collinear sites meeting far away after rounding). A face of D none of
+//      whose arcs has a counterpart is reported as a missing face, at a point of it.
+// Together: G is the MWVD of S within the tolerance. Linear in the size of the graphs (nearest-site
+// queries by a kd-tree, counterparts by a hash of site pairs).
+#pragma once
+
+#include <vector>
+
+#include "core/diagram.h"
+#include "core/weighted_owner.h"
+#include "recognition/compare.h"
+
+namespace covmap::recognition::mwvd {
+
+// The reconstructed sites on the two sides of an arc of G (kNone: outside the frame, unassigned).
+struct ArcSites {
+  int left = kNone;
+  int right = kNone;
+};
+
+// Per arc of g: the sites of the traced faces on its sides (face_site: per face of g).
+std::vector<ArcSites> arc_sites(const Diagram& g, const std::vector<int>& face_site);
+
+// What the reconstruction's uncertainty allows a difference of weighted distances to be.
+struct Allowance {
+  double tau = 0.0;    // relative: RecognitionOptions::relative_tolerance
+  double scale = 0.0;  // the input's extent (a length)
+
+  // For |p − a|/w_a − |p − b|/w_b at p (da, db: those two distances): what moving the sites by
+  // τ·scale and changing their weights by a relative τ can change it by, plus the rounding of
+  // points whose coordinates (or curve) have the given magnitude.
+  double residual(const Site& a, double da, const Site& b, double db, double magnitude) const;
+};
+
+// The sites, for nearest-site queries (index: built over sites).
+struct Sites {
+  const std::vector<Site>& sites;
+  const WeightedSiteIndex& index;
+  double smallest_weight = 0.0;
+};
+
+std::vector<Difference> input_against_sites(const Diagram& g, const std::vector<ArcSites>& labels, const Sites& s,
+                                            const Allowance& allowance);
+
+std::vector<Difference> recomputed_against_input(const Diagram& recomputed, const Diagram& g,
+                                                 const std::vector<ArcSites>& labels, const Sites& s,
+                                                 const Allowance& allowance);
+
+}  // namespace covmap::recognition::mwvd
