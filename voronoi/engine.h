@@ -45,6 +45,7 @@ std::vector<InvalidSite> find_invalid_sites(std::span<const Site> sites);
 struct BuildStats {
   int triangulation_dimension = 0;
   std::size_t exact_fallbacks = 0;  // decisions the interval filter could not take
+  std::size_t exact_nodes = 0;      // nodes whose coefficients needed exact evaluation
   double triangulation_seconds = 0.0;
   double extraction_seconds = 0.0;
   double faces_seconds = 0.0;

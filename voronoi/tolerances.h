@@ -42,6 +42,15 @@ inline constexpr double kMaxClipWork = 4e9;
 // exact predicates, never by this distance; it only needs to exceed the nodes' rounding error.
 inline constexpr double kNodeMergeCandidate = 1e-9;
 
+// Engine, node construction (engine/triple_node.h): a node's coefficients are evaluated in doubles
+// with a running error bound and used when that bound is below this fraction of each value;
+// otherwise they are evaluated exactly and rounded once. Not a decision threshold (the node is
+// the same root either way) but an accuracy floor: the node then carries a relative error of a few
+// times this in its offset from its sites, below the 64 ulps of its own magnitude that any reader
+// must allow for. Most nodes pass; nearly tangent bisectors (the discriminant cancels) and nearly
+// collinear lifted sites (n cancels) take the exact path.
+inline constexpr double kNodeCoefficientError = 0x1p-50;
+
 // Best-server raster: a site is dropped from a block of bins only when its smallest possible
 // weighted distance to the block exceeds the block's upper bound (or the maximum range) by more
 // than this relative amount. Each bound and each per-bin distance sqrt(dx² + dy²) / w is computed

@@ -14,6 +14,7 @@
 #include "voronoi/engine/edge_pattern.h"
 #include "voronoi/engine/extractors.h"
 #include "voronoi/engine/facet_walk.h"
+#include "voronoi/engine/triple_node.h"
 #include "core/parallel.h"
 #include "voronoi/tolerances.h"
 
@@ -211,10 +212,13 @@ class SpatialExtractor {
     }
     out_.nodes.resize(next);
     node_facet_.resize(next);
-    parallel_chunks(jobs.size(), worker_count(jobs.size()),
-                    [&](std::size_t begin, std::size_t end, int) {
-                      for (std::size_t j = begin; j < end; ++j) place_root_node(jobs[j].cell, jobs[j].facet, jobs[j].root, jobs[j].node);
-                    });
+    const int node_workers = worker_count(jobs.size());
+    std::vector<std::size_t> exact_nodes(node_workers, 0);
+    parallel_chunks(jobs.size(), node_workers, [&](std::size_t begin, std::size_t end, int w) {
+      for (std::size_t j = begin; j < end; ++j)
+        place_root_node(jobs[j].cell, jobs[j].facet, jobs[j].root, jobs[j].node, exact_nodes[w]);
+    });
+    for (std::size_t e : exact_nodes) stats_.exact_nodes += e;
     // Zero vertices get their nodes now, so the walks only read.
     for (std::size_t k = 0; k < cells_.size(); ++k)
       if (data_[k].zero) vertex_zero_node(static_cast<int>(k));
@@ -280,25 +284,25 @@ class SpatialExtractor {
       if (node >= 0) node = find(node);
   }
 
-  std::array<long double, 4> approx(Cell c) const {
-    if (data_[c->info()].valid) {
-      const Homog<Approx>& v = data_[c->info()].v;
-      return {v.X.v, v.Y.v, v.Z.v, v.W.v};
-    }
-    auto v = cell_point<Exact>(c);
-    return {CGAL::to_double(v->X), CGAL::to_double(v->Y), CGAL::to_double(v->Z),
-            CGAL::to_double(v->W)};
-  }
-
-  void place_root_node(int cell, int f, int r, int node) {
+  void place_root_node(int cell, int f, int r, int node, std::size_t& exact_nodes) {
     Cell c = cells_[cell];
+    Cell n = c->neighbor(f);
     const EdgePattern& p = facet_[4 * cell + f];
     std::array<int, 3> tri;
+    std::array<RawPoint, 3> raw;
     for (int k = 0, m = 0; k < 4; ++k)
-      if (k != f) tri[m++] = site_of(c->vertex(k));
-    const bool double_root = p.roots == 1 && p.sign[0] == p.sign[1];
-    out_.nodes[node] =
-        root_node(approx(c), approx(c->neighbor(f)), r, p.roots, double_root, tri, sites_);
+      if (k != f) {
+        tri[m] = site_of(c->vertex(k));
+        raw[m++] = c->vertex(k)->point().point();
+      }
+    // The travel from c's power vertex to n's leaves c (its fourth site falls behind) or, when c is
+    // infinite, reaches the finite cell n from infinity.
+    const bool c_finite = !data_[cell].infinite;
+    const RawPoint away = c_finite ? c->vertex(f)->point().point() : n->vertex(n->index(c))->point().point();
+    const int sigma = travel_sign(raw, away, c_finite);
+    bool exact = false;
+    out_.nodes[node] = triple_node(raw, wanted_root(p, r, sigma), &exact);
+    exact_nodes += exact;
     node_facet_[node] = tri;
   }
 
