@@ -39,6 +39,14 @@ class InvalidSites : public std::runtime_error {
   std::vector<InvalidSite> problems_;
 };
 
+// The engine's own check rejected the diagram it was about to return (engine/self_check.h): an
+// internal error, never bad input — the engine refuses what it cannot build (InvalidSites) before
+// any work, so this signals a bug or a case outside what its arithmetic was shown to handle.
+class EngineFailure : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 // Every problem of the input, empty when it is valid.
 std::vector<InvalidSite> find_invalid_sites(std::span<const Site> sites);
 
@@ -51,7 +59,7 @@ struct BuildStats {
   double faces_seconds = 0.0;
 };
 
-// Throws InvalidSites. `stats` (optional) receives counters for benchmarks and reports.
+// Throws InvalidSites (before any work) or EngineFailure. `stats` (optional) receives counters for benchmarks and reports.
 Diagram build_diagram(std::span<const Site> sites, BuildStats* stats = nullptr);
 
 }  // namespace covmap::voronoi
