@@ -67,7 +67,7 @@ inline constexpr double kSelfCheckUlps = 64.0;
 // its arcs by angle).
 inline constexpr double kHugeCircleRatio = 1e6;
 
-// Engine, arcs whose end nodes round to one point (engine/unreadable_arcs.cpp): whether such an
+// Engine, arcs whose end nodes round to one point (engine/readable_arcs.h): whether such an
 // arc is its circle's tiny or near-full piece is read at the point opposite its node, where the
 // arc's own sites are nearest (near-full) or another site is (tiny). The weighted distances there
 // are computed to ~1e-15 relative; a difference below this fraction is too close to call and the

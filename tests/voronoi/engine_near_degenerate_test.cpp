@@ -26,15 +26,15 @@ struct NearCase {
 
 class EngineNearDegenerate : public ::testing::TestWithParam<NearCase> {};
 
-// Nearly equal weights give Apollonius circles of radius up to ~1e16 times the sites' spacing and
-// nodes as far out. There the checker reaches its documented limits (docs/ENGINE.md, Limits): its
-// coverage probe misses huge circles near the sites (BoundaryNotCovered), and its first-order
-// distance to a bisector overflows far beyond the sites. For that family only, those violations
-// are not counted; everything else the checker tests (every node, every sample near the sites,
-// sides, crossings) still must pass.
+// Nearly parallel bisectors (equal weights in a perturbed grid) and nearly equal weights
+// (Apollonius circles of radius up to ~1e16 times the sites' spacing) put nodes and arcs far out,
+// where the checker reaches its documented limits (docs/ENGINE.md, Limits): its first-order
+// distance to a bisector overflows (it reports "inf off") far beyond the sites, and its coverage
+// probe misses huge circles near the sites (BoundaryNotCovered). Violations located beyond 1e6
+// times the extent, and for nearly equal weights coverage, are not counted; everything else the
+// checker tests (every node and sample near the sites, sides, crossings) must pass.
 bool judged(const check::Violation& v, NearBase base, double extent) {
-  if (base != NearBase::EqualWeight) return true;
-  if (v.kind == check::ViolationKind::BoundaryNotCovered) return false;
+  if (base == NearBase::EqualWeight && v.kind == check::ViolationKind::BoundaryNotCovered) return false;
   return !(std::max(std::fabs(v.x), std::fabs(v.y)) > 1e6 * extent);
 }
 
@@ -46,9 +46,9 @@ TEST_P(EngineNearDegenerate, CheckerFindsNoViolation) {
   options.max_reported = 100000;
   int seed = 0;
   for (const double extent : {100.0, 1e4, 1e7})
-    for (int k = 0; k < 6; ++k) {
+    for (int k = 0; k < 8; ++k) {
       ++seed;
-      const auto sites = testing::make_near_degenerate(c.base, c.perturbation, 24, extent, seed);
+      const auto sites = testing::make_near_degenerate(c.base, c.perturbation, 40, extent, seed);
       const Diagram d = build_diagram(sites);
       const check::CheckReport report = check::check_diagram(d, options);
       int violations = 0;

@@ -165,8 +165,6 @@ Diagram build_diagram(std::span<const Site> input, BuildStats* stats_out) {
   else
     extract_linear(out.sites, rt, out);
   drop_unused_nodes(out);  // copies left by nodes found twice on a shared power line
-  collapse_unreadable_arcs(out);
-  drop_unused_nodes(out);
   self_check(out);         // before straightening: it reads each circle's arcs in walk order
   straighten_flat_arcs(out);
   stats.extraction_seconds = seconds_since(start);

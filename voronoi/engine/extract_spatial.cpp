@@ -14,6 +14,8 @@
 #include "voronoi/engine/edge_pattern.h"
 #include "voronoi/engine/extractors.h"
 #include "voronoi/engine/facet_walk.h"
+#include "voronoi/engine/readable_arcs.h"
+#include "voronoi/engine/self_check.h"
 #include "voronoi/engine/triple_node.h"
 #include "core/parallel.h"
 #include "voronoi/tolerances.h"
@@ -44,6 +46,10 @@ class SpatialExtractor {
     merge_shared_line_nodes();
     walk_all_edges();
   }
+
+  // Arcs are mended (engine/readable_arcs.h) after all walks: they only read the nodes.
+  std::vector<ArcMend> mends_;
+  double extent_ = 0;
 
  private:
   const std::vector<Site>& sites_;
@@ -338,9 +344,12 @@ class SpatialExtractor {
     std::vector<Token> tokens;
     WalkScratch scratch;
     std::vector<Arc> arcs;
+    std::vector<ArcMend> mends;  // one per arc
+    std::vector<RawPoint> link;
   };
 
   void walk_all_edges() {
+    extent_ = site_extent(sites_);
     std::vector<WalkState> states(workers_);
     parallel_chunks(cells_.size(), workers_, [&](std::size_t begin, std::size_t end, int w) {
       WalkState& st = states[w];
@@ -357,7 +366,12 @@ class SpatialExtractor {
     std::size_t total = out_.arcs.size();
     for (const WalkState& st : states) total += st.arcs.size();
     out_.arcs.reserve(total);
-    for (WalkState& st : states) out_.arcs.insert(out_.arcs.end(), st.arcs.begin(), st.arcs.end());
+    mends_.assign(out_.arcs.size(), ArcMend::kNone);
+    for (WalkState& st : states) {
+      out_.arcs.insert(out_.arcs.end(), st.arcs.begin(), st.arcs.end());
+      mends_.insert(mends_.end(), st.mends.begin(), st.mends.end());
+    }
+    apply_mends(out_, mends_);
   }
 
   void walk_edge(WalkState& st, Cell c0, int i0, int j0, std::size_t begin, std::size_t end) {
@@ -395,16 +409,28 @@ class SpatialExtractor {
       }
     }
     if (!ccw) std::reverse(tokens.begin(), tokens.end());
+    bool have_link = false;  // the link is needed rarely: gathered on first use
+    auto link = [&]() -> const std::vector<RawPoint>& {
+      if (!have_link) {
+        st.link.clear();
+        for (Cell c : ring)
+          for (int k = 0; k < 4; ++k) {
+            Vertex v = c->vertex(k);
+            if (v != vi && v != vj && !rt_.is_infinite(v)) st.link.push_back(v->point().point());
+          }
+        have_link = true;
+      }
+      return st.link;
+    };
+    const std::size_t first = st.arcs.size();
     emit_arcs(tokens, st.scratch, site_of(vi), site_of(vj), sites_, st.arcs, [&] {
       if (vi->point().point().z() == vj->point().point().z()) return false;  // U would show
-      std::vector<RawPoint> link;
-      for (Cell c : ring)
-        for (int k = 0; k < 4; ++k) {
-          Vertex v = c->vertex(k);
-          if (v != vi && v != vj && !rt_.is_infinite(v)) link.push_back(v->point().point());
-        }
-      return circle_centre_in_facet(vi->point().point(), vj->point().point(), link);
+      return circle_centre_in_facet(vi->point().point(), vj->point().point(), link());
     });
+    for (std::size_t k = first; k < st.arcs.size(); ++k)
+      st.mends.push_back(ends_within_rounding(st.arcs[k], out_.nodes, sites_, extent_)
+                             ? arc_mend(st.arcs[k], out_.nodes, sites_, st.scratch.zeros, link(), extent_)
+                             : ArcMend::kNone);
   }
 };
 

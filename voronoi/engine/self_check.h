@@ -20,12 +20,7 @@ namespace covmap::voronoi::engine {
 
 void self_check(const Diagram& d);
 
-// Arcs whose rounded end nodes cannot be read (engine/unreadable_arcs.cpp): merges their end
-// nodes and drops the tiny ones, keeping near-full ones as loops. Throws EngineFailure when it
-// cannot tell which an arc is.
-void collapse_unreadable_arcs(Diagram& d);
-
-// Pieces shared with collapse_unreadable_arcs (engine/unreadable_arcs.cpp):
+// Pieces shared with the extractors (engine/readable_arcs.h):
 // the end of the run of arcs of one site pair starting at `begin`;
 std::size_t pair_run_end(const Diagram& d, std::size_t begin);
 // how many times the arcs [begin, end) of one circle and the gaps between them turn around it, by
