@@ -2,8 +2,13 @@
 //
 // Contract
 //  - Input: sites with finite coordinates, finite positive weights and pairwise distinct
-//    positions. Anything else throws InvalidSites naming every offending site (index and id);
-//    nothing is built.
+//    positions, within the supported range (engine/limits.h, docs/ENGINE.md "Supported input":
+//    weight ratios up to 2^60, sites within 2^26 extents of the origin, no two closer than 2^-60
+//    of the extent). Anything else throws InvalidSites naming every offending site (index and id)
+//    and the limit; nothing is built. A diagram whose nodes would not fit in doubles at the
+//    input's scale is refused the same way after construction.
+//  - Never returns a diagram its own structural check rejects (engine/self_check.h): that throws
+//    EngineFailure, an internal error.
 //  - Output: a Diagram whose nodes are the points weighted-equidistant from ≥3 sites with no
 //    site closer, and whose arcs are the maximal pieces of bisectors (Apollonius circles; lines for
 //    equal weights) between consecutive nodes, unbounded ends marked kNone. All combinatorial
@@ -47,7 +52,8 @@ class EngineFailure : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Every problem of the input, empty when it is valid.
+// Every problem of the input, empty when it is valid: invalid values first; only when there are
+// none, the supported range.
 std::vector<InvalidSite> find_invalid_sites(std::span<const Site> sites);
 
 struct BuildStats {
