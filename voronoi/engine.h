@@ -3,7 +3,7 @@
 // Contract
 //  - Input: sites with finite coordinates, finite positive weights and pairwise distinct
 //    positions, within the supported range (engine/limits.h, docs/ENGINE.md "Supported input":
-//    weight ratios up to 2^60, sites within 2^26 extents of the origin, no two closer than 2^-60
+//    weight ratios up to 2^40, sites within 2^26 extents of the origin, no two closer than 2^-60
 //    of the extent). Anything else throws InvalidSites naming every offending site (index and id)
 //    and the limit; nothing is built. A diagram whose nodes would not fit in doubles at the
 //    input's scale is refused the same way after construction.

@@ -51,7 +51,7 @@ void find_out_of_range(std::span<const Site> sites, std::vector<InvalidSite>& pr
       problems.push_back({static_cast<int>(i), s.id,
                           "weight " + number(s.weight) + " is below 2^-" + std::to_string(limits::kWeightRatioExponent) +
                               " of the largest weight (" + number(wmax) +
-                              "); supported weight ratios are up to 2^60 ≈ 1.2e18 (docs/ENGINE.md, Supported input)"});
+                              "); supported weight ratios are up to 2^40 ≈ 1.1e12 (docs/ENGINE.md, Supported input)"});
     if (std::max(std::fabs(s.x), std::fabs(s.y)) > offset_allowed)
       problems.push_back({static_cast<int>(i), s.id,
                           "position (" + number(s.x) + ", " + number(s.y) + ") is more than 2^" +
