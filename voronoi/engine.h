@@ -63,6 +63,7 @@ struct BuildStats {
   double triangulation_seconds = 0.0;
   double extraction_seconds = 0.0;
   double faces_seconds = 0.0;
+  double self_check_seconds = 0.0;  // engine/self_check.h (part of extraction_seconds)
 };
 
 // Throws InvalidSites (before any work) or EngineFailure. `stats` (optional) receives counters for benchmarks and reports.

@@ -165,7 +165,9 @@ Diagram build_diagram(std::span<const Site> input, BuildStats* stats_out) {
   else
     extract_linear(out.sites, rt, out);
   drop_unused_nodes(out);  // copies left by nodes found twice on a shared power line
-  self_check(out);         // before straightening: it reads each circle's arcs in walk order
+  const auto check_start = Clock::now();
+  self_check(out);  // before straightening: it reads each circle's arcs in walk order
+  stats.self_check_seconds = seconds_since(check_start);
   straighten_flat_arcs(out);
   stats.extraction_seconds = seconds_since(start);
   start = Clock::now();
