@@ -43,18 +43,17 @@ inline constexpr double kMaxClipWork = 4e9;
 inline constexpr double kNodeMergeCandidate = 1e-9;
 
 // Engine, node construction (engine/triple_node.h): a node's coefficients are evaluated in doubles
-// with a running error bound and used when that bound is below this fraction of each value;
-// otherwise they are evaluated exactly and rounded once. Not a decision threshold (the node is
-// the same root either way) but an accuracy floor: the node then carries a relative error of a few
-// times this in its offset from its sites, below the 64 ulps of its own magnitude that any reader
-// must allow for. Most nodes pass; nearly tangent bisectors (the discriminant cancels) and nearly
-// collinear lifted sites (n cancels) take the exact path.
-inline constexpr double kNodeCoefficientError = 0x1p-50;
+// with a running error bound and used when the node error that bound implies is below this
+// fraction of the sites' extent (plus 4 ulps of the node); otherwise they are evaluated exactly
+// and rounded once. Not a decision threshold (the node is the same root either way) but an
+// accuracy budget, 1000 times below the self-check's kSelfCheckOnCurve. Most nodes near the sites
+// pass; nearly tangent bisectors, nearly collinear lifted sites and far nodes take the exact path.
+inline constexpr double kNodeError = 1e-12;
 
 // Engine self-check (engine/self_check.h): an arc end node may lie this fraction of the sites'
 // extent off its arc's curve, plus kSelfCheckUlps units in the last place of the largest magnitude
 // involved (the node's coordinates, the curve's centre and radius), which no double can state more
-// precisely. Nodes are constructed to a few ulps (kNodeCoefficientError), so a node beyond this is
+// precisely. Nodes are constructed to within kNodeError of the extent, so a node beyond this is
 // wrong, not rounded; the bound is 100 times tighter than the independent checker's default
 // (1e-7 of the extent, 64 ulps), so what passes here passes there.
 inline constexpr double kSelfCheckOnCurve = 1e-9;

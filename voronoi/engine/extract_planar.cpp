@@ -10,6 +10,7 @@
 #include "voronoi/engine/edge_pattern.h"
 #include "voronoi/engine/extractors.h"
 #include "voronoi/engine/facet_walk.h"
+#include "voronoi/engine/self_check.h"
 #include "voronoi/engine/triple_node.h"
 
 namespace covmap::voronoi::engine {
@@ -69,6 +70,7 @@ class PlanarExtractor {
   std::vector<FaceData> data_;
   std::vector<int> uf_;  // union-find over faces sharing one power line
   WalkScratch scratch_;
+  const double extent_ = site_extent(sites_);
 
   int find(int f) {
     while (uf_[f] != f) f = uf_[f] = uf_[uf_[f]];
@@ -122,7 +124,7 @@ class PlanarExtractor {
     for (int h = 0; h < 2; ++h)
       for (int q = 0; q < r.half[h].roots; ++q) {
         bool exact = false;
-        out_.nodes.push_back(triple_node(pts, wanted_root(r.half[h], q, sigma), &exact));
+        out_.nodes.push_back(triple_node(pts, wanted_root(r.half[h], q, sigma), extent_, &exact));
         stats_.exact_nodes += exact;
         d.node[h][q] = static_cast<int>(out_.nodes.size()) - 1;
       }

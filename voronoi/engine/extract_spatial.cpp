@@ -41,6 +41,7 @@ class SpatialExtractor {
       : sites_(sites), rt_(rt), out_(out), stats_(stats) {}
 
   void run() {
+    extent_ = site_extent(sites_);
     compute_cells();
     compute_facets();
     merge_shared_line_nodes();
@@ -307,7 +308,7 @@ class SpatialExtractor {
     const RawPoint away = c_finite ? c->vertex(f)->point().point() : n->vertex(n->index(c))->point().point();
     const int sigma = travel_sign(raw, away, c_finite);
     bool exact = false;
-    out_.nodes[node] = triple_node(raw, wanted_root(p, r, sigma), &exact);
+    out_.nodes[node] = triple_node(raw, wanted_root(p, r, sigma), extent_, &exact);
     exact_nodes += exact;
     node_facet_[node] = tri;
   }
@@ -349,7 +350,6 @@ class SpatialExtractor {
   };
 
   void walk_all_edges() {
-    extent_ = site_extent(sites_);
     std::vector<WalkState> states(workers_);
     parallel_chunks(cells_.size(), workers_, [&](std::size_t begin, std::size_t end, int w) {
       WalkState& st = states[w];

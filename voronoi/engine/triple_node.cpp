@@ -60,27 +60,47 @@ std::array<NT, 3> circumcentre_terms(const std::array<RawPoint, 3>& s) {
           NT(2) * (d.dx[0] * d.dy[1] - d.dy[0] * d.dx[1])};
 }
 
-// A value with a running error bound is good enough when its bound is a small fraction of it.
-bool precise(const Approx& v) {
-  return v.e <= tolerance::kNodeCoefficientError * std::fabs(v.v) && std::isfinite(v.v);
+// Evaluates terms(NT) with running error bounds: the values, and in `relative` the largest bound
+// relative to its value (infinite when a value is not known to be nonzero).
+template <std::size_t K, class Terms>
+std::array<double, K> fast_terms(Terms&& terms, double& relative) {
+  const std::array<Approx, K> fast = terms(Approx{});
+  std::array<double, K> out;
+  relative = 0;
+  for (std::size_t k = 0; k < K; ++k) {
+    out[k] = fast[k].v;
+    const double r = fast[k].e == 0 ? 0.0 : fast[k].e / std::fabs(fast[k].v);
+    relative = std::isfinite(fast[k].v) && std::isfinite(r) ? std::max(relative, r) : HUGE_VAL;
+  }
+  return out;
 }
 
-// Evaluates terms(NT) with error bounds, or exactly when some bound is not small; returns the
-// rounded values.
 template <std::size_t K, class Terms>
-std::array<double, K> rounded_terms(Terms&& terms, bool* exact) {
-  const std::array<Approx, K> fast = terms(Approx{});
-  bool ok = true;
-  for (const Approx& v : fast) ok = ok && precise(v);
-  std::array<double, K> out;
-  if (ok) {
-    for (std::size_t k = 0; k < K; ++k) out[k] = fast[k].v;
-    return out;
-  }
-  if (exact) *exact = true;
+std::array<double, K> exact_terms(Terms&& terms) {
   const std::array<Exact, K> e = terms(Exact{});
+  std::array<double, K> out;
   for (std::size_t k = 0; k < K; ++k) out[k] = CGAL::to_double(e[k]);
   return out;
+}
+
+// The node from coefficients each known to `relative` error is off by at most ~8 × relative ×
+// its offset from s_0 (no step of the construction cancels: the roots are taken without
+// cancellation and h n, T perp(n) are orthogonal). Good enough when that stays within
+// tolerance::kNodeError of the extent and a few ulps of the node.
+bool accurate(double relative, double ox, double oy, const Node& q, double extent) {
+  const double offset = std::hypot(q.x - ox, q.y - oy);
+  const double magnitude = std::max(std::fabs(q.x), std::fabs(q.y));
+  return 16 * relative * offset <= tolerance::kNodeError * extent + 4 * 0x1p-52 * magnitude;
+}
+
+// Fast coefficients, or exact ones when the node they give is not accurate enough.
+template <std::size_t K, class Terms, class Construct>
+Node construct(Terms&& terms, Construct&& node_from, double ox, double oy, double extent, bool* exact) {
+  double relative = 0;
+  const Node fast = node_from(fast_terms<K>(terms, relative));
+  if (accurate(relative, ox, oy, fast, extent)) return fast;
+  if (exact) *exact = true;
+  return node_from(exact_terms<K>(terms));
 }
 
 }  // namespace
@@ -110,32 +130,33 @@ int travel_sign_planar(const std::array<RawPoint, 3>& tri) {
   return g == CGAL::NEGATIVE ? -1 : 1;
 }
 
-Node triple_node(const std::array<RawPoint, 3>& tri, AlongLine which, bool* exact) {
+Node triple_node(const std::array<RawPoint, 3>& tri, AlongLine which, double extent, bool* exact) {
   const double ox = tri[0].x(), oy = tri[0].y(), ow = tri[0].z();
-  if (tri[1].z() == ow && tri[2].z() == ow) {
-    const auto t = rounded_terms<3>([&](auto tag) { return circumcentre_terms<decltype(tag)>(tri); }, exact);
-    return Node{ox + t[0] / t[2], oy + t[1] / t[2]};
-  }
+  if (tri[1].z() == ow && tri[2].z() == ow)
+    return construct<3>([&](auto tag) { return circumcentre_terms<decltype(tag)>(tri); },
+                        [&](const std::array<double, 3>& t) { return Node{ox + t[0] / t[2], oy + t[1] / t[2]}; },
+                        ox, oy, extent, exact);
   // The reference equation: the larger |Δw_m²| (never 0 here, and never the line bisector of two
   // equal weights, on which F_m vanishes identically along the line).
   const double d1 = std::fabs((tri[1].z() - ow) * (tri[1].z() + ow));
   const double d2 = std::fabs((tri[2].z() - ow) * (tri[2].z() + ow));
   const int m = d1 >= d2 ? 0 : 1;
-  const auto c = rounded_terms<7>(
-      [&](auto tag) {
-        const auto k = coefficients<decltype(tag)>(tri, m);
-        return std::array{k.nx, k.ny, k.h, k.a, k.B, k.C, k.disc};
-      },
-      exact);
-  const double nx = c[0], ny = c[1], h = c[2], a = c[3], B = c[4], C = c[5], disc = c[6];
-  // The two roots without cancellation: one from −B ∓ √disc, the other by Vieta.
-  const double root = std::sqrt(std::max(disc, 0.0));
-  const double big = B >= 0 ? -B - root : -B + root;
-  double t1 = big / a, t2 = big != 0 ? C / big : t1;
-  if (t1 > t2) std::swap(t1, t2);
-  const double T = which == AlongLine::kFirst ? t1 : t2;
-  const double n2 = nx * nx + ny * ny;
-  return Node{ox + (h * nx - T * ny) / (2 * n2), oy + (h * ny + T * nx) / (2 * n2)};
+  const auto terms = [&](auto tag) {
+    const auto k = coefficients<decltype(tag)>(tri, m);
+    return std::array{k.nx, k.ny, k.h, k.a, k.B, k.C, k.disc};
+  };
+  const auto node_from = [&](const std::array<double, 7>& c) {
+    const double nx = c[0], ny = c[1], h = c[2], a = c[3], B = c[4], C = c[5], disc = c[6];
+    // The two roots without cancellation: one from −B ∓ √disc, the other by Vieta.
+    const double root = std::sqrt(std::max(disc, 0.0));
+    const double big = B >= 0 ? -B - root : -B + root;
+    double t1 = big / a, t2 = big != 0 ? C / big : t1;
+    if (t1 > t2) std::swap(t1, t2);
+    const double T = which == AlongLine::kFirst ? t1 : t2;
+    const double n2 = nx * nx + ny * ny;
+    return Node{ox + (h * nx - T * ny) / (2 * n2), oy + (h * ny + T * nx) / (2 * n2)};
+  };
+  return construct<7>(terms, node_from, ox, oy, extent, exact);
 }
 
 }  // namespace covmap::voronoi::engine

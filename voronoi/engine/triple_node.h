@@ -13,9 +13,10 @@
 // one finite node is the circumcentre.
 //
 // Every coefficient is a polynomial in the input doubles, so it is evaluated with a running error
-// bound and, when the bound is not small against the value (nearly tangent bisectors make the
-// discriminant B² − aC cancel; nearly collinear lifted sites make n cancel), exactly; the node is
-// then computed from coefficients each rounded once. Nothing depends on rounded power vertices far
+// bound and, when the node's error that bound implies exceeds tolerance::kNodeError of the sites'
+// extent (nearly tangent bisectors make the discriminant B² − aC cancel; nearly collinear lifted
+// sites make n cancel; far nodes magnify everything), exactly; the node is then computed from
+// coefficients each rounded once. Nothing depends on rounded power vertices far
 // away, which is what made nodes of nearly collinear sites land hundreds of units off their
 // curves. Which of the two roots is wanted is decided by the caller from exact signs.
 #pragma once
@@ -43,8 +44,8 @@ int travel_sign(const std::array<RawPoint, 3>& tri, const RawPoint& away, bool l
 // The same for the planar extractor, whose power lines are travelled along the lifted normal.
 int travel_sign_planar(const std::array<RawPoint, 3>& tri);
 
-// The node of `tri` at root `which` (in the coordinates of `tri`). `exact` (optional) is set when
-// the coefficients needed the exact stage.
-Node triple_node(const std::array<RawPoint, 3>& tri, AlongLine which, bool* exact = nullptr);
+// The node of `tri` at root `which` (in the coordinates of `tri`, whose bounding-box diagonal is
+// `extent`). `exact` (optional) is set when the coefficients needed the exact stage.
+Node triple_node(const std::array<RawPoint, 3>& tri, AlongLine which, double extent, bool* exact = nullptr);
 
 }  // namespace covmap::voronoi::engine
