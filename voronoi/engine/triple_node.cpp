@@ -88,6 +88,7 @@ std::array<double, K> exact_terms(Terms&& terms) {
 // cancellation and h n, T perp(n) are orthogonal). Good enough when that stays within
 // tolerance::kNodeError of the extent and a few ulps of the node.
 bool accurate(double relative, double ox, double oy, const Node& q, double extent) {
+  if (!std::isfinite(relative) || !std::isfinite(q.x) || !std::isfinite(q.y)) return false;
   const double offset = std::hypot(q.x - ox, q.y - oy);
   const double magnitude = std::max(std::fabs(q.x), std::fabs(q.y));
   return 16 * relative * offset <= tolerance::kNodeError * extent + 4 * 0x1p-52 * magnitude;
