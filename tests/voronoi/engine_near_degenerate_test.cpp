@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "check/check.h"
+#include "checker_reach.h"
 #include "site_families.h"
 #include "voronoi/engine.h"
 
@@ -26,18 +27,6 @@ struct NearCase {
 
 class EngineNearDegenerate : public ::testing::TestWithParam<NearCase> {};
 
-// Nearly parallel bisectors (equal weights in a perturbed grid) and nearly equal weights
-// (Apollonius circles of radius up to ~1e16 times the sites' spacing) put nodes and arcs far out,
-// where the checker reaches its documented limits (docs/ENGINE.md, Limits): its first-order
-// distance to a bisector overflows (it reports "inf off") far beyond the sites, and its coverage
-// probe misses huge circles near the sites (BoundaryNotCovered). Violations located beyond 1e6
-// times the extent, and for nearly equal weights coverage, are not counted; everything else the
-// checker tests (every node and sample near the sites, sides, crossings) must pass.
-bool judged(const check::Violation& v, NearBase base, double extent) {
-  if (base == NearBase::EqualWeight && v.kind == check::ViolationKind::BoundaryNotCovered) return false;
-  return !(std::max(std::fabs(v.x), std::fabs(v.y)) > 1e6 * extent);
-}
-
 TEST_P(EngineNearDegenerate, CheckerFindsNoViolation) {
   const NearCase c = GetParam();
   check::CheckOptions options;
@@ -52,7 +41,7 @@ TEST_P(EngineNearDegenerate, CheckerFindsNoViolation) {
       const Diagram d = build_diagram(sites);
       const check::CheckReport report = check::check_diagram(d, options);
       int violations = 0;
-      for (const check::Violation& v : report.violations) violations += judged(v, c.base, extent);
+      for (const check::Violation& v : report.violations) violations += testing::judged(v, c.base == NearBase::EqualWeight, extent);
       ASSERT_EQ(violations, 0) << testing::near_base_name(c.base) << " "
                                << testing::perturbation_name(c.perturbation) << " extent " << extent
                                << " seed " << seed << ": " << report.brief();

@@ -8,6 +8,7 @@
 #include <type_traits>
 
 #include "check/check.h"
+#include "checker_reach.h"
 #include "site_families.h"
 #include "voronoi/engine.h"
 
@@ -73,6 +74,17 @@ TEST(EngineRange, SplitDegreeFourNodeIsNotReadAsAFullCircle) {
     expect_checker_accepts(testing::make_near_degenerate(testing::NearBase::Grid, testing::Perturbation::Ulp, 40,
                                                          seed == 37 ? 1e4 : 1e7, seed),
                            "perturbed grid");
+}
+
+TEST(EngineRange, FarNodeOfAPerturbedGridIsFinite) {
+  // Equal-weight rows of a grid moved by an ulp have nearly parallel bisectors meeting ~1e17 away;
+  // the fast node construction overflowed there and the self-check refused the diagram.
+  const auto sites = testing::make_near_degenerate(testing::NearBase::Grid, testing::Perturbation::Ulp, 40, 100, 19);
+  check::CheckOptions options;
+  options.max_reported = 100000;
+  const check::CheckReport report = check::check_diagram(build_diagram(sites), options);
+  for (const check::Violation& v : report.violations)
+    EXPECT_FALSE(testing::judged(v, false, 100 * std::sqrt(2.0))) << v.message;
 }
 
 TEST(EngineRange, SitesOneUlpApartPassTheChecker) {
