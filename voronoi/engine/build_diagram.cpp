@@ -28,8 +28,11 @@ void extract_linear(const std::vector<Site>& sites, RegularTriangulation& rt, Di
 // be written in doubles to better than ~4 ulps of their size, while near its nodes the arc is
 // almost straight. A bounded arc whose sagitta chord²/(8r) is below that representation error is
 // written as the straight Line through its nodes instead: strictly closer to the true bisector.
+// A line is judged by its own (small) numbers, though, so the sagitta must also be within what
+// any arc end may be off its curve (self_check.h's allowed_off): else the circle stays.
 
 void straighten_flat_arcs(Diagram& d) {
+  const double extent = site_extent(d.sites);
   for (Arc& a : d.arcs) {
     const Circle* c = std::get_if<Circle>(&a.curve);
     if (!c || a.from == kNone || a.to == kNone || a.from == a.to) continue;
@@ -44,7 +47,9 @@ void straighten_flat_arcs(Diagram& d) {
     const Site& si = d.sites[a.left_site];
     const Site& sj = d.sites[a.right_site];
     const double spacing = std::hypot(sj.x - si.x, sj.y - si.y);
-    if (chord > 0 && c->r > tolerance::kHugeCircleRatio * spacing && chord * chord / (8 * c->r) < representation)
+    const double sagitta = chord * chord / (8 * c->r);
+    const double line_allowance = allowed_off(extent, std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(q.x), std::fabs(q.y)}));
+    if (chord > 0 && c->r > tolerance::kHugeCircleRatio * spacing && sagitta < representation && sagitta <= line_allowance)
       a.curve = Line{p.x, p.y, q.x - p.x, q.y - p.y};
   }
 }
