@@ -87,6 +87,19 @@ TEST(EngineRange, FarNodeOfAPerturbedGridIsFinite) {
     EXPECT_FALSE(testing::judged(v, false, 100 * std::sqrt(2.0))) << v.message;
 }
 
+TEST(EngineRange, StraightenedArcOfNearlyEqualWeightsStaysOnItsBisector) {
+  // Weights equal to 9 digits: an arc of a circle of radius ~1e13 written as the line through its
+  // nodes was 1.1 times the checker's tolerance off the bisector at its middle.
+  for (const std::uint64_t seed : {38, 53, 55}) {
+    const auto sites = testing::make_near_degenerate(testing::NearBase::EqualWeight, testing::Perturbation::Rel1e9, 40, 1e4, seed);
+    check::CheckOptions options;
+    options.max_reported = 100000;
+    const check::CheckReport report = check::check_diagram(build_diagram(sites), options);
+    for (const check::Violation& v : report.violations)
+      EXPECT_FALSE(testing::judged(v, true, 1e4)) << "seed " << seed << ": " << v.message;
+  }
+}
+
 TEST(EngineRange, SitesOneUlpApartPassTheChecker) {
   auto sites = random_sites(20, 0, 100, 3);
   sites.push_back({"twin", std::nextafter(sites[0].x, 1e9), sites[0].y, 1.7});
