@@ -3,8 +3,9 @@
 // Contract: self_check(d) returns normally when every node is finite, every arc end lies on its
 // arc's curve (tolerance::kSelfCheckOnCurve of the sites' extent, plus kSelfCheckUlps of the
 // magnitudes involved: the checker in check/ allows more), every bounded line arc runs along its
-// direction, and the arcs of each circle, in the order the facet walk found them, turn around
-// it exactly once as their rounded nodes say. The last is what readers rely on when they take an
+// direction (to within that allowance: split nodes may round an ulp out of order), and the arcs
+// of each circle (huge ones excepted, tolerance::kHugeCircleRatio), in the order the facet walk
+// found them, turn around it exactly once as their rounded nodes say. The last is what readers rely on when they take an
 // arc's sweep from its end nodes: a tiny arc whose ends rounded out of order, or a near-full arc
 // whose ends rounded to one point, would be read as the complementary arc. Otherwise it throws
 // EngineFailure naming the arc's sites (the engine must never return a diagram it knows to be
