@@ -158,6 +158,8 @@ std::string measure_row(std::size_t n, const Distribution& dist, std::uint64_t s
                     (static_cast<double>(n) * std::log2(static_cast<double>(n))))
             : json(nullptr);
   row["exact_fallbacks"] = engine.stats.exact_fallbacks;
+  row["exact_nodes"] = engine.stats.exact_nodes;
+  row["self_check_seconds"] = engine.stats.self_check_seconds;
   row["triangulation_dimension"] = engine.stats.triangulation_dimension;
   row["nodes"] = nodes;
   row["arcs"] = arcs;

@@ -42,6 +42,38 @@ inline constexpr double kMaxClipWork = 4e9;
 // exact predicates, never by this distance; it only needs to exceed the nodes' rounding error.
 inline constexpr double kNodeMergeCandidate = 1e-9;
 
+// Engine, node construction (engine/triple_node.h): a node's coefficients are evaluated in doubles
+// with a running error bound and used when the node error that bound implies is below this
+// fraction of the sites' extent (plus 4 ulps of the node); otherwise they are evaluated exactly
+// and rounded once. Not a decision threshold (the node is the same root either way) but an
+// accuracy budget, 1000 times below the self-check's kSelfCheckOnCurve. Most nodes near the sites
+// pass; nearly tangent bisectors, nearly collinear lifted sites and far nodes take the exact path.
+inline constexpr double kNodeError = 1e-12;
+
+// Engine self-check (engine/self_check.h): an arc end node may lie this fraction of the sites'
+// extent off its arc's curve, plus kSelfCheckUlps units in the last place of the largest magnitude
+// involved (the node's coordinates, the curve's centre and radius), which no double can state more
+// precisely. Nodes are constructed to within kNodeError of the extent, so a node beyond this is
+// wrong, not rounded; the bound is 100 times tighter than the independent checker's default
+// (1e-7 of the extent, 64 ulps), so what passes here passes there.
+inline constexpr double kSelfCheckOnCurve = 1e-9;
+inline constexpr double kSelfCheckUlps = 64.0;
+
+// Engine: an Apollonius circle whose radius exceeds this many times its sites' distance (weights
+// equal to ~6 digits or more) is "huge": its centre and radius are only known to a few ulps of
+// its size, so bounded arcs on it whose sagitta is below that are written as straight lines, and
+// the angles of its nodes seen from its centre do not resolve them (the self-check does not order
+// its arcs by angle).
+inline constexpr double kHugeCircleRatio = 1e6;
+
+// Engine, arcs whose end nodes round to one point (engine/readable_arcs.h): whether such an
+// arc is its circle's tiny or near-full piece is read at the point opposite its node, where the
+// arc's own sites are nearest (near-full) or another site is (tiny). The weighted distances there
+// are computed to ~1e-15 relative; a difference below this fraction is too close to call and the
+// engine fails loudly instead of guessing. Away from other degeneracies the difference there is of
+// the order of the circle's size.
+inline constexpr double kPieceProbeMargin = 1e-12;
+
 // Best-server raster: a site is dropped from a block of bins only when its smallest possible
 // weighted distance to the block exceeds the block's upper bound (or the maximum range) by more
 // than this relative amount. Each bound and each per-bin distance sqrt(dx² + dy²) / w is computed

@@ -5,8 +5,10 @@
 #include "voronoi/engine.h"
 #include "voronoi/diagram_edit.h"
 #include "voronoi/faces.h"
+#include "voronoi/tolerances.h"
 #include "voronoi/engine/extractors.h"
 #include "voronoi/engine/facet_walk.h"
+#include "voronoi/engine/self_check.h"
 
 namespace covmap::voronoi {
 
@@ -26,9 +28,11 @@ void extract_linear(const std::vector<Site>& sites, RegularTriangulation& rt, Di
 // be written in doubles to better than ~4 ulps of their size, while near its nodes the arc is
 // almost straight. A bounded arc whose sagitta chord²/(8r) is below that representation error is
 // written as the straight Line through its nodes instead: strictly closer to the true bisector.
-constexpr double kHugeCircleRatio = 1e6;  // radius / site spacing: |w_i - w_j| ≲ 1e-6 w
+// A line is judged by its own (small) numbers, though, so the sagitta must also be within what
+// any arc end may be off its curve (self_check.h's allowed_off): else the circle stays.
 
 void straighten_flat_arcs(Diagram& d) {
+  const double extent = site_extent(d.sites);
   for (Arc& a : d.arcs) {
     const Circle* c = std::get_if<Circle>(&a.curve);
     if (!c || a.from == kNone || a.to == kNone || a.from == a.to) continue;
@@ -43,7 +47,9 @@ void straighten_flat_arcs(Diagram& d) {
     const Site& si = d.sites[a.left_site];
     const Site& sj = d.sites[a.right_site];
     const double spacing = std::hypot(sj.x - si.x, sj.y - si.y);
-    if (chord > 0 && c->r > kHugeCircleRatio * spacing && chord * chord / (8 * c->r) < representation)
+    const double sagitta = chord * chord / (8 * c->r);
+    const double line_allowance = allowed_off(extent, std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(q.x), std::fabs(q.y)}));
+    if (chord > 0 && c->r > tolerance::kHugeCircleRatio * spacing && sagitta < representation && sagitta <= line_allowance)
       a.curve = Line{p.x, p.y, q.x - p.x, q.y - p.y};
   }
 }
@@ -164,6 +170,9 @@ Diagram build_diagram(std::span<const Site> input, BuildStats* stats_out) {
   else
     extract_linear(out.sites, rt, out);
   drop_unused_nodes(out);  // copies left by nodes found twice on a shared power line
+  const auto check_start = Clock::now();
+  self_check(out);  // before straightening: it reads each circle's arcs in walk order
+  stats.self_check_seconds = seconds_since(check_start);
   straighten_flat_arcs(out);
   stats.extraction_seconds = seconds_since(start);
   start = Clock::now();

@@ -10,6 +10,8 @@
 #include "voronoi/engine/edge_pattern.h"
 #include "voronoi/engine/extractors.h"
 #include "voronoi/engine/facet_walk.h"
+#include "voronoi/engine/self_check.h"
+#include "voronoi/engine/triple_node.h"
 
 namespace covmap::voronoi::engine {
 namespace {
@@ -68,6 +70,7 @@ class PlanarExtractor {
   std::vector<FaceData> data_;
   std::vector<int> uf_;  // union-find over faces sharing one power line
   WalkScratch scratch_;
+  const double extent_ = site_extent(sites_);
 
   int find(int f) {
     while (uf_[f] != f) f = uf_[f] = uf_[uf_[f]];
@@ -96,7 +99,6 @@ class PlanarExtractor {
   struct FaceResult {
     bool zero;
     EdgePattern half[2];
-    std::array<long double, 4> centre, normal;
   };
 
   void compute_face(std::size_t k) {
@@ -111,32 +113,26 @@ class PlanarExtractor {
       const auto lo = edge_pattern_projective(negated(n), *a, true, false);
       const auto up = edge_pattern_projective(*a, n, false, true);
       if (!z || !lo || !up) return std::nullopt;
-      auto ld = [](const Homog<NT>& h) {
-        return std::array<long double, 4>{approx_value(h.X), approx_value(h.Y), approx_value(h.Z),
-                                          approx_value(h.W)};
-      };
-      return FaceResult{*z, {*lo, *up}, ld(*a), ld(n)};
+      return FaceResult{*z, {*lo, *up}};
     });
     FaceData& d = data_[k];
     d.zero = r.zero;
     d.half[0] = r.half[0];
     d.half[1] = r.half[1];
-    const std::array<int, 3> tri = {site_of(f->vertex(0)), site_of(f->vertex(1)),
-                                    site_of(f->vertex(2))};
-    std::array<long double, 4> minus_n = r.normal;
-    for (int c = 0; c < 3; ++c) minus_n[c] = -minus_n[c];
+    // Both halves of the power line are travelled along the lifted normal n.
+    const int sigma = travel_sign_planar(pts);
     for (int h = 0; h < 2; ++h)
       for (int q = 0; q < r.half[h].roots; ++q) {
-        const auto& from = h == 0 ? minus_n : r.centre;
-        const auto& to = h == 0 ? r.centre : r.normal;
-        const EdgePattern& hp = r.half[h];
-        const bool double_root = hp.roots == 1 && hp.sign[0] == hp.sign[1];
-        out_.nodes.push_back(root_node(from, to, q, hp.roots, double_root, tri, sites_));
+        bool exact = false;
+        out_.nodes.push_back(triple_node(pts, wanted_root(r.half[h], q, sigma), extent_, &exact));
+        stats_.exact_nodes += exact;
         d.node[h][q] = static_cast<int>(out_.nodes.size()) - 1;
       }
     if (d.zero) {
-      out_.nodes.push_back(Node{static_cast<double>(r.centre[0] / r.centre[3]),
-                                static_cast<double>(r.centre[1] / r.centre[3])});
+      // A node of degree > 3 (rare): the power centre exactly, rounded once.
+      const auto a = planar_power_centre<Exact>(pts, lifted_normal<Exact>(pts));
+      const double w = CGAL::to_double(a->W);
+      out_.nodes.push_back(Node{CGAL::to_double(a->X) / w, CGAL::to_double(a->Y) / w});
       d.centre_node = static_cast<int>(out_.nodes.size()) - 1;
     }
   }

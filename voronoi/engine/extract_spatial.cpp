@@ -14,6 +14,9 @@
 #include "voronoi/engine/edge_pattern.h"
 #include "voronoi/engine/extractors.h"
 #include "voronoi/engine/facet_walk.h"
+#include "voronoi/engine/readable_arcs.h"
+#include "voronoi/engine/self_check.h"
+#include "voronoi/engine/triple_node.h"
 #include "core/parallel.h"
 #include "voronoi/tolerances.h"
 
@@ -38,11 +41,16 @@ class SpatialExtractor {
       : sites_(sites), rt_(rt), out_(out), stats_(stats) {}
 
   void run() {
+    extent_ = site_extent(sites_);
     compute_cells();
     compute_facets();
     merge_shared_line_nodes();
     walk_all_edges();
   }
+
+  // Arcs are mended (engine/readable_arcs.h) after all walks: they only read the nodes.
+  std::vector<ArcMend> mends_;
+  double extent_ = 0;
 
  private:
   const std::vector<Site>& sites_;
@@ -211,10 +219,13 @@ class SpatialExtractor {
     }
     out_.nodes.resize(next);
     node_facet_.resize(next);
-    parallel_chunks(jobs.size(), worker_count(jobs.size()),
-                    [&](std::size_t begin, std::size_t end, int) {
-                      for (std::size_t j = begin; j < end; ++j) place_root_node(jobs[j].cell, jobs[j].facet, jobs[j].root, jobs[j].node);
-                    });
+    const int node_workers = worker_count(jobs.size());
+    std::vector<std::size_t> exact_nodes(node_workers, 0);
+    parallel_chunks(jobs.size(), node_workers, [&](std::size_t begin, std::size_t end, int w) {
+      for (std::size_t j = begin; j < end; ++j)
+        place_root_node(jobs[j].cell, jobs[j].facet, jobs[j].root, jobs[j].node, exact_nodes[w]);
+    });
+    for (std::size_t e : exact_nodes) stats_.exact_nodes += e;
     // Zero vertices get their nodes now, so the walks only read.
     for (std::size_t k = 0; k < cells_.size(); ++k)
       if (data_[k].zero) vertex_zero_node(static_cast<int>(k));
@@ -280,25 +291,25 @@ class SpatialExtractor {
       if (node >= 0) node = find(node);
   }
 
-  std::array<long double, 4> approx(Cell c) const {
-    if (data_[c->info()].valid) {
-      const Homog<Approx>& v = data_[c->info()].v;
-      return {v.X.v, v.Y.v, v.Z.v, v.W.v};
-    }
-    auto v = cell_point<Exact>(c);
-    return {CGAL::to_double(v->X), CGAL::to_double(v->Y), CGAL::to_double(v->Z),
-            CGAL::to_double(v->W)};
-  }
-
-  void place_root_node(int cell, int f, int r, int node) {
+  void place_root_node(int cell, int f, int r, int node, std::size_t& exact_nodes) {
     Cell c = cells_[cell];
+    Cell n = c->neighbor(f);
     const EdgePattern& p = facet_[4 * cell + f];
     std::array<int, 3> tri;
+    std::array<RawPoint, 3> raw;
     for (int k = 0, m = 0; k < 4; ++k)
-      if (k != f) tri[m++] = site_of(c->vertex(k));
-    const bool double_root = p.roots == 1 && p.sign[0] == p.sign[1];
-    out_.nodes[node] =
-        root_node(approx(c), approx(c->neighbor(f)), r, p.roots, double_root, tri, sites_);
+      if (k != f) {
+        tri[m] = site_of(c->vertex(k));
+        raw[m++] = c->vertex(k)->point().point();
+      }
+    // The travel from c's power vertex to n's leaves c (its fourth site falls behind) or, when c is
+    // infinite, reaches the finite cell n from infinity.
+    const bool c_finite = !data_[cell].infinite;
+    const RawPoint away = c_finite ? c->vertex(f)->point().point() : n->vertex(n->index(c))->point().point();
+    const int sigma = travel_sign(raw, away, c_finite);
+    bool exact = false;
+    out_.nodes[node] = triple_node(raw, wanted_root(p, r, sigma), extent_, &exact);
+    exact_nodes += exact;
     node_facet_[node] = tri;
   }
 
@@ -334,6 +345,8 @@ class SpatialExtractor {
     std::vector<Token> tokens;
     WalkScratch scratch;
     std::vector<Arc> arcs;
+    std::vector<ArcMend> mends;  // one per arc
+    std::vector<RawPoint> link;
   };
 
   void walk_all_edges() {
@@ -353,7 +366,12 @@ class SpatialExtractor {
     std::size_t total = out_.arcs.size();
     for (const WalkState& st : states) total += st.arcs.size();
     out_.arcs.reserve(total);
-    for (WalkState& st : states) out_.arcs.insert(out_.arcs.end(), st.arcs.begin(), st.arcs.end());
+    mends_.assign(out_.arcs.size(), ArcMend::kNone);
+    for (WalkState& st : states) {
+      out_.arcs.insert(out_.arcs.end(), st.arcs.begin(), st.arcs.end());
+      mends_.insert(mends_.end(), st.mends.begin(), st.mends.end());
+    }
+    apply_mends(out_, mends_);
   }
 
   void walk_edge(WalkState& st, Cell c0, int i0, int j0, std::size_t begin, std::size_t end) {
@@ -391,16 +409,28 @@ class SpatialExtractor {
       }
     }
     if (!ccw) std::reverse(tokens.begin(), tokens.end());
+    bool have_link = false;  // the link is needed rarely: gathered on first use
+    auto link = [&]() -> const std::vector<RawPoint>& {
+      if (!have_link) {
+        st.link.clear();
+        for (Cell c : ring)
+          for (int k = 0; k < 4; ++k) {
+            Vertex v = c->vertex(k);
+            if (v != vi && v != vj && !rt_.is_infinite(v)) st.link.push_back(v->point().point());
+          }
+        have_link = true;
+      }
+      return st.link;
+    };
+    const std::size_t first = st.arcs.size();
     emit_arcs(tokens, st.scratch, site_of(vi), site_of(vj), sites_, st.arcs, [&] {
       if (vi->point().point().z() == vj->point().point().z()) return false;  // U would show
-      std::vector<RawPoint> link;
-      for (Cell c : ring)
-        for (int k = 0; k < 4; ++k) {
-          Vertex v = c->vertex(k);
-          if (v != vi && v != vj && !rt_.is_infinite(v)) link.push_back(v->point().point());
-        }
-      return circle_centre_in_facet(vi->point().point(), vj->point().point(), link);
+      return circle_centre_in_facet(vi->point().point(), vj->point().point(), link());
     });
+    for (std::size_t k = first; k < st.arcs.size(); ++k)
+      st.mends.push_back(ends_within_rounding(st.arcs[k], out_.nodes, sites_, extent_)
+                             ? arc_mend(st.arcs[k], out_.nodes, sites_, st.scratch.zeros, link(), extent_)
+                             : ArcMend::kNone);
   }
 };
 

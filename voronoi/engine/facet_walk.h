@@ -1,5 +1,5 @@
 // Pieces shared by the 3D and planar extractors: turning the walk around one power facet into
-// arcs, and placing nodes.
+// arcs (nodes are placed by engine/triple_node.h).
 #pragma once
 
 #include <algorithm>
@@ -35,12 +35,6 @@ void emit_arcs(const std::vector<Token>& tokens, WalkScratch& scratch, int si, i
 
 // The arc of (si, sj) from node `from` to node `to` (kNone / kInfinityNode at infinity).
 Arc make_arc(int si, int sj, int from, int to, const std::vector<Site>& sites);
-
-// A node between homogeneous points a and b (approximate, as long doubles): interior root r of
-// `roots` (ordered from a to b) of g along the segment — a double root if `double_root` — polished
-// by Newton's method on the weighted distances to the three sites `tri` it is equidistant from.
-Node root_node(std::array<long double, 4> a, std::array<long double, 4> b, int r, int roots,
-               bool double_root, const std::array<int, 3>& tri, const std::vector<Site>& sites);
 
 // The lift of the Apollonius circle's centre of (pi, pj) is inside D; is it in the facet, i.e. is
 // the power to pi no larger than to any site of `link`? Exact.

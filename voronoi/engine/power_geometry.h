@@ -25,6 +25,11 @@ struct Homog {
 };
 
 template <class NT>
+Homog<NT> negated(const Homog<NT>& a) {
+  return Homog<NT>{-a.X, -a.Y, -a.Z, a.W};
+}
+
+template <class NT>
 struct SiteNT {
   NT x, y, w2, r2;
   explicit SiteNT(const RawPoint& p)
@@ -106,11 +111,6 @@ Homog<NT> cross(const Homog<NT>& a, const Homog<NT>& b) {
   return Homog<NT>{a.Y * b.Z - a.Z * b.Y, a.Z * b.X - a.X * b.Z, a.X * b.Y - a.Y * b.X, NT(0)};
 }
 
-template <class NT>
-Homog<NT> negated(const Homog<NT>& a) {
-  return Homog<NT>{-a.X, -a.Y, -a.Z, a.W};
-}
-
 // The point of the power line of three coplanar lifted sites that lies in their plane (normal n).
 template <class NT>
 std::optional<Homog<NT>> planar_power_centre(const std::array<RawPoint, 3>& s, const Homog<NT>& n) {
@@ -125,28 +125,42 @@ std::optional<Homog<NT>> planar_power_centre(const std::array<RawPoint, 3>& s, c
   return solve_rows(o, r);
 }
 
-// The direction of the power edge of three sites, pointing away from the fourth site `away`
-// (the opposite vertex of the finite cell on the other side of the hull facet).
+// The direction of the power line of three sites, unoriented. Its (X, Y) part is 2·perp(n) with
+// n = Δw₂² d₁ − Δw₁² d₂ (d_m = s_m − s_0, Δw_m² = w_m² − w_0²) and perp(x, y) = (−y, x): the
+// normal of the line's projection used by engine/triple_node.h.
 template <class NT>
-std::optional<Homog<NT>> power_ray_direction(const std::array<RawPoint, 3>& s,
-                                             const RawPoint& away) {
+Homog<NT> power_line_direction(const std::array<RawPoint, 3>& s) {
   const SiteNT<NT> o(s[0]);
   const Row<NT> p = equal_power_row(o, SiteNT<NT>(s[1]));
   const Row<NT> q = equal_power_row(o, SiteNT<NT>(s[2]));
   // Null vector of the two homogeneous rows: their cross product in (X, Y, κ).
-  NT dX = p.b * q.c - p.c * q.b;
-  NT dY = p.c * q.a - p.a * q.c;
-  NT dK = p.a * q.b - p.b * q.a;
-  NT dZ = NT(2) * o.x * dX + NT(2) * o.y * dY - o.w2 * dK;
-  // Outward: the power of `away` must grow faster than that of o, i.e. d·(c_l - c_o) < 0;
-  // multiplied by w_o² w_l² that is w_o² (d_X x_l + d_Y y_l - d_Z/2) - w_l² (d_X x_o + ...) < 0.
-  const SiteNT<NT> l(away);
+  const NT dX = p.b * q.c - p.c * q.b;
+  const NT dY = p.c * q.a - p.a * q.c;
+  const NT dK = p.a * q.b - p.b * q.a;
+  return Homog<NT>{dX, dY, NT(2) * o.x * dX + NT(2) * o.y * dY - o.w2 * dK, NT(0)};
+}
+
+// Positive when the power of site `away` grows more slowly than that of s[0] along d (a direction
+// along the power line of s), i.e. d·(c_away − c_0) > 0 for the lifted sites, multiplied by
+// w_0² w_away² > 0. Zero only if `away` is coplanar with s in the lift (a flat cell).
+template <class NT>
+NT power_growth(const std::array<RawPoint, 3>& s, const RawPoint& away, const Homog<NT>& d) {
+  const SiteNT<NT> o(s[0]), l(away);
   const NT half(0.5);
-  const NT t = o.w2 * (dX * l.x + dY * l.y - half * dZ) - l.w2 * (dX * o.x + dY * o.y - half * dZ);
-  const auto st = certain_sign(t);
+  return o.w2 * (d.X * l.x + d.Y * l.y - half * d.Z) - l.w2 * (d.X * o.x + d.Y * o.y - half * d.Z);
+}
+
+// The direction of the power edge of three sites, pointing away from the fourth site `away`
+// (the opposite vertex of the finite cell on the other side of the hull facet): the power of
+// `away` must grow faster than that of s[0].
+template <class NT>
+std::optional<Homog<NT>> power_ray_direction(const std::array<RawPoint, 3>& s,
+                                             const RawPoint& away) {
+  const Homog<NT> d = power_line_direction<NT>(s);
+  const auto st = certain_sign(power_growth(s, away, d));
   if (!st || *st == CGAL::ZERO) return std::nullopt;
-  if (*st == CGAL::POSITIVE) dX = -dX, dY = -dY, dZ = -dZ;
-  return Homog<NT>{dX, dY, dZ, NT(0)};
+  if (*st == CGAL::POSITIVE) return negated(d);
+  return d;
 }
 
 template <class NT>

@@ -1,0 +1,154 @@
+// The extremes of issue 11: every input is either refused with InvalidSites naming the sites and
+// the limit (before any work), or built into a diagram the independent checker accepts. Before,
+// each of these gave a diagram the checker rejected (or NaN nodes), with success.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <type_traits>
+
+#include "check/check.h"
+#include "checker_reach.h"
+#include "site_families.h"
+#include "voronoi/engine.h"
+
+namespace covmap::voronoi {
+namespace {
+
+std::vector<Site> random_sites(int n, double lo, double hi, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> pos(lo, hi), weight(1.0, 2.0);
+  std::vector<Site> sites;
+  for (int i = 0; i < n; ++i) sites.push_back({std::to_string(i), pos(rng), pos(rng), weight(rng)});
+  return sites;
+}
+
+void expect_checker_accepts(const std::vector<Site>& sites, const char* what) {
+  const Diagram d = build_diagram(sites);
+  const check::CheckReport report = check::check_diagram(d, check::CheckOptions{});
+  EXPECT_TRUE(report.ok()) << what << ": " << report.brief();
+}
+
+// The ids of the sites refused, and each problem names the limit's documentation.
+std::vector<std::string> refused(const std::vector<Site>& sites) {
+  try {
+    build_diagram(sites);
+  } catch (const InvalidSites& e) {
+    std::vector<std::string> ids;
+    for (const InvalidSite& p : e.problems()) {
+      EXPECT_FALSE(p.problem.empty());
+      ids.push_back(p.id);
+    }
+    return ids;
+  }
+  return {};
+}
+
+TEST(EngineRange, AnInternalFailureIsNotBadInput) {
+  // The CLI maps InvalidSites to exit 2 and any other exception to 4 (internal error).
+  static_assert(!std::is_base_of_v<InvalidSites, EngineFailure>);
+  static_assert(std::is_base_of_v<std::exception, EngineFailure>);
+}
+
+TEST(EngineRange, NearlyCollinearSitesGiveArcEndsOnTheirCurves) {
+  // 20 sites on y = x/2 moved by one ulp: arc ends landed up to 800 units off their curves.
+  std::mt19937_64 rng(1);
+  std::uniform_real_distribution<double> x(0, 100), w(1, 3), coin(0, 1);
+  for (const double rel : {0.0, 1e-15, 1e-12}) {
+    std::vector<Site> sites;
+    for (int i = 0; i < 20; ++i) {
+      const double xi = x(rng);
+      double yi = xi / 2;
+      yi = rel == 0 ? std::nextafter(yi, coin(rng) < 0.5 ? 0.0 : 1e9) : yi * (1 + (coin(rng) < 0.5 ? -rel : rel));
+      sites.push_back({std::to_string(i), xi, yi, w(rng)});
+    }
+    expect_checker_accepts(sites, rel == 0 ? "one ulp" : "relative");
+  }
+}
+
+TEST(EngineRange, SplitDegreeFourNodeIsNotReadAsAFullCircle) {
+  // A grid moved by ulps splits nodes of degree 4 into nodes an ulp apart, joined by a tiny arc
+  // whose rounded ends came out in the wrong order: read as almost its whole circle, it crossed
+  // four arcs and had another site closer.
+  for (const std::uint64_t seed : {37, 90})
+    expect_checker_accepts(testing::make_near_degenerate(testing::NearBase::Grid, testing::Perturbation::Ulp, 40,
+                                                         seed == 37 ? 1e4 : 1e7, seed),
+                           "perturbed grid");
+}
+
+TEST(EngineRange, FarNodeOfAPerturbedGridIsFinite) {
+  // Equal-weight rows of a grid moved by an ulp have nearly parallel bisectors meeting ~1e17 away;
+  // the fast node construction overflowed there and the self-check refused the diagram.
+  const auto sites = testing::make_near_degenerate(testing::NearBase::Grid, testing::Perturbation::Ulp, 40, 100, 19);
+  check::CheckOptions options;
+  options.max_reported = 100000;
+  const check::CheckReport report = check::check_diagram(build_diagram(sites), options);
+  for (const check::Violation& v : report.violations)
+    EXPECT_FALSE(testing::judged(v, false, 100 * std::sqrt(2.0))) << v.message;
+}
+
+TEST(EngineRange, StraightenedArcOfNearlyEqualWeightsStaysOnItsBisector) {
+  // Weights equal to 9 digits: an arc of a circle of radius ~1e13 written as the line through its
+  // nodes was 1.1 times the checker's tolerance off the bisector at its middle.
+  for (const std::uint64_t seed : {38, 53, 55}) {
+    const auto sites = testing::make_near_degenerate(testing::NearBase::EqualWeight, testing::Perturbation::Rel1e9, 40, 1e4, seed);
+    check::CheckOptions options;
+    options.max_reported = 100000;
+    const check::CheckReport report = check::check_diagram(build_diagram(sites), options);
+    for (const check::Violation& v : report.violations)
+      EXPECT_FALSE(testing::judged(v, true, 1e4)) << "seed " << seed << ": " << v.message;
+  }
+}
+
+TEST(EngineRange, SitesOneUlpApartPassTheChecker) {
+  auto sites = random_sites(20, 0, 100, 3);
+  sites.push_back({"twin", std::nextafter(sites[0].x, 1e9), sites[0].y, 1.7});
+  expect_checker_accepts(sites, "two sites one ulp apart");
+}
+
+TEST(EngineRange, CoordinatesFarFromTheOriginAgainstTheirSpreadAreRefused) {
+  // Sites at 1e15 spread over 1e3: nodes can only be written 0.125 apart there.
+  auto sites = random_sites(30, 0, 1e3, 5);
+  for (Site& s : sites) s.x += 1e15, s.y += 1e15;
+  EXPECT_EQ(refused(sites).size(), sites.size());
+  // Spread over 1e14 they are fine.
+  expect_checker_accepts(random_sites(30, 9e14, 1.1e15, 5), "sites around 1e15 spread over 1e14");
+}
+
+TEST(EngineRange, DenormalCoordinatesAndWeightsAreRefused) {
+  auto sites = random_sites(20, 0, 100, 7);
+  sites.push_back({"denormal position", 5e-324, 1e-310, 1.5});
+  EXPECT_EQ(refused(sites), std::vector<std::string>{"denormal position"});
+  sites.back() = {"denormal weight", 50.5, 50.5, 5e-324};
+  EXPECT_EQ(refused(sites), std::vector<std::string>{"denormal weight"});
+}
+
+TEST(EngineRange, MixedScalesAreRefused) {
+  auto sites = random_sites(20, 0, 100, 9);
+  sites.push_back({"huge", 1e300, 1e300, 1.0});
+  EXPECT_FALSE(refused(sites).empty());
+}
+
+TEST(EngineRange, WeightRatiosUpToTheLimitAreBuiltBeyondItRefused) {
+  auto sites = random_sites(20, 0, 100, 11);
+  // At 2^50 the light sites' disks are a few ulps wide and the checker found their sides swapped.
+  sites[0].weight = std::ldexp(sites[1].weight, 39);
+  expect_checker_accepts(sites, "weight ratio 2^39");
+  sites[0].weight = std::ldexp(2.0, 41);
+  const auto ids = refused(sites);
+  EXPECT_EQ(ids.size(), sites.size() - 1);  // every site but the heavy one
+}
+
+TEST(EngineRange, InputsNear1e308AreRefusedOrCorrect) {
+  // Once these ended in NaN nodes. The bisectors of some pairs run beyond the largest double.
+  auto sites = random_sites(20, -1, 1, 13);
+  for (Site& s : sites) s.x *= 1.7e308, s.y *= 1.7e308;
+  EXPECT_FALSE(refused(sites).empty());
+  // Scaled down far enough, the same sites are built (the checker's own range ends near 1e150).
+  auto smaller = sites;
+  for (Site& s : smaller) s.x *= 1e-160, s.y *= 1e-160;
+  expect_checker_accepts(smaller, "the same sites at 1e148");
+}
+
+}  // namespace
+}  // namespace covmap::voronoi
