@@ -9,6 +9,7 @@
 #include "voronoi/engine/extractors.h"
 #include "voronoi/engine/facet_walk.h"
 #include "voronoi/engine/self_check.h"
+#include "voronoi/engine/writable_bisectors.h"
 
 namespace covmap::voronoi {
 
@@ -170,6 +171,7 @@ Diagram build_diagram(std::span<const Site> input, BuildStats* stats_out) {
   else
     extract_linear(out.sites, rt, out);
   drop_unused_nodes(out);  // copies left by nodes found twice on a shared power line
+  refuse_unwritable_bisectors(out);
   const auto check_start = Clock::now();
   self_check(out);  // before straightening: it reads each circle's arcs in walk order
   stats.self_check_seconds = seconds_since(check_start);

@@ -45,6 +45,15 @@ void find_out_of_range(std::span<const Site> sites, std::vector<InvalidSite>& pr
   const double wmin_allowed = std::ldexp(wmax, -limits::kWeightRatioExponent);
   const double offset_allowed = std::ldexp(quarter_extent, limits::kOffsetExponent + 2);
   const double separation = std::ldexp(quarter_extent, 2 - limits::kSeparationExponent);
+  if (extent < std::ldexp(1.0, limits::kMinExtentExponent)) {
+    for (std::size_t i = 0; i < sites.size(); ++i)
+      problems.push_back({static_cast<int>(i), sites[i].id,
+                          "the sites' extent (" + number(extent) + ") is below 2^" +
+                              std::to_string(limits::kMinExtentExponent) +
+                              " ≈ 9.3e-302: the diagram's nodes would be denormal doubles with too few digits; "
+                              "scale the coordinates up (docs/ENGINE.md, Supported input)"});
+    return;
+  }
   for (std::size_t i = 0; i < sites.size(); ++i) {
     const Site& s = sites[i];
     if (s.weight < wmin_allowed)
