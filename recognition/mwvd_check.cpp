@@ -28,7 +28,8 @@ namespace stages {
 
 void mwvd_check(Reconstruction& out, const InputScale& in, const RecognitionOptions& options) {
   const Diagram& g = out.graph;
-  const mwvd::Allowance allowance{options.relative_tolerance, in.scale};
+  const mwvd::Allowance allowance{options.relative_tolerance, in.scale,
+                                  {0.5 * (in.extent.xmin + in.extent.xmax), 0.5 * (in.extent.ymin + in.extent.ymax)}};
   const std::vector<mwvd::ArcSites> labels = mwvd::arc_sites(g, out.face_site);
   const WeightedSiteIndex index(out.sites);
   double smallest_weight = INFINITY;

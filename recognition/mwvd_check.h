@@ -45,11 +45,18 @@ std::vector<ArcSites> arc_sites(const Diagram& g, const std::vector<int>& face_s
 struct Allowance {
   double tau = 0.0;    // relative: RecognitionOptions::relative_tolerance
   double scale = 0.0;  // the input's extent (a length)
+  Point centre;        // the centre of the input's extent (its frame's origin)
 
   // For |p − a|/w_a − |p − b|/w_b at p (da, db: those two distances): what moving the sites by
   // τ·scale and changing their weights by a relative τ can change it by, plus the rounding of
-  // points whose coordinates (or curve) have the given magnitude.
-  double residual(const Site& a, double da, const Site& b, double db, double magnitude) const;
+  // points whose coordinates (or curve) have the given magnitude, plus moving p by `moved`.
+  double residual(const Site& a, double da, const Site& b, double db, double magnitude, double moved = 0.0) const;
+
+  // How far a point p of an input arc may lie from where the arc's numbers, exact, would put it:
+  // each number is stated to τ of its own size in the input's frame (a rounded graph's are; the
+  // recognition's arc-end allowance reads them the same way), so a huge circle of nearly equal
+  // weights, rounded to d digits, is off its bisector by ~10⁻ᵈ·r although its end nodes are not.
+  double stated_curve(const Arc& arc, Point p) const;
 };
 
 // The sites, for nearest-site queries (index: built over sites).

@@ -6,7 +6,6 @@
 #include <limits>
 #include <sstream>
 
-#include "core/extent.h"
 #include "core/parallel.h"
 #include "core/weighted_owner.h"
 #include "recognition/mwvd_check.h"
@@ -36,7 +35,7 @@ struct Finding {
 
 // Tests point p against its own sites (those of the faces it bounds).
 Finding test_point(Point p, std::span<const int> own, const std::vector<Site>& sites, const WeightedSiteIndex& index,
-                   const Allowance& allowance, double magnitude) {
+                   const Allowance& allowance, double magnitude, double moved = 0.0) {
   Finding f;
   f.at = p;
   int nearest = kNone, farthest = kNone;
@@ -48,12 +47,12 @@ Finding test_point(Point p, std::span<const int> own, const std::vector<Site>& s
   }
   if (nearest == kNone) return f;
   if (farthest != nearest) {
-    const double excess = (df - dn) / allowance.residual(sites[nearest], dn, sites[farthest], df, magnitude);
+    const double excess = (df - dn) / allowance.residual(sites[nearest], dn, sites[farthest], df, magnitude, moved);
     if (excess > 1.0) f = {Defect::kNotEquidistant, excess, df - dn, nearest, farthest, p};
   }
   index.for_each_closer(p, dn, [&](int k, double dk) {
     if (std::find(own.begin(), own.end(), k) != own.end()) return true;
-    const double excess = (dn - dk) / allowance.residual(sites[nearest], dn, sites[k], dk, magnitude);
+    const double excess = (dn - dk) / allowance.residual(sites[nearest], dn, sites[k], dk, magnitude, moved);
     if (excess > 1.0 && excess > f.excess) f = {Defect::kCloserSite, excess, dn - dk, nearest, k, p};
     return true;
   });
@@ -142,10 +141,16 @@ std::vector<Difference> in_order(std::size_t n, Test&& test) {
 
 }  // namespace
 
-double Allowance::residual(const Site& a, double da, const Site& b, double db, double magnitude) const {
-  const double inverse_weights = 1.0 / a.weight + 1.0 / b.weight;
+double Allowance::residual(const Site& a, double da, const Site& b, double db, double magnitude, double moved) const {
+  const double inverse_weights = 1.0 / a.weight + 1.0 / b.weight;  // bounds the residual's gradient
   return tau * (scale * inverse_weights + da + db) +
-         tolerance::kPointRoundingUlps * kEps * magnitude * inverse_weights;
+         (tolerance::kPointRoundingUlps * kEps * magnitude + moved) * inverse_weights;
+}
+
+double Allowance::stated_curve(const Arc& arc, Point p) const {
+  if (const auto* c = std::get_if<Circle>(&arc.curve)) return tau * (std::hypot(c->cx - centre.x, c->cy - centre.y) + c->r);
+  const auto& l = std::get<Line>(arc.curve);  // the anchor, and the direction over the lever to p
+  return tau * (std::hypot(l.x - centre.x, l.y - centre.y) + std::hypot(p.x - l.x, p.y - l.y));
 }
 
 std::vector<Difference> input_against_sites(const Diagram& g, const std::vector<ArcSites>& labels, const Sites& s,
@@ -163,8 +168,6 @@ std::vector<Difference> input_against_sites(const Diagram& g, const std::vector<
     m << "node " << v << " at (" << p.x << ", " << p.y << "): " << describe(f, sites);
     found.push_back({DifferenceKind::NodeOnlyInA, static_cast<int>(v), p.x, p.y, m.str()});
   });
-  const Box extent = graph_extent(g);
-  const Point centre{0.5 * (extent.xmin + extent.xmax), 0.5 * (extent.ymin + extent.ymax)};
   std::vector<Difference> arcs = in_order(g.arcs.size(), [&](std::size_t a, std::vector<Difference>& found) {
     const Arc& arc = g.arcs[a];
     std::vector<int> own;
@@ -173,9 +176,10 @@ std::vector<Difference> input_against_sites(const Diagram& g, const std::vector<
     if (own.empty()) return;
     const voronoi::ArcPathView path = voronoi::arc_path(arc, g.nodes);
     Finding worst;
-    for (double t : sample_parameters(path, centre, allowance.scale)) {
+    for (double t : sample_parameters(path, allowance.centre, allowance.scale)) {
       const Point p = path.at(t);
-      const Finding f = test_point(p, own, sites, index, allowance, curve_magnitude(arc) + std::abs(p.x) + std::abs(p.y));
+      const Finding f = test_point(p, own, sites, index, allowance, curve_magnitude(arc) + std::abs(p.x) + std::abs(p.y),
+                                   allowance.stated_curve(arc, p));
       if (f.excess > worst.excess) worst = f;
     }
     if (worst.defect == Defect::kNone) return;

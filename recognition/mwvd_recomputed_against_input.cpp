@@ -189,7 +189,8 @@ std::vector<Difference> recomputed_against_input(const Diagram& d, const Diagram
     const long long key = pair_key(arc.left_site, arc.right_site);
     const auto first = std::lower_bound(g_arcs.begin(), g_arcs.end(), std::pair<long long, int>{key, -1});
     for (auto it = first; it != g_arcs.end() && it->first == key; ++it)
-      if (distance_to_arc(voronoi::arc_path(g.arcs[it->second], g.nodes), m) <= across) {
+      if (distance_to_arc(voronoi::arc_path(g.arcs[it->second], g.nodes), m) <=
+          across + allowance.stated_curve(g.arcs[it->second], m)) {
         evidence[j] = Evidence::kMatched;
         break;
       }
