@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/extent.h"
 #include "recognition/mwvd_check.h"
 #include "recognition/recognize_stages.h"
 
@@ -88,39 +89,49 @@ int other_site_at(const std::vector<Site>& sites, Point q, int except, double to
   return kNone;
 }
 
-void compare_positions_and_weights(const InputLabels& in, const Reconstruction& r, const Pairing& p, double tol,
-                                   double tau, std::vector<SiteDifference>& out) {
+// How far a reconstructed site is from the graph (0 inside the box of its nodes): the graph fixes a
+// site d away only to about τ·d (cocircular sites 50 away from nodes crowded within 10⁻⁸ of their
+// centre), as the verification's allowance says.
+double distance_from(const Box& box, const Site& s) {
+  return std::hypot(std::max({box.xmin - s.x, s.x - box.xmax, 0.0}), std::max({box.ymin - s.y, s.y - box.ymax, 0.0}));
+}
+
+// The pairs against one solution's sites (`sites`, indexed as Reconstruction::sites).
+void compare_positions_and_weights(const InputLabels& in, const std::vector<Site>& sites, const Box& box,
+                                   const Pairing& p, double tol, double tau, std::vector<SiteDifference>& out) {
   std::vector<std::pair<int, int>> pairs;  // one-to-one pairs only (conflicts are reported already)
   for (const auto& [label, sites] : p.of_input)
     if (sites.size() == 1 && p.of_reconstructed.at(*sites.begin()).size() == 1) pairs.emplace_back(label, *sites.begin());
   std::vector<double> ratios;
-  for (const auto& [label, site] : pairs) ratios.push_back(in.sites[label].weight / r.sites[site].weight);
+  for (const auto& [label, site] : pairs) ratios.push_back(in.sites[label].weight / sites[site].weight);
   if (ratios.empty()) return;
   std::nth_element(ratios.begin(), ratios.begin() + ratios.size() / 2, ratios.end());
   const double common = ratios[ratios.size() / 2];
   for (const auto& [label, site] : pairs) {
     const Site& s = in.sites[label];
-    const Site& t = r.sites[site];
+    const Site& t = sites[site];
     const int arc = p.first_arc.at({label, site});
     const double distance = std::hypot(s.x - t.x, s.y - t.y);
-    if (distance > tol) {
-      const int other = out.size() < kSwapLookups ? other_site_at(r.sites, {s.x, s.y}, site, tol) : kNone;
+    const double position_tol = tol + tau * distance_from(box, t);
+    const double weight_tol = tol > 0 ? tau * position_tol / tol : tau;  // weights widen by the same factor
+    if (distance > position_tol) {
+      const int other = out.size() < kSwapLookups ? other_site_at(sites, {s.x, s.y}, site, position_tol) : kNone;
       std::ostringstream m;
       m << "input site " << quoted(in.sites, label) << " at (" << s.x << ", " << s.y << ") names the face of the site "
-        << "reconstructed at (" << t.x << ", " << t.y << "), " << distance << " away (" << distance / tol
+        << "reconstructed at (" << t.x << ", " << t.y << "), " << distance << " away (" << distance / position_tol
         << " tolerances)";
       if (other != kNone) m << "; its position is that of reconstructed site " << other << ": a swapped label";
       out.push_back({other != kNone ? SiteDifferenceKind::kSwappedLabel : SiteDifferenceKind::kPosition, label, site,
-                     arc, distance, distance / tol, m.str()});
+                     arc, distance, distance / position_tol, m.str()});
       continue;  // its weight belongs to another site too
     }
     const double off = std::abs(s.weight / t.weight / common - 1.0);
-    if (off > tau) {
+    if (off > weight_tol) {
       std::ostringstream m;
       m << "input site " << quoted(in.sites, label) << ": weight " << s.weight << " is " << s.weight / common
         << " after the common factor " << common << " of all sites; the reconstruction says " << t.weight
-        << " (off by a factor " << s.weight / t.weight / common << ", " << off / tau << " tolerances)";
-      out.push_back({SiteDifferenceKind::kWeight, label, site, arc, off, off / tau, m.str()});
+        << " (off by a factor " << s.weight / t.weight / common << ", " << off / weight_tol << " tolerances)";
+      out.push_back({SiteDifferenceKind::kWeight, label, site, arc, off, off / weight_tol, m.str()});
     }
   }
 }
@@ -143,7 +154,20 @@ InputSitesComparison compare_input_sites(const InputLabels& in, const Reconstruc
   Pairing p = pair_sites(in, r);
   out.differences = std::move(p.label_faults);
   out.positions_compared = r.unique;
-  if (r.unique) compare_positions_and_weights(in, r, p, tol, tau, out.differences);
+  if (r.unique) {
+    // Where two solutions survive (Lemma 6) the input's sites may be either: the one they fit best.
+    const Box box = graph_extent(r.graph);
+    std::vector<SiteDifference> best;
+    bool first = true;
+    for (const std::vector<Site>& sites : r.candidates.size() > 1 ? r.candidates : std::vector<std::vector<Site>>{r.sites}) {
+      if (sites.size() != r.sites.size()) continue;
+      std::vector<SiteDifference> found;
+      compare_positions_and_weights(in, sites, box, p, tol, tau, found);
+      if (first || found.size() < best.size()) best = std::move(found);
+      first = false;
+    }
+    out.differences.insert(out.differences.end(), best.begin(), best.end());
+  }
   out.agree = out.differences.empty();
   return out;
 }

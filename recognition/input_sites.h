@@ -10,13 +10,16 @@
 //     is a conflicting label; an arc side without a label where the reconstruction has a site is a
 //     missing label;
 //   - a paired site whose position is farther than the tolerance (relative_tolerance times the
-//     input's scale) from its partner differs in position — a swapped label when it is instead at
-//     the position of another reconstructed site;
+//     input's scale, plus relative_tolerance times the reconstructed site's distance d from the
+//     box of the graph's nodes: the graph fixes a site d away only to that, as the verification's
+//     allowance says) from its partner differs in position — a swapped label when it is instead
+//     at the position of another reconstructed site;
 //   - weights are known only up to one common factor: the median of the paired ratios is that
-//     factor, and a pair whose ratio differs from it by more than relative_tolerance (relatively)
-//     differs in weight.
+//     factor, and a pair whose ratio differs from it by more than relative_tolerance (relatively,
+//     widened for far sites by the same factor as the position's) differs in weight.
 // When the graph does not fix the sites (Reconstruction::unique false) only the labels are
-// compared: positions and weights of a family's member say nothing about the input's.
+// compared: positions and weights of a family's member say nothing about the input's. When two
+// solutions survive (Reconstruction::candidates), the input is compared with the one it fits best.
 // Input sites that no arc names (e.g. outside a clipped map's frame) are not compared.
 #pragma once
 

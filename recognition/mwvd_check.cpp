@@ -22,14 +22,36 @@ std::vector<ArcSites> arc_sites(const Diagram& g, const std::vector<int>& face_s
   return out;
 }
 
+std::vector<double> site_spreads(const Diagram& g, const std::vector<ArcSites>& labels, std::size_t sites, Point centre,
+                                 double scale) {
+  // A site is the mirror of its neighbours in its arcs; an arc whose numbers have size S (in the
+  // input's frame) states it to about τ·S, and its best-stated arc fixes it.
+  std::vector<double> best(sites, INFINITY);
+  for (std::size_t a = 0; a < g.arcs.size(); ++a) {
+    const Arc& arc = g.arcs[a];
+    if (arc.frame) continue;
+    const Line* line = std::get_if<Line>(&arc.curve);
+    const double size = stated_size(arc, centre, line ? Point{line->x, line->y} : centre);  // lines: no lever
+    for (int k : {labels[a].left, labels[a].right})
+      if (k != kNone) best[k] = std::min(best[k], size);
+  }
+  std::vector<double> spread(sites, 1.0);
+  for (std::size_t k = 0; k < sites; ++k)
+    if (std::isfinite(best[k]) && scale > 0) spread[k] = std::max(1.0, best[k] / scale);
+  return spread;
+}
+
 }  // namespace mwvd
 
 namespace stages {
 
 void mwvd_check(Reconstruction& out, const InputScale& in, const RecognitionOptions& options) {
   const Diagram& g = out.graph;
-  const mwvd::Allowance allowance{options.relative_tolerance, in.scale};
   const std::vector<mwvd::ArcSites> labels = mwvd::arc_sites(g, out.face_site);
+  const Point centre{0.5 * (in.extent.xmin + in.extent.xmax), 0.5 * (in.extent.ymin + in.extent.ymax)};
+  mwvd::Allowance allowance{options.relative_tolerance, in.scale, centre, out.sites,
+                            mwvd::site_spreads(g, labels, out.sites.size(), centre, in.scale)};
+  for (double sp : allowance.spread) allowance.widest_spread = std::max(allowance.widest_spread, sp);
   const WeightedSiteIndex index(out.sites);
   double smallest_weight = INFINITY;
   for (const Site& s : out.sites) smallest_weight = std::min(smallest_weight, s.weight);

@@ -24,6 +24,7 @@
 // queries by a kd-tree, counterparts by a hash of site pairs).
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "core/diagram.h"
@@ -41,15 +42,43 @@ struct ArcSites {
 // Per arc of g: the sites of the traced faces on its sides (face_site: per face of g).
 std::vector<ArcSites> arc_sites(const Diagram& g, const std::vector<int>& face_site);
 
+// The size of the numbers that state an arc's curve, in the frame centred at `centre`, for its
+// point p: a circle's centre and radius; a line's anchor and its lever to p.
+double stated_size(const Arc& arc, Point centre, Point p);
+
+// Allowance::spread of every site (labels: arc_sites; centre, scale: the input's extent).
+std::vector<double> site_spreads(const Diagram& g, const std::vector<ArcSites>& labels, std::size_t sites, Point centre,
+                                 double scale);
+
 // What the reconstruction's uncertainty allows a difference of weighted distances to be.
 struct Allowance {
   double tau = 0.0;    // relative: RecognitionOptions::relative_tolerance
   double scale = 0.0;  // the input's extent (a length)
+  Point centre;        // the centre of the input's extent (its frame's origin)
+  std::span<const Site> sites;
+  // Per site, its uncertainty in units of τ·scale: the size, in extents and at least 1, of the
+  // numbers that state its best-stated arc (in the input's frame; stated_curve reads them so). A
+  // site whose only face is an orphan far out (nearly equal weights put one 180 extents away) is
+  // fixed by that face's huge circles only to τ times their size; the recognition may then keep
+  // it apart from its twin (two sites for one region, 4·10⁻¹⁰ apart at τ = 10⁻¹¹, rounded to 12
+  // digits), whose bisector splits the twin's region in the recomputed diagram.
+  std::vector<double> spread;
+  double widest_spread = 1.0;
 
-  // For |p − a|/w_a − |p − b|/w_b at p (da, db: those two distances): what moving the sites by
-  // τ·scale and changing their weights by a relative τ can change it by, plus the rounding of
-  // points whose coordinates (or curve) have the given magnitude.
-  double residual(const Site& a, double da, const Site& b, double db, double magnitude) const;
+  // For |p − a|/w_a − |p − b|/w_b at p (da, db: those two distances; a, b: indices of sites): what
+  // moving each site k by τ·spread_k·scale and changing its weight by a relative τ·spread_k can
+  // change it by, plus the rounding of points whose coordinates (or curve) have the given
+  // magnitude, plus moving p by `moved`.
+  double residual(int a, double da, int b, double db, double magnitude, double moved = 0.0) const;
+  // A bound of residual(a, da, k, dk, magnitude) − τ·spread_k·dk over all sites k no lighter than
+  // lightest_weight.
+  double residual_bound(int a, double da, double magnitude, double lightest_weight) const;
+
+  // How far a point p of an input arc may lie from where the arc's numbers, exact, would put it:
+  // each number is stated to τ of its own size in the input's frame (a rounded graph's are; the
+  // recognition's arc-end allowance reads them the same way), so a huge circle of nearly equal
+  // weights, rounded to d digits, is off its bisector by ~10⁻ᵈ·r although its end nodes are not.
+  double stated_curve(const Arc& arc, Point p) const;
 };
 
 // The sites, for nearest-site queries (index: built over sites).

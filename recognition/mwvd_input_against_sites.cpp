@@ -6,7 +6,6 @@
 #include <limits>
 #include <sstream>
 
-#include "core/extent.h"
 #include "core/parallel.h"
 #include "core/weighted_owner.h"
 #include "recognition/mwvd_check.h"
@@ -36,7 +35,7 @@ struct Finding {
 
 // Tests point p against its own sites (those of the faces it bounds).
 Finding test_point(Point p, std::span<const int> own, const std::vector<Site>& sites, const WeightedSiteIndex& index,
-                   const Allowance& allowance, double magnitude) {
+                   const Allowance& allowance, double magnitude, double moved = 0.0) {
   Finding f;
   f.at = p;
   int nearest = kNone, farthest = kNone;
@@ -48,12 +47,17 @@ Finding test_point(Point p, std::span<const int> own, const std::vector<Site>& s
   }
   if (nearest == kNone) return f;
   if (farthest != nearest) {
-    const double excess = (df - dn) / allowance.residual(sites[nearest], dn, sites[farthest], df, magnitude);
+    const double excess = (df - dn) / allowance.residual(nearest, dn, farthest, df, magnitude, moved);
     if (excess > 1.0) f = {Defect::kNotEquidistant, excess, df - dn, nearest, farthest, p};
   }
+  // The own site compared with a closer one is the least certain (largest spread): the own sites
+  // are equidistant at p, and it is that one's uncertainty that moves the point.
+  int loosest = nearest;
+  for (int k : own)
+    if (allowance.spread[k] > allowance.spread[loosest]) loosest = k;
   index.for_each_closer(p, dn, [&](int k, double dk) {
     if (std::find(own.begin(), own.end(), k) != own.end()) return true;
-    const double excess = (dn - dk) / allowance.residual(sites[nearest], dn, sites[k], dk, magnitude);
+    const double excess = (dn - dk) / allowance.residual(loosest, dn, k, dk, magnitude, moved);
     if (excess > 1.0 && excess > f.excess) f = {Defect::kCloserSite, excess, dn - dk, nearest, k, p};
     return true;
   });
@@ -142,11 +146,27 @@ std::vector<Difference> in_order(std::size_t n, Test&& test) {
 
 }  // namespace
 
-double Allowance::residual(const Site& a, double da, const Site& b, double db, double magnitude) const {
-  const double inverse_weights = 1.0 / a.weight + 1.0 / b.weight;
-  return tau * (scale * inverse_weights + da + db) +
-         tolerance::kPointRoundingUlps * kEps * magnitude * inverse_weights;
+double Allowance::residual(int a, double da, int b, double db, double magnitude, double moved) const {
+  const double wa = sites[a].weight, wb = sites[b].weight, sa = spread[a], sb = spread[b];
+  const double rounding = tolerance::kPointRoundingUlps * kEps * magnitude + moved;
+  // 1/w_a + 1/w_b bounds the residual's gradient: how much a moved point changes it.
+  return tau * (scale * (sa / wa + sb / wb) + sa * da + sb * db) + rounding * (1.0 / wa + 1.0 / wb);
 }
+
+double Allowance::residual_bound(int a, double da, double magnitude, double lightest_weight) const {
+  const double wa = sites[a].weight, sa = spread[a];
+  const double rounding = tolerance::kPointRoundingUlps * kEps * magnitude;
+  return tau * (scale * (sa / wa + widest_spread / lightest_weight) + sa * da) +
+         rounding * (1.0 / wa + 1.0 / lightest_weight);
+}
+
+double stated_size(const Arc& arc, Point centre, Point p) {
+  if (const auto* c = std::get_if<Circle>(&arc.curve)) return std::hypot(c->cx - centre.x, c->cy - centre.y) + c->r;
+  const auto& l = std::get<Line>(arc.curve);  // the anchor, and the direction over the lever to p
+  return std::hypot(l.x - centre.x, l.y - centre.y) + std::hypot(p.x - l.x, p.y - l.y);
+}
+
+double Allowance::stated_curve(const Arc& arc, Point p) const { return tau * stated_size(arc, centre, p); }
 
 std::vector<Difference> input_against_sites(const Diagram& g, const std::vector<ArcSites>& labels, const Sites& s,
                                             const Allowance& allowance) {
@@ -163,8 +183,6 @@ std::vector<Difference> input_against_sites(const Diagram& g, const std::vector<
     m << "node " << v << " at (" << p.x << ", " << p.y << "): " << describe(f, sites);
     found.push_back({DifferenceKind::NodeOnlyInA, static_cast<int>(v), p.x, p.y, m.str()});
   });
-  const Box extent = graph_extent(g);
-  const Point centre{0.5 * (extent.xmin + extent.xmax), 0.5 * (extent.ymin + extent.ymax)};
   std::vector<Difference> arcs = in_order(g.arcs.size(), [&](std::size_t a, std::vector<Difference>& found) {
     const Arc& arc = g.arcs[a];
     std::vector<int> own;
@@ -173,9 +191,10 @@ std::vector<Difference> input_against_sites(const Diagram& g, const std::vector<
     if (own.empty()) return;
     const voronoi::ArcPathView path = voronoi::arc_path(arc, g.nodes);
     Finding worst;
-    for (double t : sample_parameters(path, centre, allowance.scale)) {
+    for (double t : sample_parameters(path, allowance.centre, allowance.scale)) {
       const Point p = path.at(t);
-      const Finding f = test_point(p, own, sites, index, allowance, curve_magnitude(arc) + std::abs(p.x) + std::abs(p.y));
+      const Finding f = test_point(p, own, sites, index, allowance, curve_magnitude(arc) + std::abs(p.x) + std::abs(p.y),
+                                   allowance.stated_curve(arc, p));
       if (f.excess > worst.excess) worst = f;
     }
     if (worst.defect == Defect::kNone) return;

@@ -63,8 +63,8 @@ NodeCurve curve_at(const Diagram& d, const Arc& arc, Point p, const Allowance& a
   const Site& a = d.sites[arc.left_site];
   const Site& b = d.sites[arc.right_site];
   const double magnitude = std::abs(p.x) + std::abs(p.y);
-  return {residual_gradient(p, a, b),
-          allowance.residual(a, weighted_distance(p, a), b, weighted_distance(p, b), magnitude)};
+  return {residual_gradient(p, a, b), allowance.residual(arc.left_site, weighted_distance(p, a), arc.right_site,
+                                                         weighted_distance(p, b), magnitude)};
 }
 
 std::vector<double> conditioning_of_nodes(const Diagram& d, const Allowance& allowance) {
@@ -110,19 +110,20 @@ double distance_to_arc(const voronoi::ArcPathView& p, Point q) {
 
 // Whether a site other than a and b is, at m, within the allowance of being as close as they are:
 // then m is within the conditioning of a node, and whether the a–b arc passes there is not decided
-// by the sites' accuracy.
+// by the sites' accuracy. The less certain of a and b (the larger spread) is the one compared: m
+// is on their bisector, and it is that site's uncertainty that moves the arc.
 bool third_site_as_close(Point m, int a, int b, const Sites& s, const Allowance& allowance) {
-  const Site& sa = s.sites[a];
-  const double da = weighted_distance(m, sa), magnitude = std::abs(m.x) + std::abs(m.y);
-  // residual(a, k) ≤ c + τ(da + dk) for every site k (none is lighter than the lightest), so a site
-  // within it has dk ≤ (da(1 + τ) + c) / (1 − τ): the query's bound.
-  const Site lightest{"", 0.0, 0.0, s.smallest_weight};
-  const double c = allowance.residual(sa, 0.0, lightest, 0.0, magnitude);
-  const double bound = (da * (1 + allowance.tau) + c) / (1 - allowance.tau);
+  if (allowance.spread[b] > allowance.spread[a]) std::swap(a, b);
+  const double da = weighted_distance(m, s.sites[a]), magnitude = std::abs(m.x) + std::abs(m.y);
+  // residual(a, k) ≤ c + τ·spread_k·dk ≤ c + τ·widest·dk for every site k, so a site within it has
+  // dk ≤ (da + c) / (1 − τ·widest): the query's bound (none when sites may move by half an extent).
+  const double c = allowance.residual_bound(a, da, magnitude, s.smallest_weight);
+  const double shrink = 1 - allowance.tau * allowance.widest_spread;
+  const double bound = shrink > 0.5 ? (da + c) / shrink : INFINITY;
   bool found = false;
   s.index.for_each_closer(m, std::nextafter(bound, INFINITY), [&](int k, double dk) {
     if (k == a || k == b) return true;
-    found = dk - da <= allowance.residual(sa, da, s.sites[k], dk, magnitude);
+    found = dk - da <= allowance.residual(a, da, k, dk, magnitude);
     return !found;
   });
   return found;
@@ -183,13 +184,20 @@ std::vector<Difference> recomputed_against_input(const Diagram& d, const Diagram
     const Site& b = sites[arc.right_site];
     if (third_site_as_close(m, arc.left_site, arc.right_site, s, allowance)) continue;
     const Point grad = residual_gradient(m, a, b);
-    const double across = allowance.residual(a, weighted_distance(m, a), b, weighted_distance(m, b),
-                                             std::abs(m.x) + std::abs(m.y)) / std::hypot(grad.x, grad.y);
+    const double across = allowance.residual(arc.left_site, weighted_distance(m, a), arc.right_site,
+                                             weighted_distance(m, b), std::abs(m.x) + std::abs(m.y)) /
+                          std::hypot(grad.x, grad.y);
+    // An arc that may move across by more than its distance from its sites may pass on either side
+    // of them: the sites are not told apart at their accuracy (two sites the reconstruction kept for
+    // one region of the input, a far orphan's fixed only by its huge circles), and the arc says
+    // nothing.
+    if (!(across < std::min(std::hypot(m.x - a.x, m.y - a.y), std::hypot(m.x - b.x, m.y - b.y)))) continue;
     evidence[j] = Evidence::kMissing;
     const long long key = pair_key(arc.left_site, arc.right_site);
     const auto first = std::lower_bound(g_arcs.begin(), g_arcs.end(), std::pair<long long, int>{key, -1});
     for (auto it = first; it != g_arcs.end() && it->first == key; ++it)
-      if (distance_to_arc(voronoi::arc_path(g.arcs[it->second], g.nodes), m) <= across) {
+      if (distance_to_arc(voronoi::arc_path(g.arcs[it->second], g.nodes), m) <=
+          across + allowance.stated_curve(g.arcs[it->second], m)) {
         evidence[j] = Evidence::kMatched;
         break;
       }

@@ -49,6 +49,29 @@ TEST(RoundedGraph, GraphsWithFewDigitsAreAcceptedWithinTheirRounding) {
   }
 }
 
+// A rounded graph is within the tolerance of an MWVD (the one it was rounded from), so the MWVD
+// check at that tolerance must answer "yes". 300 sites, ten seeds: they hold huge circles of
+// nearly equal weights (rounded to 9 digits they miss their bisector by ~1e-9·r — "no" once) and
+// orphan faces far out whose site the recognition keeps 4e-10 apart from its twin at 12 digits
+// (seed 4: the twins' bisector split a region of the recomputed diagram — "no" once).
+TEST(RoundedGraph, RoundedGraphsAreVoronoiDiagramsAtTheirTolerance) {
+  for (const int digits : {12, 9, 6}) {
+    RecognitionOptions options;
+    options.relative_tolerance = std::pow(10.0, 1 - digits);  // 10 units of the last written digit
+    for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+      const auto sites = testing::recognition_sites(RecognitionFamily::kRandom, 300, seed, {}, {1.0, 0.0, 0.0, 0.0});
+      Diagram graph = voronoi::build_diagram(sites);
+      if (!check::check_diagram(graph).ok()) continue;
+      testing::round_graph(graph, digits);
+      const Reconstruction r = recognize(std::move(graph), options);
+      const std::string what = std::to_string(digits) + " digits, seed " + std::to_string(seed);
+      ASSERT_TRUE(r.bisector_graph) << what << ": " << r.reason;
+      EXPECT_EQ(r.voronoi, MwvdAnswer::kYes)
+          << what << ": " << (r.voronoi_differences.empty() ? "" : r.voronoi_differences.front().message);
+    }
+  }
+}
+
 // Moving one arc's circle by far more than the tolerance: rejected, and the answer counts the
 // disagreeing elements and names the worst, largest first.
 TEST(RoundedGraph, InconsistencyBeyondTheToleranceIsCountedAndLocated) {
