@@ -35,8 +35,14 @@ struct GeneralizedCircle {
 };
 
 // Distance from z to a generalized circle (exact for circles and lines; infinite for an empty or
-// imaginary circle).
+// imaginary circle). Computed from the form, never from a centre and radius: a huge circle (nearly
+// equal weights) is located near z to a few ulps of |z|, not to ulps of its radius.
 double distance_to(const GeneralizedCircle& g, Complex z);
+
+// The point of a generalized circle nearest to z (z itself at the centre or for an empty circle).
+// Like distance_to, computed from the form without reading off a centre, so exact to a few ulps
+// of |z| however large the circle.
+Complex nearest_point(const GeneralizedCircle& g, Complex z);
 
 // Intersection points of two generalized circles: 0, 1 or 2 (empty also when they coincide). Two
 // circles whose discriminant is negative by less than tolerance::kTangentDiscriminant of its terms

@@ -27,6 +27,11 @@ struct ConstraintTest {
       } else {
         for (const mobius::Complex& q : c.points) off = std::min(off, std::abs(q - p));
       }
+      // A node outside the graph's extent is only as accurate as its distance from it (as a site
+      // is, tol_at), and so is what it says about a site near the graph: nearly equal weights put
+      // nodes 1e8 out, whose solution circles miss the site by ~1e-3 of an extent of 100.
+      const Node& at = t.g.nodes[c.node];
+      off = std::max(0.0, off - t.relative * t.extent.distance_to({at.x, at.y}));
       if (off > v.amount) v.amount = off, v.constraint = static_cast<int>(k);
     }
     if (v.amount < closest.amount) closest = v;
@@ -55,9 +60,24 @@ bool same_circle(const mobius::GeneralizedCircle& a, const mobius::GeneralizedCi
   const auto ca = a.centre(), cb = b.centre();
   const auto ra = a.radius(), rb = b.radius();
   if (!(ca && cb && ra && rb)) return false;
-  // Huge solution circles (nearly equal weights) are stated to `relative` of their own size.
-  const double allowed = tol + t.relative * std::max(*ra, *rb);
-  return std::abs(*ca - *cb) <= allowed && std::abs(*ra - *rb) <= allowed;
+  if (std::max(*ra, *rb) <= t.scale) {
+    const double allowed = tol + t.relative * std::max(*ra, *rb);
+    return std::abs(*ca - *cb) <= allowed && std::abs(*ra - *rb) <= allowed;
+  }
+  // A circle larger than the graph (nearly equal weights: radii ~1e12 over an extent of 100) is
+  // compared where the graph is, at three points of a spread over the graph's scale: its centre
+  // and radius are only good to ulps of the radius, and judging them against `relative` of the
+  // radius took distinct circles for one (issue 11: a face of 30 nearly equal weights became a
+  // one-parameter family and was rejected).
+  const Point middle = t.extent.centre();
+  const mobius::Complex p0 = mobius::nearest_point(a, {middle.x, middle.y});
+  const mobius::Complex normal = a.A * p0 + a.B;
+  if (std::abs(normal) == 0.0) return false;
+  const mobius::Complex along = mobius::Complex(0, 1) * normal / std::abs(normal);
+  for (const mobius::Complex p : {p0, mobius::nearest_point(a, p0 + t.scale * along),
+                                  mobius::nearest_point(a, p0 - t.scale * along)})
+    if (mobius::distance_to(b, p) > t.tol_at(p)) return false;
+  return true;
 }
 
 // Candidates from the solution circles when no node has isolated fixed points: their pairwise

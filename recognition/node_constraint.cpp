@@ -10,8 +10,8 @@
 
 namespace covmap::recognition::stages {
 
-double matrix_tolerance(const TracedGraph& t, double L) {
-  return std::clamp(t.relative * t.scale / L, tolerance::kMatrixRounding, tolerance::kMatrixCeiling);
+double matrix_tolerance(const TracedGraph& t, mobius::Complex v, double L) {
+  return std::clamp(t.tol_at(v) / L, tolerance::kMatrixRounding, tolerance::kMatrixCeiling);
 }
 
 // Composed in the node's own frame z' = (z - v) / L, where every arc at v passes through the
@@ -28,9 +28,14 @@ std::optional<Constraint> node_constraint(const TracedGraph& t, int f, int h_out
   const mobius::Complex at(g.nodes[v].x, g.nodes[v].y);
   const int far_end = (h_out % 2 == 0) ? first.to : first.from;
   double L = far_end != kNone ? std::abs(mobius::Complex(g.nodes[far_end].x, g.nodes[far_end].y) - at) : 0.0;
-  if (!(L > 0)) L = scale;
+  // The neighbourhood's size, but no more than the node's distance from the graph (where the
+  // sites are) plus the graph's scale: an arc of nearly equal weights may run from a node inside
+  // the graph to one 1e10 out, and in a frame that large the graph sits within 1e-8 of the origin,
+  // where the matrix tolerance falls to rounding and a solution circle reads as two points (issue 11).
+  const double reach = scale + t.extent.distance_to({at.real(), at.imag()});
+  if (!(L > 0) || L > reach) L = reach;
   const mobius::NodeFrame frame{at, L};
-  const double mt = matrix_tolerance(t, L);
+  const double mt = matrix_tolerance(t, at, L);
   mobius::Mobius h_total;
   int h = h_out, face = f, steps = 0;
   do {

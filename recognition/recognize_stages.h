@@ -103,9 +103,11 @@ struct TracedGraph {
   double tol_at(mobius::Complex p) const { return tol + relative * extent.distance_to({p.real(), p.imag()}); }
 };
 
-// The matrix tolerance of a node whose frame unit is L: the graph's tolerance expressed in the
-// node's frame (relative · scale / L), between tolerance::kMatrixRounding and kMatrixCeiling.
-double matrix_tolerance(const TracedGraph& t, double L);
+// The matrix tolerance of a node v whose frame unit is L: the graph's tolerance at v expressed in
+// the node's frame (tol_at(v) / L: a node far outside the extent — nearly equal weights put some
+// 1e10 out — is only as accurate as its own distance), between tolerance::kMatrixRounding and
+// kMatrixCeiling.
+double matrix_tolerance(const TracedGraph& t, mobius::Complex v, double L);
 
 // Lemmas 5 and §4.4: going once around node v from face f, across every arc at v and back, maps
 // f's site to itself. The composition of the inversions is an anti-Möbius map for an odd number

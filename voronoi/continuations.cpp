@@ -54,33 +54,71 @@ Outgoing outgoing_half_arcs(const Diagram& d, bool by_sites) {
   return o;
 }
 
-// The continuation of half-arc h at the node where it ends, among the outgoing half-arcs
-// `out` there that `eligible` admits. The region touches this node more than once (or faces are
-// traced by geometry): take the first outgoing arc clockwise from the reversed incoming
-// direction (the face is on the left); of arcs leaving in the same direction, the one bending
-// more to the left lies at larger angles next to the node, so the clockwise sweep from the back
-// direction meets it first. The reversed incoming direction is the departure of the twin h ^ 1.
-template <class Eligible>
-int turn_at(const TracingGeometry& geometry, std::span<const int> out, int h, Eligible&& eligible) {
-  const auto& back = geometry.depart[h ^ 1];
-  int best = -1;
-  double best_angle = 1e9, best_curvature = 0.0;
-  for (int c : out) {
-    if (c == (h ^ 1) || !eligible(c)) continue;
-    const auto& dc = geometry.depart[c];
-    // Clockwise turn from the back direction to c's departure, in (0, 4] (both are pseudo-angles
-    // in [0, 4), so their difference lies in (-4, 4)).
-    double cw = back.angle - dc.angle;
-    if (cw <= 0) cw += kPseudoTurn;
-    // Leaving along the way we came: right of the returning arc (bending less left) comes first
-    // in the sweep, left of it last.
-    if (cw < tolerance::kParallelAngle || cw > kPseudoTurn - tolerance::kParallelAngle)
-      cw = dc.curvature < back.curvature ? 0.0 : kPseudoTurn;
-    if (best < 0 || cw < best_angle - tolerance::kParallelAngle ||
-        (cw <= best_angle + tolerance::kParallelAngle && dc.curvature > best_curvature))
-      best_angle = cw, best_curvature = dc.curvature, best = c;
+// The half-arcs leaving one node in counter-clockwise order. Departures whose pseudo-angles agree
+// within tolerance::kParallelAngle (chained: a run of such gaps is one group, so the grouping is
+// the same whoever asks) leave in the same direction as far as rounding can tell: of those, the
+// one bending more to the left lies at larger angles next to the node, and at equal curvature
+// (two lines, or two equal circles) the directions decide, compared by the sign of their cross
+// product (the pseudo-angles round away the difference near their wrap). One order per node, from
+// which every continuation there is read, makes the continuations a permutation of the half-arcs
+// however many departures are tied: choosing pairwise with a tolerance is not transitive (issue
+// 11: nearly parallel lines meeting far away, departures 4e-16 apart at equal curvature, gave two
+// half-arcs the same successor and lost their faces).
+void counter_clockwise(const Diagram& d, const TracingGeometry& geometry, std::span<const int> out,
+                       std::vector<int>& order) {
+  order.assign(out.begin(), out.end());
+  const auto& dep = geometry.depart;
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    return dep[a].angle != dep[b].angle ? dep[a].angle < dep[b].angle : a < b;
+  });
+  const std::size_t n = order.size();
+  if (n < 2) return;
+  // The gap before position i, cyclically (pseudo-angles lie in [0, kPseudoTurn]; the order is
+  // ascending but for one wrap).
+  auto gap = [&](std::size_t i) {
+    const double g = dep[order[i]].angle - dep[order[(i + n - 1) % n]].angle;
+    return g < 0 ? g + kPseudoTurn : g;
+  };
+  // Start at a clear gap, so that no group straddles the wrap from kPseudoTurn to 0.
+  std::size_t cut = 0;
+  while (cut < n && gap(cut) <= tolerance::kParallelAngle) ++cut;
+  if (cut == n) cut = 0;  // every departure in one direction: one group
+  std::rotate(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(cut), order.end());
+  auto direction = [&](int h) {
+    const Arc& arc = d.arcs[h / 2];
+    return departure_vector(arc, d.nodes[h % 2 == 0 ? arc.from : arc.to], h % 2 == 0);
+  };
+  for (std::size_t b = 0; b < n;) {
+    std::size_t e = b + 1;
+    while (e < n && gap(e) <= tolerance::kParallelAngle) ++e;
+    if (e - b > 1)
+      std::sort(order.begin() + static_cast<std::ptrdiff_t>(b), order.begin() + static_cast<std::ptrdiff_t>(e),
+                [&](int x, int y) {
+                  if (dep[x].curvature != dep[y].curvature) return dep[x].curvature < dep[y].curvature;
+                  const Point u = direction(x), v = direction(y);
+                  const double cross = u.x * v.y - u.y * v.x;  // > 0: y lies counter-clockwise of x
+                  return cross != 0 ? cross > 0 : x < y;
+                });
+    b = e;
   }
-  return best < 0 ? h ^ 1 : best;  // none: a dangling end, come back along the same arc
+}
+
+// The continuation of half-arc h at the node where it ends, among the outgoing half-arcs `out`
+// there that `eligible` admits: the face is on the left, so it is the first outgoing arc
+// clockwise from the reversed incoming direction, the departure of the twin h ^ 1.
+template <class Eligible>
+int turn_at(const Diagram& d, const TracingGeometry& geometry, std::span<const int> out, int h, Eligible&& eligible) {
+  std::vector<int> around(out.begin(), out.end());
+  if (std::find(around.begin(), around.end(), h ^ 1) == around.end()) around.push_back(h ^ 1);
+  std::vector<int> order;
+  counter_clockwise(d, geometry, around, order);
+  const std::size_t n = order.size();
+  const std::size_t back = std::find(order.begin(), order.end(), h ^ 1) - order.begin();
+  for (std::size_t k = 1; k < n; ++k) {
+    const int c = order[(back + n - k) % n];
+    if (eligible(c)) return c;
+  }
+  return h ^ 1;  // none: a dangling end, come back along the same arc
 }
 
 int next_of(const Diagram& d, bool by_sites, const TracingGeometry& geometry, const Outgoing& outgoing, int h) {
@@ -105,7 +143,7 @@ int next_of(const Diagram& d, bool by_sites, const TracingGeometry& geometry, co
       best = c;
     }
   if (count <= 1) return best;
-  return turn_at(geometry, outgoing.at(hi.end), h, [&](int c) { return label(d, by_sites, c) == label(d, by_sites, h); });
+  return turn_at(d, geometry, outgoing.at(hi.end), h, [&](int c) { return label(d, by_sites, c) == label(d, by_sites, h); });
 }
 
 // A node whose degree is not three or where two arcs are tangent.
@@ -140,9 +178,13 @@ LargeVector<int> continuations(const Diagram& d, bool by_sites, const TracingGeo
   const std::size_t nodes = d.nodes.size();
   if (index) index->degenerate_node.resize(nodes);
   parallel_chunks(nodes, worker_count(nodes), [&](std::size_t b, std::size_t e, int) {
+    std::vector<int> order;  // reused from node to node
     for (std::size_t v = b; v < e; ++v) {
       const auto out = outgoing.at(static_cast<int>(v));
-      for (int c : out) next_half[c ^ 1] = turn_at(geometry, out, c ^ 1, [](int) { return true; });
+      // Each arriving half-arc continues along the departure just clockwise of its twin's.
+      counter_clockwise(d, geometry, out, order);
+      for (std::size_t k = 0; k < order.size(); ++k)
+        next_half[order[k] ^ 1] = order[(k + order.size() - 1) % order.size()];
       if (!index) continue;
       index->degenerate_node[v] = degenerate(geometry, out);
     }

@@ -92,6 +92,23 @@ inline double ccw_distance(double a, double b) {
 
 // ---- Per-arc geometry (tracing_geometry.cpp) ----
 
+// The direction of travel of half-arc h where it leaves its start node (not normalized): a line's
+// direction, or a circle's radius at the node turned by +90° (counter-clockwise travel) or -90°.
+// Read afresh from the arc and its node where pseudo-angles tie (continuations.cpp): near the
+// wrap of the pseudo-angle a direction just below +x rounds to kPseudoTurn itself.
+inline Point departure_vector(const Arc& arc, const Node& start, bool forward) {
+  Point v;
+  if (const Circle* c = std::get_if<Circle>(&arc.curve)) {
+    const double ax = start.x - c->cx, ay = start.y - c->cy;
+    v = arc.ccw ? Point{-ay, ax} : Point{ay, -ax};
+  } else {
+    const Line& l = std::get<Line>(arc.curve);
+    v = {l.dx, l.dy};
+  }
+  return forward ? v : Point{-v.x, -v.y};
+}
+
+
 // Boxes kept per arc in single precision, rounded outward (half the memory of doubles; a box only
 // preselects). Coordinates beyond float range become infinite: such a box is treated as unbounded.
 using FloatBox = std::array<float, 4>;

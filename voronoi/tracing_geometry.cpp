@@ -45,12 +45,9 @@ TracingGeometry tracing_geometry(const Diagram& d, bool with_boxes) {
       if (const Circle* c = std::get_if<Circle>(&arc.curve)) {
         const double sense = arc.ccw ? 1.0 : -1.0;
         if (arc.from != kNone) {
-          const double ax = from.x - c->cx, ay = from.y - c->cy;
-          const double ex = to.x - c->cx, ey = to.y - c->cy;
-          // Forward travel at the start: the radius turned by +90° (counter-clockwise arcs);
-          // backward travel at the end: the reverse of forward travel there.
-          g.depart[2 * a] = {pseudo_angle(sense * -ay, sense * ax), sense / c->r};
-          g.depart[2 * a + 1] = {pseudo_angle(-sense * -ey, -sense * ex), -sense / c->r};
+          const Point f = departure_vector(arc, from, true), b = departure_vector(arc, to, false);
+          g.depart[2 * a] = {pseudo_angle(f.x, f.y), sense / c->r};
+          g.depart[2 * a + 1] = {pseudo_angle(b.x, b.y), -sense / c->r};
         }
         // The extent as every reader of arcs sees it (core/arc_sweep.h: the same swept_angle).
         double sweep = kTwoPi;
