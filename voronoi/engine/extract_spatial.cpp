@@ -65,6 +65,7 @@ class SpatialExtractor {
   std::vector<int> uf_;             // union-find: cells sharing one power vertex on the paraboloid
   std::vector<int> vertex_node_;    // node id of a zero vertex, by union-find root
   std::vector<std::array<int, 3>> node_facet_;  // per root node: the sites of its facet
+  std::vector<AlongLine> node_root_;            // per root node: which root of its facet's line
   int workers_ = 1;
 
   static int local_edge(int i, int j) {
@@ -219,6 +220,7 @@ class SpatialExtractor {
     }
     out_.nodes.resize(next);
     node_facet_.resize(next);
+    node_root_.resize(next);
     const int node_workers = worker_count(jobs.size());
     std::vector<std::size_t> exact_nodes(node_workers, 0);
     parallel_chunks(jobs.size(), node_workers, [&](std::size_t begin, std::size_t end, int w) {
@@ -233,8 +235,11 @@ class SpatialExtractor {
 
   // Facets whose lifted sites are coplanar and co-circular share one power line, so each of its
   // crossings with the paraboloid is found once per facet. Candidates are nearby root nodes; they
-  // are merged only when exact predicates confirm the shared line.
-  bool same_power_line(const std::array<int, 3>& a, const std::array<int, 3>& b) const {
+  // are merged only when exact predicates confirm the shared line and the same one of its two
+  // crossings (they may be closer than rounding: internally tangent bisectors moved by an ulp).
+  bool same_crossing(int i, int j) const {
+    const std::array<int, 3>& a = node_facet_[i];
+    const std::array<int, 3>& b = node_facet_[j];
     auto raw = [&](int s) {
       return RawPoint(sites_[s].x, sites_[s].y, sites_[s].weight);
     };
@@ -243,7 +248,8 @@ class SpatialExtractor {
       if (lifted::orientation(raw(a[0]), raw(a[1]), raw(a[2]), raw(t)) != CGAL::ZERO) return false;
       if (lifted::power_side(raw(a[0]), raw(a[1]), raw(a[2]), raw(t)) != CGAL::ZERO) return false;
     }
-    return true;
+    return same_root({raw(a[0]), raw(a[1]), raw(a[2])}, node_root_[i], {raw(b[0]), raw(b[1]), raw(b[2])},
+                     node_root_[j]);
   }
 
   void merge_shared_line_nodes() {
@@ -280,7 +286,7 @@ class SpatialExtractor {
         if (q.x - p.x > cell) break;
         if (std::fabs(q.y - p.y) > cell) continue;
         if (node_facet_[j] == node_facet_[i]) continue;  // two crossings of one line
-        if (find(j) != find(i) && same_power_line(node_facet_[j], node_facet_[i])) {
+        if (find(j) != find(i) && same_crossing(i, j)) {
           parent[find(i)] = find(j);
           merged = true;
         }
@@ -308,9 +314,11 @@ class SpatialExtractor {
     const RawPoint away = c_finite ? c->vertex(f)->point().point() : n->vertex(n->index(c))->point().point();
     const int sigma = travel_sign(raw, away, c_finite);
     bool exact = false;
-    out_.nodes[node] = triple_node(raw, wanted_root(p, r, sigma), extent_, &exact);
+    const AlongLine which = wanted_root(p, r, sigma);
+    out_.nodes[node] = triple_node(raw, which, extent_, &exact);
     exact_nodes += exact;
     node_facet_[node] = tri;
+    node_root_[node] = which;
   }
 
   int vertex_zero_node(int cell) {

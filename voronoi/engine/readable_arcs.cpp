@@ -17,6 +17,16 @@ bool within_rounding(const Node& p, const Node& q, double extent) {
   return std::hypot(q.x - p.x, q.y - p.y) <= allowed_off(extent, magnitude);
 }
 
+// How a reader takes a circle arc's sweep: the turn from its first node to its last in the arc's
+// sense, in [0, 2π).
+double read_turn(const Circle& c, bool ccw, const Node& p, const Node& q) {
+  const double sense = ccw ? 1.0 : -1.0;
+  double turn = std::remainder(sense * (std::atan2(q.y - c.cy, q.x - c.cx) - std::atan2(p.y - c.cy, p.x - c.cx)),
+                               2 * M_PI);
+  if (turn < 0) turn += 2 * M_PI;
+  return turn;
+}
+
 }  // namespace
 
 bool ends_within_rounding(const Arc& a, const std::vector<Node>& nodes, const std::vector<Site>& sites,
@@ -54,11 +64,8 @@ ArcMend arc_mend(const Arc& a, const std::vector<Node>& nodes, const std::vector
     near_full = false;
   else
     return ArcMend::kUnknown;
-  // How a reader takes the sweep: the turn from p to q in the arc's sense, a zero turn read as full.
-  const double sense = a.ccw ? 1.0 : -1.0;
-  double turn = std::remainder(sense * (std::atan2(q.y - c->cy, q.x - c->cx) - std::atan2(p.y - c->cy, p.x - c->cx)),
-                               2 * M_PI);
-  if (turn < 0) turn += 2 * M_PI;
+  // How a reader takes the sweep, a zero turn read as full.
+  const double turn = read_turn(*c, a.ccw, p, q);
   const bool reads_full = turn == 0 || turn > M_PI;
   if (near_full == reads_full && turn != 0) return ArcMend::kNone;
   return near_full ? ArcMend::kLoop : ArcMend::kDrop;
@@ -83,14 +90,23 @@ void apply_mends(Diagram& d, const std::vector<ArcMend>& mends) {
     any = true;
   }
   if (!any) return;
+  // An arc not mended itself whose ends were merged through others' mends has ends farther apart
+  // than rounding, so it reads correctly from them: a near-full one is kept as a loop, a short one
+  // (rounding-sized, or a line segment) dropped.
+  auto near_full = [&](const Arc& a) {
+    const Circle* c = std::get_if<Circle>(&a.curve);
+    return c && read_turn(*c, a.ccw, d.nodes[a.from], d.nodes[a.to]) > M_PI;
+  };
   std::vector<Arc> kept;
   kept.reserve(d.arcs.size());
   for (std::size_t k = 0; k < d.arcs.size(); ++k) {
     Arc a = d.arcs[k];
     const bool loop = a.from == a.to;
+    const bool keep_as_loop = mends[k] == ArcMend::kLoop || (mends[k] == ArcMend::kNone && !loop && a.from != kNone &&
+                                                             a.to != kNone && near_full(a));
     if (a.from != kNone) a.from = find(a.from);
     if (a.to != kNone) a.to = find(a.to);
-    if (a.from != kNone && a.from == a.to && !loop && mends[k] != ArcMend::kLoop) continue;
+    if (a.from != kNone && a.from == a.to && !loop && !keep_as_loop) continue;
     kept.push_back(a);
   }
   d.arcs.swap(kept);

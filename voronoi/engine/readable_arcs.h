@@ -41,8 +41,9 @@ ArcMend arc_mend(const Arc& a, const std::vector<Node>& nodes, const std::vector
                  const std::vector<int>& zeros, const std::vector<RawPoint>& link, double extent);
 
 // Applies the mends (one per arc, kNone for most) to d: merges the nodes of every mended arc,
-// drops kDrop arcs and any other arc left between merged nodes (it was tiny too), keeps kLoop
-// arcs as loops. Throws EngineFailure on kUnknown.
+// drops kDrop arcs, keeps kLoop arcs as loops. Any other arc left between merged nodes reads
+// correctly from its own (unmerged) nodes: kept as a loop if that reading is more than half its
+// circle, else dropped (it was tiny too). Throws EngineFailure on kUnknown.
 void apply_mends(Diagram& d, const std::vector<ArcMend>& mends);
 
 }  // namespace covmap::voronoi::engine

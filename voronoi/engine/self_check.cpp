@@ -109,6 +109,18 @@ void self_check(const Diagram& d) {
       if (along < -allowed_off(extent, magnitude)) fail(d, a, "a line arc runs against its direction");
     }
   }
+  // Every valid site owns a neighbourhood of itself (coincident sites are refused), so with two or
+  // more sites each one bounds some arc; a site without any has lost its whole region.
+  if (d.sites.size() > 1) {
+    std::vector<bool> bounds(d.sites.size(), false);
+    for (const Arc& a : d.arcs)
+      for (int s : {a.left_site, a.right_site})
+        if (s >= 0) bounds[s] = true;
+    for (std::size_t s = 0; s < d.sites.size(); ++s)
+      if (!bounds[s])
+        throw EngineFailure("the engine's self-check rejected its own diagram: site " + std::to_string(s) + " ('" +
+                            d.sites[s].id + "') bounds no arc, so its region was lost");
+  }
   // The arcs of each circle, in walk order, and the gaps between them must turn around it once.
   for (std::size_t begin = 0, end = 0; begin < d.arcs.size(); begin = end) {
     end = pair_run_end(d, begin);

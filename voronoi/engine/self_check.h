@@ -1,6 +1,7 @@
 // The engine's own structural check of what it is about to return, cheap enough to run always.
 //
-// Contract: self_check(d) returns normally when every node is finite, every arc end lies on its
+// Contract: self_check(d) returns normally when every site bounds some arc (with two or more
+// sites: each owns a neighbourhood of itself), every node is finite, every arc end lies on its
 // arc's curve (tolerance::kSelfCheckOnCurve of the sites' extent, plus kSelfCheckUlps of the
 // magnitudes involved: the checker in check/ allows more), every bounded line arc runs along its
 // direction (to within that allowance: split nodes may round an ulp out of order), and the arcs

@@ -104,6 +104,19 @@ Node construct(Terms&& terms, Construct&& node_from, double ox, double oy, doubl
   return node_from(exact_terms<K>(terms));
 }
 
+bool equal_weights(const std::array<RawPoint, 3>& tri) {
+  return tri[1].z() == tri[0].z() && tri[2].z() == tri[0].z();
+}
+
+// The reference equation: the larger |Δw_m²| (never 0 unless all weights are equal, and never the
+// line bisector of two equal weights, on which F_m vanishes identically along the line).
+int reference_site(const std::array<RawPoint, 3>& tri) {
+  const double ow = tri[0].z();
+  const double d1 = std::fabs((tri[1].z() - ow) * (tri[1].z() + ow));
+  const double d2 = std::fabs((tri[2].z() - ow) * (tri[2].z() + ow));
+  return d1 >= d2 ? 0 : 1;
+}
+
 }  // namespace
 
 AlongLine wanted_root(const EdgePattern& p, int r, int sigma) {
@@ -131,17 +144,25 @@ int travel_sign_planar(const std::array<RawPoint, 3>& tri) {
   return g == CGAL::NEGATIVE ? -1 : 1;
 }
 
+bool same_root(const std::array<RawPoint, 3>& a, AlongLine wa, const std::array<RawPoint, 3>& b, AlongLine wb) {
+  if (equal_weights(a) || equal_weights(b)) return true;
+  const CGAL::Sign disc = filtered_sign([&](auto tag) { return coefficients<decltype(tag)>(a, reference_site(a)).disc; });
+  if (disc == CGAL::ZERO) return true;
+  const CGAL::Sign along = filtered_sign([&](auto tag) {
+    using NT = decltype(tag);
+    const auto na = coefficients<NT>(a, 0), nb = coefficients<NT>(b, 0);
+    return na.nx * nb.nx + na.ny * nb.ny;
+  });
+  return (wa == wb) == (along == CGAL::POSITIVE);
+}
+
 Node triple_node(const std::array<RawPoint, 3>& tri, AlongLine which, double extent, bool* exact) {
-  const double ox = tri[0].x(), oy = tri[0].y(), ow = tri[0].z();
-  if (tri[1].z() == ow && tri[2].z() == ow)
+  const double ox = tri[0].x(), oy = tri[0].y();
+  if (equal_weights(tri))
     return construct<3>([&](auto tag) { return circumcentre_terms<decltype(tag)>(tri); },
                         [&](const std::array<double, 3>& t) { return Node{ox + t[0] / t[2], oy + t[1] / t[2]}; },
                         ox, oy, extent, exact);
-  // The reference equation: the larger |Δw_m²| (never 0 here, and never the line bisector of two
-  // equal weights, on which F_m vanishes identically along the line).
-  const double d1 = std::fabs((tri[1].z() - ow) * (tri[1].z() + ow));
-  const double d2 = std::fabs((tri[2].z() - ow) * (tri[2].z() + ow));
-  const int m = d1 >= d2 ? 0 : 1;
+  const int m = reference_site(tri);
   const auto terms = [&](auto tag) {
     const auto k = coefficients<decltype(tag)>(tri, m);
     return std::array{k.nx, k.ny, k.h, k.a, k.B, k.C, k.disc};

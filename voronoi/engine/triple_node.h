@@ -44,6 +44,15 @@ int travel_sign(const std::array<RawPoint, 3>& tri, const RawPoint& away, bool l
 // The same for the planar extractor, whose power lines are travelled along the lifted normal.
 int travel_sign_planar(const std::array<RawPoint, 3>& tri);
 
+// Two triples whose power lines are one line (coplanar and co-circular lifted sites: the caller
+// has checked this exactly) cross the paraboloid in the same two points; whether root `wa` of `a`
+// and root `wb` of `b` are one point. Each triple orders its roots along its own perp(n), so this
+// is the exact sign of n_a·n_b, unless the line is tangent (both roots one point) or a triple has
+// equal weights (its one node, the circumcentre). Nodes of the two roots of one line can be closer
+// than any rounding (internally tangent bisector circles moved by an ulp), so proximity alone
+// must never pair them.
+bool same_root(const std::array<RawPoint, 3>& a, AlongLine wa, const std::array<RawPoint, 3>& b, AlongLine wb);
+
 // The node of `tri` at root `which` (in the coordinates of `tri`, whose bounding-box diagonal is
 // `extent`). `exact` (optional) is set when the coefficients needed the exact stage.
 Node triple_node(const std::array<RawPoint, 3>& tri, AlongLine which, double extent, bool* exact = nullptr);
