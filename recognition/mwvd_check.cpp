@@ -7,10 +7,16 @@
 #include <cmath>
 
 #include "recognition/recognize_stages.h"
+#include "recognition/site_spread.h"
 #include "voronoi/clip.h"
 #include "voronoi/engine.h"
 
 namespace covmap::recognition {
+
+double arc_site_spread(const Arc& arc, Point centre, double scale, Point line_read_at) {
+  if (arc.frame || !(scale > 0)) return 1.0;
+  return std::max(1.0, mwvd::stated_size(arc, centre, line_read_at) / scale);
+}
 
 namespace mwvd {
 
@@ -24,20 +30,17 @@ std::vector<ArcSites> arc_sites(const Diagram& g, const std::vector<int>& face_s
 
 std::vector<double> site_spreads(const Diagram& g, const std::vector<ArcSites>& labels, std::size_t sites, Point centre,
                                  double scale) {
-  // A site is the mirror of its neighbours in its arcs; an arc whose numbers have size S (in the
-  // input's frame) states it to about τ·S, and its best-stated arc fixes it.
-  std::vector<double> best(sites, INFINITY);
+  // Its best-stated arc fixes a site (site_spread.h).
+  std::vector<double> spread(sites, INFINITY);
   for (std::size_t a = 0; a < g.arcs.size(); ++a) {
-    const Arc& arc = g.arcs[a];
-    if (arc.frame) continue;
-    const Line* line = std::get_if<Line>(&arc.curve);
-    const double size = stated_size(arc, centre, line ? Point{line->x, line->y} : centre);  // lines: no lever
+    if (g.arcs[a].frame) continue;
+    const Line* line = std::get_if<Line>(&g.arcs[a].curve);  // the input's numbers: no lever
+    const double s = arc_site_spread(g.arcs[a], centre, scale, line ? Point{line->x, line->y} : centre);
     for (int k : {labels[a].left, labels[a].right})
-      if (k != kNone) best[k] = std::min(best[k], size);
+      if (k != kNone) spread[k] = std::min(spread[k], s);
   }
-  std::vector<double> spread(sites, 1.0);
-  for (std::size_t k = 0; k < sites; ++k)
-    if (std::isfinite(best[k]) && scale > 0) spread[k] = std::max(1.0, best[k] / scale);
+  for (double& s : spread)
+    if (!std::isfinite(s)) s = 1.0;
   return spread;
 }
 

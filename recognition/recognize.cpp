@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "recognition/recognize_stages.h"
+#include "recognition/site_spread.h"
 
 namespace covmap::recognition {
 namespace {
@@ -93,6 +94,8 @@ Reconstruction recognize_in_frame(Reconstruction out, const InputScale& in, cons
   std::vector<Reconstruction> solutions;
   std::optional<ArcVerification> closest;
   PropagationBuffers buffers(static_cast<int>(g.faces.size()));
+  const LargeVector<double> spread =
+      face_spreads(g, face_index.face_of_half, in.extent.centre(), in.scale);
   for (const mobius::Complex& p : candidates.points) {
     propagate(traced, at_degenerate_node, start.face, p, buffers);
     const SolveOrder order(buffers.queue, g.faces.size());
@@ -104,7 +107,7 @@ Reconstruction recognize_in_frame(Reconstruction out, const InputScale& in, cons
       continue;
     }
     solve_weights(traced, order, buffers.site);
-    solutions.push_back(collect_sites(buffers.site, in.tol, options.weight_snap));
+    solutions.push_back(collect_sites(traced, buffers.site, spread, options.weight_snap));
     solutions.back().residuals = std::move(verified.residuals);
     out.timings.sites += timer.lap();
   }

@@ -256,8 +256,12 @@ void solve_positions(const TracedGraph& t, const SolveOrder& order, const LargeV
 // accumulate along the tree.
 void solve_weights(const TracedGraph& t, const SolveOrder& order, LargeVector<FaceSite>& site);
 
-// The reconstruction from one site per face (sites, face_site).
-Reconstruction collect_sites(const LargeVector<FaceSite>& site, double tol, double weight_snap);
+// The reconstruction from one site per face (sites, face_site). spread: per face, how well its
+// arcs state its site (face_spreads, site_spread.h); faces whose sites agree within t.tol share
+// one site, and so does an orphan face with the nearest at least as well stated within t.tol times
+// its spread (weights within t.relative times it); a site is placed by its best-stated face.
+Reconstruction collect_sites(const TracedGraph& t, const LargeVector<FaceSite>& site, const LargeVector<double>& spread,
+                             double weight_snap);
 
 // The input's sites and arc labels (input_sites.h), before prepare_input takes them off; nullopt
 // when the input carries no sites.

@@ -1,17 +1,27 @@
 // Site collection in recognize(): the reconstruction from one site per face. Weights equal up to
 // rounding are made equal (see RecognitionOptions::weight_snap), faces whose sites coincide within
 // `tol` (orphans) share one site, and weights are normalised to a largest of 1. Sites are numbered
-// by their first face.
+// by their first face. A face stated only by huge circles (an orphan 10¹⁰ extents out: nearly
+// equal weights) fixes its site only to tol times its spread (site_spread.h); when it is an orphan
+// it joins the nearest face at least as well stated within that, and the site is placed by the
+// group's best-stated face.
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <thread>
 #include <utility>
 
 #include "core/parallel.h"
+#include "mobius/bisector_relation.h"
 #include "recognition/recognize_stages.h"
+#include "recognition/site_spread.h"
+#include "voronoi/faces.h"
 
-namespace covmap::recognition::stages {
+namespace covmap::recognition {
 namespace {
+
+using stages::FaceSite;
+using stages::TracedGraph;
 
 // A site's position keyed for the sweep in x.
 struct Keyed {
@@ -69,9 +79,77 @@ LargeVector<int> earliest_same_site(const LargeVector<Keyed>& by_x, int faces, d
   return same_as;
 }
 
+// The root of face f's group (groups: per face, an earlier face of its group or itself), with the
+// path compressed; a group's root is its earliest face.
+int group_of(LargeVector<int>& group, int f) {
+  int root = f;
+  while (group[root] != root) root = group[root];
+  while (group[f] != root) f = std::exchange(group[f], root);
+  return root;
+}
+
+// Whether face f of g contains p: an odd number of its boundary cycles around p, or an even one
+// for a face without outer cycle (the unbounded face of holes only: not bounded, and no cycle
+// through infinity).
+bool face_contains(const Diagram& g, int f, Point p) {
+  const FaceCycles cycles = face_cycles(g, f);
+  if (cycles.size() == 0) return true;
+  bool outer = g.faces[f].bounded;
+  for (const HalfArc& h : cycles.front()) outer = outer || g.arcs[h.arc].from == kNone || g.arcs[h.arc].to == kNone;
+  bool odd = false;
+  for (const auto cycle : cycles) odd = odd != voronoi::cycle_contains(g, cycle, p);
+  return outer ? odd : !odd;
+}
+
+// The faces stated less well than tol (spread > 1, rare: far faces) that are orphans — every
+// site lies in its own region, so a face that does not contain its site is a piece of another
+// face's region — join, each, the nearest face at least as well stated whose site lies within
+// tol·spread and whose weight agrees to relative·spread: one link each, so such a face never joins
+// two distinct sites into one. The window in x is found by bisection; only far faces pay for it.
+void join_far_orphans(const TracedGraph& t, const LargeVector<Keyed>& by_x, const LargeVector<double>& spread,
+                      const LargeVector<double>& weight, LargeVector<int>& group) {
+  for (const Keyed& p : by_x) {
+    const double s = spread[p.face];
+    if (!(s > 1) || face_contains(t.g, p.face, {p.x, p.y})) continue;
+    const double reach = t.tol * s;
+    auto it = std::lower_bound(by_x.begin(), by_x.end(), Keyed{p.x - reach, 0, -1});
+    int best = kNone;
+    double best_d2 = INFINITY;
+    for (; it != by_x.end() && it->x - p.x <= reach; ++it) {
+      const int f = it->face;
+      if (f == p.face || spread[f] > s) continue;
+      const double d2 = (it->x - p.x) * (it->x - p.x) + (it->y - p.y) * (it->y - p.y);
+      const bool weights_agree = std::abs(weight[f] - weight[p.face]) <= t.relative * s * std::max(weight[f], weight[p.face]);
+      if (d2 <= reach * reach && weights_agree && (d2 < best_d2 || (d2 == best_d2 && f < best))) best = f, best_d2 = d2;
+    }
+    if (best == kNone) continue;
+    const int a = group_of(group, p.face), b = group_of(group, best);
+    group[std::max(a, b)] = std::min(a, b);
+  }
+}
+
 }  // namespace
 
-Reconstruction collect_sites(const LargeVector<FaceSite>& site, double tol, double weight_snap) {
+LargeVector<double> face_spreads(const Diagram& g, const LargeVector<int>& face_of_half, Point centre, double scale) {
+  LargeVector<double> spread(g.faces.size(), INFINITY);
+  for (std::size_t a = 0; a < g.arcs.size(); ++a) {
+    if (g.arcs[a].frame) continue;
+    const Arc& arc = g.arcs[a];
+    const mobius::ArcBisector b = mobius::arc_bisector(arc, g.nodes);
+    const double s = arc_site_spread(arc, centre, scale, {b.v.real(), b.v.imag()});
+    for (int f : {face_of_half[2 * a], face_of_half[2 * a + 1]})
+      if (f != kNone) spread[f] = std::min(spread[f], s);
+  }
+  for (double& s : spread)
+    if (!std::isfinite(s)) s = 1.0;
+  return spread;
+}
+
+namespace stages {
+
+Reconstruction collect_sites(const TracedGraph& t, const LargeVector<FaceSite>& site, const LargeVector<double>& spread,
+                             double weight_snap) {
+  const double tol = t.tol;
   const int faces = static_cast<int>(site.size());
   // The two orders are independent: one worker each.
   LargeVector<double> weight(faces, 0.0);
@@ -84,7 +162,10 @@ Reconstruction collect_sites(const LargeVector<FaceSite>& site, double tol, doub
     snap_weights(site, weight_snap, weight);
     sort_by_x(site, by_x);
   }
-  const LargeVector<int> same_as = earliest_same_site(by_x, faces, tol);
+  LargeVector<int> group = earliest_same_site(by_x, faces, tol);
+  for (int f = 0; f < faces; ++f)
+    if (group[f] == kNone) group[f] = f;
+  join_far_orphans(t, by_x, spread, weight, group);
   double wmax = 0;
   for (int f = 0; f < faces; ++f) wmax = std::max(wmax, weight[f]);
   Reconstruction r;
@@ -93,26 +174,29 @@ Reconstruction collect_sites(const LargeVector<FaceSite>& site, double tol, doub
   advise_huge_pages(r.sites.data(), r.sites.capacity() * sizeof(Site));
   advise_huge_pages(r.face_site.data(), r.face_site.capacity() * sizeof(int));
   r.face_site.assign(faces, kNone);
-  LargeVector<int> first_face;  // per site, the face it is numbered by
-  first_face.reserve(by_x.size());
+  LargeVector<int> placed_by;  // per site, its best-stated face (the earliest of those)
+  placed_by.reserve(by_x.size());
   for (int f = 0; f < faces; ++f) {
     if (!site[f].assigned) continue;
-    const int first = same_as[f];
-    if (first != f && r.face_site[first] != kNone) {
-      r.face_site[f] = r.face_site[first];
+    const int first = group_of(group, f);
+    if (first != f) {
+      const int k = r.face_site[first];
+      r.face_site[f] = k;
+      if (spread[f] < spread[placed_by[k]]) placed_by[k] = f;
       continue;
     }
-    r.face_site[f] = static_cast<int>(first_face.size());
-    first_face.push_back(f);
+    r.face_site[f] = static_cast<int>(placed_by.size());
+    placed_by.push_back(f);
   }
-  r.sites.resize(first_face.size());
-  parallel_chunks(first_face.size(), worker_count(first_face.size()), [&](std::size_t b, std::size_t e, int) {
+  r.sites.resize(placed_by.size());
+  parallel_chunks(placed_by.size(), worker_count(placed_by.size()), [&](std::size_t b, std::size_t e, int) {
     for (std::size_t k = b; k < e; ++k) {
-      const int f = first_face[k];
+      const int f = placed_by[k];
       r.sites[k] = {"s" + std::to_string(k), site[f].position.real(), site[f].position.imag(), weight[f] / wmax};
     }
   });
   return r;
 }
 
-}  // namespace covmap::recognition::stages
+}  // namespace stages
+}  // namespace covmap::recognition
