@@ -1,8 +1,9 @@
 // Site collection in recognize(): the reconstruction from one site per face. Weights equal up to
 // rounding are made equal (see RecognitionOptions::weight_snap), faces whose sites coincide within
 // `tol` (orphans) share one site, and weights are normalised to a largest of 1. Sites are numbered
-// by their first face. A face stated only by huge circles (an orphan 10¹⁰ extents out: nearly
-// equal weights) fixes its site only to tol times its spread (site_spread.h); when it is an orphan
+// by their first face. A face stated only by arcs read far out (an orphan 10¹⁰ extents out: nearly
+// equal weights; huge circles, lines mirrored about far nodes) fixes its site only to tol times
+// its spread (site_spread.h); when it is an orphan
 // it joins the nearest face at least as well stated within that, and the site is placed by the
 // group's best-stated face.
 #include <algorithm>
