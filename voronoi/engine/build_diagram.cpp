@@ -1,6 +1,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <sstream>
+#include <string>
 
 #include "voronoi/engine.h"
 #include "voronoi/diagram_edit.h"
@@ -81,6 +83,23 @@ Scaling scaling_for(std::span<const Site> sites) {
   return scaling;
 }
 
+// Why site s (scaled to x, y, w) cannot be scaled exactly: which of its values underflows, and
+// beside which largest value. Typically a coordinate moved off 0 by an ulp (4.9e-324, a denormal),
+// or values spanning more than ~600 orders of magnitude.
+std::string unscalable(const Site& s, double x, double y, double w, const Scaling& scaling) {
+  const auto lost = [](double v, double scaled, int e) { return std::ldexp(scaled, e) != v || (v != 0 && !std::isnormal(scaled)); };
+  std::ostringstream m;
+  m.precision(3);
+  if (lost(s.weight, w, scaling.weight_exponent))
+    m << "its weight " << s.weight << " is too small beside the largest weight (about 2^" << scaling.weight_exponent;
+  else
+    m << "its coordinate " << (lost(s.x, x, scaling.position_exponent) ? s.x : s.y)
+      << " is too small beside the largest coordinate (about 2^" << scaling.position_exponent;
+  m << ") to be represented exactly with it (a denormal number, or values spanning more than ~600 orders of "
+       "magnitude); write 0 if 0 is meant";
+  return m.str();
+}
+
 std::vector<Site> scaled_sites(std::span<const Site> input, const Scaling& scaling) {
   std::vector<Site> sites(input.begin(), input.end());
   std::vector<InvalidSite> problems;
@@ -91,9 +110,7 @@ std::vector<Site> scaled_sites(std::span<const Site> input, const Scaling& scali
     const double w = std::ldexp(s.weight, -scaling.weight_exponent);
     if (!exact(s.x, x, scaling.position_exponent) || !exact(s.y, y, scaling.position_exponent) ||
         !exact(s.weight, w, scaling.weight_exponent))
-      problems.push_back({static_cast<int>(i), s.id,
-                          "its coordinates or weight are too small beside the largest ones to be represented "
-                          "together (they span more than ~600 orders of magnitude)"});
+      problems.push_back({static_cast<int>(i), s.id, unscalable(s, x, y, w, scaling)});
     s.x = x;
     s.y = y;
     s.weight = w;
