@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/count_argument.h"
 #include "bench/isolated_run.h"
 #include "bench/site_distributions.h"
 #include "voronoi/engine.h"
@@ -45,16 +46,7 @@ struct Plan {
 
 // "1000", "1e6", "100000" -> a count ≥ 1; throws CLI::ValidationError otherwise.
 std::size_t parse_size(const std::string& text) {
-  std::size_t used = 0;
-  double value = 0.0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != text.size() || !(value >= 1.0) || value > 1e9 || value != std::floor(value))
-    throw CLI::ValidationError("--n", "'" + text + "' is not a site count");
-  return static_cast<std::size_t>(value);
+  return covmap::bench::parse_count(text, 1.0, "--n", "a site count");
 }
 
 Plan make_plan(const Options& options) {

@@ -28,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/count_argument.h"
 #include "io/coverage_map_crossings.h"
 #include "io/polygon_check.h"
 
@@ -36,16 +37,7 @@ namespace {
 using covmap::Point;
 
 std::size_t parse_size(const std::string& text) {
-  std::size_t used = 0;
-  double value = 0.0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != text.size() || !(value >= 8.0) || value > 1e9 || value != std::floor(value))
-    throw CLI::ValidationError("--n", "'" + text + "' is not a vertex count (at least 8)");
-  return static_cast<std::size_t>(value);
+  return covmap::bench::parse_count(text, 8.0, "--n", "a vertex count (at least 8)");
 }
 
 std::vector<Point> spiral(std::size_t n) {

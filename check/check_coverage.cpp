@@ -61,7 +61,7 @@ void check_coverage(CheckContext& c) {
   std::vector<double> arc_reach(bisectors.size(), reach);
   for (std::size_t a = 0; a < bisectors.size(); ++a) {
     if (c.d.arcs[a].frame) bisectors[a].reset();
-    if (bisectors[a]) arc_reach[a] = reach + c.tol(representation_magnitude(*bisectors[a])) - c.eps;
+    if (bisectors[a]) arc_reach[a] = reach + c.rounding(representation_magnitude(*bisectors[a]));
   }
   const ArcLocator locator(bisectors, probe_box, arc_reach);
 

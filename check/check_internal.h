@@ -33,8 +33,10 @@ struct CheckContext {
 
   // The tolerance for a comparison whose numbers have magnitude up to `magnitude`: eps plus their
   // rounding (CheckOptions::rounding_ulps).
-  double tol(double magnitude) const {
-    return eps + options.rounding_ulps * std::numeric_limits<double>::epsilon() * magnitude;
+  double tol(double magnitude) const { return eps + rounding(magnitude); }
+  // The rounding alone of numbers of magnitude up to `magnitude`.
+  double rounding(double magnitude) const {
+    return options.rounding_ulps * std::numeric_limits<double>::epsilon() * magnitude;
   }
   static double magnitude(Point p) { return std::max(std::abs(p.x), std::abs(p.y)); }
   // for_each_closer bounds are raised by this relative amount so that a site whose weighted
