@@ -63,7 +63,7 @@ std::variant<SiteRegion, Rejection> free_root_region(const TracedGraph& t, const
   region.face = root_face(g, t.outside);
   if (region.face == kNone) return Rejection{"the graph has no face that could hold a site", std::nullopt};
   region.bounds = pulled_back_bounds(t, region.face);
-  const mobius::FeasibleRegion fr = mobius::feasible_region(region.bounds, mobius::Complex(0.5 * (extent.xmin + extent.xmax), 0.5 * (extent.ymin + extent.ymax)),
+  const mobius::FeasibleRegion fr = mobius::feasible_region(region.bounds, mobius::Complex(extent.centre().x, extent.centre().y),
                                             std::max(2.0 * scale, 1.0));
   if (fr.empty) {
     RecognitionFailure fail;

@@ -45,7 +45,7 @@ mobius::Complex point_to_plane(const GraphFrame& f, double& x, double& y) {
 
 GraphFrame graph_frame(const Box& extent, double scale) {
   GraphFrame f;
-  const mobius::Complex middle(0.5 * (extent.xmin + extent.xmax), 0.5 * (extent.ymin + extent.ymax));
+  const mobius::Complex middle(extent.centre().x, extent.centre().y);
   // Near the origin (within a few extents) a translation would gain nothing and lose exactness.
   if (std::abs(middle) > tolerance::kFrameTranslation * scale) {
     f.origin = middle;

@@ -28,7 +28,8 @@ struct EndOffCurve {
 EndOffCurve end_off_curve(const Diagram& g, int a, int v, const InputScale& in) {
   const Arc& arc = g.arcs[a];
   const double x = g.nodes[v].x, y = g.nodes[v].y;
-  const double cx = 0.5 * (in.extent.xmin + in.extent.xmax), cy = 0.5 * (in.extent.ymin + in.extent.ymax);
+  const Point mid = in.extent.centre();
+  const double cx = mid.x, cy = mid.y;
   double off = 0.0, size = 0.0, magnitude = 0.0;
   if (const auto* c = std::get_if<Circle>(&arc.curve)) {
     off = std::abs(std::hypot(x - c->cx, y - c->cy) - c->r);

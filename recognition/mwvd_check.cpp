@@ -51,7 +51,7 @@ namespace stages {
 void mwvd_check(Reconstruction& out, const InputScale& in, const RecognitionOptions& options) {
   const Diagram& g = out.graph;
   const std::vector<mwvd::ArcSites> labels = mwvd::arc_sites(g, out.face_site);
-  const Point centre{0.5 * (in.extent.xmin + in.extent.xmax), 0.5 * (in.extent.ymin + in.extent.ymax)};
+  const Point centre = in.extent.centre();
   mwvd::Allowance allowance{options.relative_tolerance, in.scale, centre, out.sites,
                             mwvd::site_spreads(g, labels, out.sites.size(), centre, in.scale)};
   for (double sp : allowance.spread) allowance.widest_spread = std::max(allowance.widest_spread, sp);
