@@ -15,6 +15,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
+#include <fstream>
 #include <cmath>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -23,6 +25,7 @@
 
 #include "../tests/recognition/recognition_families.h"
 #include "check/check.h"
+#include "io/diagram_json.h"
 #include "recognition/recognize.h"
 #include "voronoi/engine.h"
 
@@ -47,6 +50,7 @@ int main(int argc, char** argv) {
   int n = 300, seeds = 10;
   double offset = 0.0, scale = 1.0, rotate = 0.0, tolerance = 1e-7, digit_units = 0.0;
   bool json_out = false, no_check = false;
+  std::string dump_dir;
   app.add_option("--family", families, "random, equal, collinear, cocircular, grid")->delimiter(',');
   app.add_option("--perturb", perturbations, "relative perturbations: 0, ulp, 1e-15, ...")->delimiter(',');
   app.add_option("--digits", digits_list, "round the graph to this many significant digits (0: exact)")->delimiter(',');
@@ -60,6 +64,7 @@ int main(int argc, char** argv) {
                  "for rounded graphs: the tolerance is this many units of the last written digit (F·10^-d)");
   app.add_flag("--no-check", no_check, "skip the MWVD check");
   app.add_flag("--json", json_out, "one JSON object per row");
+  app.add_option("--dump", dump_dir, "write each rejected graph here as FAMILY-PERTURB-dDIGITS-sSEED.json (for covmap recognize)");
   CLI11_PARSE(app, argc, argv);
   const rt::Similarity similarity{scale, rotate, offset, offset};
   if (!json_out)
@@ -100,6 +105,16 @@ int main(int argc, char** argv) {
           const auto t0 = std::chrono::steady_clock::now();
           const auto r = covmap::recognition::recognize(std::move(graph), options);
           row.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+          if (!r.bisector_graph || r.voronoi != covmap::recognition::MwvdAnswer::kYes) {
+            if (!dump_dir.empty()) {
+              covmap::Diagram shown = drawn;
+              if (digits > 0) rt::round_graph(shown, digits);
+              std::filesystem::create_directories(dump_dir);
+              std::ofstream out(std::filesystem::path(dump_dir) / (family_name + "-" + perturbation->name() + "-d" +
+                                                                   std::to_string(digits) + "-s" + std::to_string(seed) + ".json"));
+              covmap::io::write_diagram_json(shown, out);
+            }
+          }
           if (!r.bisector_graph) {
             if (row.first_rejection.empty()) row.first_rejection = "seed " + std::to_string(seed) + ": " + r.reason;
             continue;

@@ -37,6 +37,18 @@ ArcBisector arc_bisector(const Arc& arc, const std::vector<Node>& nodes) {
   return b;
 }
 
+ArcBisector arc_bisector(const Arc& arc, const std::vector<Node>& nodes, Complex near) {
+  ArcBisector b = arc_bisector(arc, nodes);
+  auto consider = [&](Complex v) {
+    if (std::norm(v - near) >= std::norm(b.v - near)) return;
+    b.v = v;
+    if (const auto* c = std::get_if<Circle>(&arc.curve)) b.gamma = Complex(c->cx, c->cy) - v;
+  };
+  if (arc.from != kNone && arc.to != kNone) consider(Complex(nodes[arc.to].x, nodes[arc.to].y));
+  if (const auto* l = std::get_if<Line>(&arc.curve)) consider(Complex(l->x, l->y));
+  return b;
+}
+
 WeightedPoint partner_across(const ArcBisector& b, const WeightedPoint& site) {
   const Complex delta = site.position - b.v;
   if (b.line) return {b.v + b.gamma * b.gamma * std::conj(delta), site.weight};

@@ -35,7 +35,14 @@ struct ArcBisector {
   Complex gamma;  // circles: centre - v; lines: unit direction of travel
 };
 
+// Anchored at the arc's first node (its end node for a ray).
 ArcBisector arc_bisector(const Arc& arc, const std::vector<Node>& nodes);
+
+// Anchored at whichever of the arc's nodes — and for a line, its own stated point — lies nearest
+// `near` (the site to be mirrored). The relation's error is a few ulps of |p - v|: a node far from
+// the site costs digits in proportion. Parallel bisectors of nearly collinear equal-weight sites
+// meet ~1e15 extents out, and a mirror anchored at that node was off by 0.1 extents.
+ArcBisector arc_bisector(const Arc& arc, const std::vector<Node>& nodes, Complex near);
 
 WeightedPoint partner_across(const ArcBisector& bisector, const WeightedPoint& site);
 

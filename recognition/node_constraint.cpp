@@ -3,6 +3,7 @@
 // walk around the node through the traced faces, and the exact reading of the fixed set.
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "mobius/node_constraint.h"
 #include "recognition/recognize_stages.h"
@@ -26,26 +27,33 @@ std::optional<Constraint> node_constraint(const TracedGraph& t, int f, int h_out
   const Arc& first = g.arcs[h_out / 2];
   const int v = (h_out % 2 == 0) ? first.from : first.to;
   const mobius::Complex at(g.nodes[v].x, g.nodes[v].y);
-  const int far_end = (h_out % 2 == 0) ? first.to : first.from;
-  double L = far_end != kNone ? std::abs(mobius::Complex(g.nodes[far_end].x, g.nodes[far_end].y) - at) : 0.0;
-  // The neighbourhood's size, but no more than the node's distance from the graph (where the
-  // sites are) plus the graph's scale: an arc of nearly equal weights may run from a node inside
-  // the graph to one 1e10 out, and in a frame that large the graph sits within 1e-8 of the origin,
-  // where the matrix tolerance falls to rounding and a solution circle reads as two points (issue 11).
+  // The half-arcs of the walk around v, and the neighbourhood's size: the longest reach of an arc
+  // at v to its other end. Not the first arc's: a node of degree four split by a perturbation of
+  // 1e-15 has a tiny arc, and in a frame that small the sites sit 1e13 units out, where a solution
+  // circle of ordinary size read as its tangent line (issue 11: grids moved by 1e-15 rejected).
+  std::vector<int> walk;
+  double L = 0.0;
+  for (int h = h_out, face = f;;) {
+    if (h == kNone || g.arcs[h / 2].frame || walk.size() >= 64) return std::nullopt;
+    walk.push_back(h);
+    const Arc& arc = g.arcs[h / 2];
+    const int far_end = (h % 2 == 0) ? arc.to : arc.from;
+    if (far_end != kNone) L = std::max(L, std::abs(mobius::Complex(g.nodes[far_end].x, g.nodes[far_end].y) - at));
+    const int twin = h ^ 1;
+    face = face_of_half[twin];
+    h = next_half[twin];
+    if (face == f && h == h_out) break;
+  }
+  // No more than the node's distance from the graph (where the sites are) plus the graph's scale:
+  // an arc of nearly equal weights may run from a node inside the graph to one 1e10 out, and in a
+  // frame that large the graph sits within 1e-8 of the origin, where the matrix tolerance falls to
+  // rounding and a solution circle reads as two points (issue 11).
   const double reach = scale + t.extent.distance_to({at.real(), at.imag()});
   if (!(L > 0) || L > reach) L = reach;
   const mobius::NodeFrame frame{at, L};
   const double mt = matrix_tolerance(t, at, L);
   mobius::Mobius h_total;
-  int h = h_out, face = f, steps = 0;
-  do {
-    if (h == kNone || g.arcs[h / 2].frame) return std::nullopt;
-    h_total = mobius::then_invert_in(h_total, g.arcs[h / 2], frame);
-    const int twin = h ^ 1;
-    face = face_of_half[twin];
-    h = next_half[twin];
-    if (++steps > 64) return std::nullopt;
-  } while (face != f || h != h_out);
+  for (const int h : walk) h_total = mobius::then_invert_in(h_total, g.arcs[h / 2], frame);
   Constraint c;
   static_cast<mobius::NodeConstraint&>(c) = mobius::exact_fixed_set(h_total, mt);
   // A solution circle through the node whose curvature is at the rounding of the composition

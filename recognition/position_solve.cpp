@@ -40,9 +40,9 @@ LargeVector<ArcRow> arc_rows(const TracedGraph& t, const SolveOrder& order, cons
   for (std::size_t a = 0; a < g.arcs.size(); ++a) {
     const int l = t.face_of_half[2 * a], r = t.face_of_half[2 * a + 1];
     if (g.arcs[a].frame || l == kNone || r == kNone || l == r || order.rank[l] == kNone || order.rank[r] == kNone) continue;
-    const mobius::ArcBisector b = mobius::arc_bisector(g.arcs[a], g.nodes);
-    ArcRow row{order.rank[l], order.rank[r], {}, {}, 1.0};
     const Complex sl = site[l].position;
+    const mobius::ArcBisector b = mobius::arc_bisector(g.arcs[a], g.nodes, sl);
+    ArcRow row{order.rank[l], order.rank[r], {}, {}, 1.0};
     row.e = site[r].position - mobius::partner_across(b, {sl, 1.0}).position;
     if (b.line) {
       row.k = b.gamma * b.gamma;  // reflection in a line of unit direction γ: δM = γ² conj(δs)

@@ -68,7 +68,7 @@ void propagate(const TracedGraph& t, const LargeVector<char>& at_degenerate_node
         const int other = face_of_half[half_id({h.arc, !h.forward})];
         if (other == kNone || reached[other] || g.arcs[h.arc].frame) continue;
         reached[other] = 1;
-        const mobius::WeightedPoint partner = mobius::partner_across(mobius::arc_bisector(g.arcs[h.arc], g.nodes), {here.position, here.weight});
+        const mobius::WeightedPoint partner = mobius::partner_across(mobius::arc_bisector(g.arcs[h.arc], g.nodes, here.position), {here.position, here.weight});
         const mobius::Complex at = at_degenerate_node[other] ? polish(partner.position, face_circle_constraints(t, other), t.tol) : partner.position;
         site[other] = {true, at, partner.weight};
         queue.push_back(other);

@@ -71,7 +71,7 @@ void verify_chunk(const TracedGraph& t, const LargeVector<FaceSite>& site, std::
       continue;
     }
     if (!site[left].assigned || !site[right].assigned) continue;
-    const mobius::ArcBisector bis = mobius::arc_bisector(arc, g.nodes);
+    const mobius::ArcBisector bis = mobius::arc_bisector(arc, g.nodes, site[left].position);
     // The face on the left must hold its site on that side: inside the disk when the arc runs
     // counter-clockwise, on the left of a line; the face on the right the other side.
     const bool left_is_inside = bis.line || arc.ccw;

@@ -67,7 +67,7 @@ ArcSystem arc_system(const TracedGraph& t, const SolveOrder& order, const LargeV
   for (std::size_t a = 0; a < g.arcs.size(); ++a) {
     int l, r;
     if (!usable(a, l, r)) continue;
-    const mobius::ArcBisector b = mobius::arc_bisector(g.arcs[a], g.nodes);
+    const mobius::ArcBisector b = mobius::arc_bisector(g.arcs[a], g.nodes, site[l].position);
     auto [d, omega] = arc_ratio(b, site[l].position, site[r].position);
     // As in the position solve: an arc through a far node is stated only to that distance's rounding.
     const double far = 1.0 + t.extent.distance_to({b.v.real(), b.v.imag()}) / t.scale;

@@ -19,6 +19,7 @@ namespace {
 // The first arc a ray to +x meets.
 struct RayHit {
   double x = INFINITY, ty = 0;  // where, and the y-component of the arc's tangent there
+  double uncertainty = 0;       // of x (Crossing::uncertainty)
   int arc = -1;
   bool ambiguous = false;       // another hit as close (through a node)
 };
@@ -42,9 +43,6 @@ class ArcRays {
                             4 * static_cast<long long>(std::sqrt(static_cast<double>(cells))) + 64);
     }
     stamp_.assign(d.arcs.size(), -1);
-    eps_x_ = nodes_box_.finite()
-                 ? tolerance::kRayTie * std::max(nodes_box_.xmax - nodes_box_.xmin, nodes_box_.ymax - nodes_box_.ymin)
-                 : 0.0;
   }
 
   // No finite extent to grid: every hole goes to containment tests.
@@ -81,7 +79,16 @@ class ArcRays {
     return std::holds_alternative<Line>(d_.arcs[a].curve) && (d_.arcs[a].from == kNone || d_.arcs[a].to == kNone);
   }
 
-  // Crossings of the horizontal line y with arc a (box b): (x, tangent y-component) pairs.
+  // Where the ray meets an arc: x, the y-component of the arc's tangent there, and how far x may
+  // be off — kRayTie of the size of the numbers x is computed from (its own, the ray's height, the
+  // circle's radius or the line's anchor). Local, not the nodes' extent: nearly collinear sites put
+  // nodes 1e10 out, and a tie window of 1e-12 of that skipped an arc 0.03 from a hole of an
+  // extent of 1, placing the hole in the wrong face (issue 11).
+  struct Crossing {
+    double x, ty, uncertainty;
+  };
+
+  // Crossings of the horizontal line y with arc a (box b).
   void crossings(int a, const Box& b, double y) {
     xs_.clear();
     if (!(b.ymin <= y && y <= b.ymax)) return;
@@ -96,11 +103,14 @@ class ArcRays {
         // A full circle has no end where the ray could pass through a node: its start angle
         // is an ordinary point (concentric circles are hit exactly there).
         const bool full = d_.arcs[a].from == kNone;
-        if ((s > p.s0 && s < p.s1) || full) xs_.emplace_back(x, p.tangent(s).y);
+        if ((s > p.s0 && s < p.s1) || full)
+          xs_.push_back({x, p.tangent(s).y, tolerance::kRayTie * (std::abs(x) + std::abs(y) + p.r)});
       }
     } else if (p.uy != 0) {
       const double s = (y - p.oy) / p.uy;
-      if (s > p.s0 && s < p.s1) xs_.emplace_back(p.ox + s * p.ux, p.uy);
+      const double x = p.ox + s * p.ux;
+      if (s > p.s0 && s < p.s1)
+        xs_.push_back({x, p.uy, tolerance::kRayTie * (std::abs(x) + std::abs(y) + std::abs(p.ox) + std::abs(p.oy))});
     }
   }
 
@@ -108,10 +118,11 @@ class ArcRays {
     const Box b = box_of(static_cast<std::size_t>(a));
     if (b.xmax <= right.x) return;  // wholly left of the ray's origin
     crossings(a, b, right.y);
-    for (auto [x, ty] : xs_) {
-      if (x <= right.x + eps_x_) continue;
-      if (std::abs(x - hit.x) <= eps_x_) hit.ambiguous = true;
-      if (x < hit.x) hit.x = x, hit.ty = ty, hit.arc = a, hit.ambiguous = false;
+    const double origin_uncertainty = tolerance::kRayTie * (std::abs(right.x) + std::abs(right.y));
+    for (const Crossing& c : xs_) {
+      if (c.x <= right.x + origin_uncertainty + c.uncertainty) continue;
+      if (std::abs(c.x - hit.x) <= c.uncertainty + hit.uncertainty) hit.ambiguous = true;
+      if (c.x < hit.x) hit = {c.x, c.ty, c.uncertainty, a, false};
     }
   }
 
@@ -123,9 +134,8 @@ class ArcRays {
   std::vector<int> unbounded_arcs_;
   Box nodes_box_;
   BoxGrid arc_grid_;
-  std::vector<std::pair<double, double>> xs_;
+  std::vector<Crossing> xs_;
   LargeVector<int> stamp_;
-  double eps_x_ = 0.0;
 };
 
 // Rightmost point of a hole (x = -∞ when none is finite).

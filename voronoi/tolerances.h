@@ -19,8 +19,8 @@ namespace covmap::voronoi::tolerance {
 inline constexpr double kParallelAngle = 1e-8;
 
 // Face tracing by geometry, placing holes: a hole's containing face is read off the first arc hit
-// by a ray to +x from the hole's rightmost point. Two hits closer than kRayTie times the extent of
-// the nodes are one point (the ray passes through a node: ambiguous), and a hit where the arc's
+// by a ray to +x from the hole's rightmost point. Two hits closer than kRayTie times the size of the
+// numbers they are computed from are one point (the ray passes through a node: ambiguous), and a hit where the arc's
 // tangent has a y-component below kRayTangent grazes it; both fall back to containment tests,
 // which are slower but decide by area, so these only need to exceed rounding.
 inline constexpr double kRayTie = 1e-12;

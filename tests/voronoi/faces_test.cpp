@@ -9,6 +9,7 @@
 #include <cmath>
 #include <random>
 
+#include "canonical_faces.h"
 #include "site_families.h"
 #include "voronoi/engine.h"
 #include "voronoi/faces.h"
@@ -181,23 +182,7 @@ TEST(Faces, NestedRegionsGiveHolesAndOrphans) {
 namespace covmap::voronoi {
 namespace {
 
-// Faces as sorted sets of sorted boundary cycles, to compare tracings that may number them apart.
-std::vector<std::vector<std::vector<std::pair<int, bool>>>> canonical_faces(const Diagram& d) {
-  std::vector<std::vector<std::vector<std::pair<int, bool>>>> out;
-  for (const Face& f : d.faces) {
-    std::vector<std::vector<std::pair<int, bool>>> cycles;
-    for (const auto b : face_cycles(d, f)) {
-      std::vector<std::pair<int, bool>> c;
-      for (const HalfArc& h : b) c.emplace_back(h.arc, h.forward);
-      std::sort(c.begin(), c.end());
-      cycles.push_back(c);
-    }
-    std::sort(cycles.begin(), cycles.end());
-    out.push_back(cycles);
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
+using covmap::testing::canonical_faces;
 
 // Tracing by geometry alone (as for an input graph without sites) must find exactly the faces
 // traced from the site labels: same boundary cycles, as sets of half-arcs.
