@@ -46,40 +46,6 @@ struct ConstraintTest {
   }
 };
 
-// Two solution circles that agree within the tolerance are one circle (computed around two
-// nodes of the same three bisectors, e.g.): their "intersection" would be rounding noise.
-bool same_circle(const mobius::GeneralizedCircle& a, const mobius::GeneralizedCircle& b, const TracedGraph& t) {
-  const double tol = t.tol;
-  if (a.is_line() != b.is_line()) return false;
-  if (a.is_line()) {
-    const mobius::Complex ua = a.B / std::abs(a.B), ub = b.B / std::abs(b.B);
-    const double sine = std::abs(std::imag(std::conj(ua) * ub));
-    const mobius::Complex pa = -a.C * a.B / (2.0 * std::norm(a.B));
-    return sine <= std::max(t.relative, tolerance::kSameDirectionSine) && mobius::distance_to(b, pa) <= t.tol_at(pa);
-  }
-  const auto ca = a.centre(), cb = b.centre();
-  const auto ra = a.radius(), rb = b.radius();
-  if (!(ca && cb && ra && rb)) return false;
-  if (std::max(*ra, *rb) <= t.scale) {
-    const double allowed = tol + t.relative * std::max(*ra, *rb);
-    return std::abs(*ca - *cb) <= allowed && std::abs(*ra - *rb) <= allowed;
-  }
-  // A circle larger than the graph (nearly equal weights: radii ~1e12 over an extent of 100) is
-  // compared where the graph is, at three points of a spread over the graph's scale: its centre
-  // and radius are only good to ulps of the radius, and judging them against `relative` of the
-  // radius took distinct circles for one (issue 11: a face of 30 nearly equal weights became a
-  // one-parameter family and was rejected).
-  const Point middle = t.extent.centre();
-  const mobius::Complex p0 = mobius::nearest_point(a, {middle.x, middle.y});
-  const mobius::Complex normal = a.A * p0 + a.B;
-  if (std::abs(normal) == 0.0) return false;
-  const mobius::Complex along = mobius::Complex(0, 1) * normal / std::abs(normal);
-  for (const mobius::Complex p : {p0, mobius::nearest_point(a, p0 + t.scale * along),
-                                  mobius::nearest_point(a, p0 - t.scale * along)})
-    if (mobius::distance_to(b, p) > t.tol_at(p)) return false;
-  return true;
-}
-
 // Candidates from the solution circles when no node has isolated fixed points: their pairwise
 // intersections, or, when all circles coincide, points around the one circle (a family).
 void circle_candidates(const std::vector<Constraint>& constraints, double scale, ConstraintTest& test,
@@ -124,6 +90,40 @@ void circle_candidates(const std::vector<Constraint>& constraints, double scale,
 }
 
 }  // namespace
+
+// Two solution circles that agree within the tolerance are one circle (computed around two
+// nodes of the same three bisectors, e.g.): their "intersection" would be rounding noise.
+bool same_circle(const mobius::GeneralizedCircle& a, const mobius::GeneralizedCircle& b, const TracedGraph& t) {
+  const double tol = t.tol;
+  if (a.is_line() != b.is_line()) return false;
+  if (a.is_line()) {
+    const mobius::Complex ua = a.B / std::abs(a.B), ub = b.B / std::abs(b.B);
+    const double sine = std::abs(std::imag(std::conj(ua) * ub));
+    const mobius::Complex pa = -a.C * a.B / (2.0 * std::norm(a.B));
+    return sine <= std::max(t.relative, tolerance::kSameDirectionSine) && mobius::distance_to(b, pa) <= t.tol_at(pa);
+  }
+  const auto ca = a.centre(), cb = b.centre();
+  const auto ra = a.radius(), rb = b.radius();
+  if (!(ca && cb && ra && rb)) return false;
+  if (std::max(*ra, *rb) <= t.scale) {
+    const double allowed = tol + t.relative * std::max(*ra, *rb);
+    return std::abs(*ca - *cb) <= allowed && std::abs(*ra - *rb) <= allowed;
+  }
+  // A circle larger than the graph (nearly equal weights: radii ~1e12 over an extent of 100) is
+  // compared where the graph is, at three points of a spread over the graph's scale: its centre
+  // and radius are only good to ulps of the radius, and judging them against `relative` of the
+  // radius took distinct circles for one (issue 11: a face of 30 nearly equal weights became a
+  // one-parameter family and was rejected).
+  const Point middle = t.extent.centre();
+  const mobius::Complex p0 = mobius::nearest_point(a, {middle.x, middle.y});
+  const mobius::Complex normal = a.A * p0 + a.B;
+  if (std::abs(normal) == 0.0) return false;
+  const mobius::Complex along = mobius::Complex(0, 1) * normal / std::abs(normal);
+  for (const mobius::Complex p : {p0, mobius::nearest_point(a, p0 + t.scale * along),
+                                  mobius::nearest_point(a, p0 - t.scale * along)})
+    if (mobius::distance_to(b, p) > t.tol_at(p)) return false;
+  return true;
+}
 
 Candidates start_candidates(const TracedGraph& t, const std::vector<Constraint>& constraints,
                             const std::optional<SiteRegion>& free_root) {

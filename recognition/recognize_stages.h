@@ -197,6 +197,9 @@ StartFace start_face(const TracedGraph& t);
 // No node fixes any site (paper 5, §3): the root's site ranges over a region, or nowhere.
 std::variant<SiteRegion, Rejection> free_root_region(const TracedGraph& t, const Box& extent);
 
+// Two solution circles that agree within the tolerance: one circle.
+bool same_circle(const mobius::GeneralizedCircle& a, const mobius::GeneralizedCircle& b, const TracedGraph& t);
+
 Candidates start_candidates(const TracedGraph& t, const std::vector<Constraint>& constraints,
                             const std::optional<SiteRegion>& free_root);
 
