@@ -6,6 +6,7 @@
 // (hole_placement.cpp).
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -22,6 +23,7 @@ struct RayHit {
   double uncertainty = 0;       // of x (Crossing::uncertainty)
   int arc = -1;
   bool ambiguous = false;       // another hit as close (through a node)
+  bool ambiguous_origin = false;  // an arc other than the hole's passes through the ray's origin
 };
 
 // The arcs as rays meet them: all of them (a few holes in a small graph), or through a grid.
@@ -49,9 +51,11 @@ class ArcRays {
   bool usable() const { return scan_all_ || arc_grid_.nx != 0; }
   bool has_unbounded_arcs() const { return !unbounded_arcs_.empty(); }
 
-  // The first hit of the ray from `right` (the rightmost point of hole k).
-  RayHit first_hit(Point right, std::size_t k) {
+  // The first hit of the ray from `right` (the rightmost point of hole k, whose half-arcs are
+  // `hole`).
+  RayHit first_hit(Point right, std::size_t k, std::span<const int> hole) {
     RayHit hit;
+    hole_ = hole;
     if (scan_all_)
       for (int a : unbounded_arcs_) test_arc(a, right, hit);
     else
@@ -119,8 +123,14 @@ class ArcRays {
     if (b.xmax <= right.x) return;  // wholly left of the ray's origin
     crossings(a, b, right.y);
     const double origin_uncertainty = tolerance::kRayTie * (std::abs(right.x) + std::abs(right.y));
+    const bool own = std::any_of(hole_.begin(), hole_.end(), [a](int h) { return h / 2 == a; });
     for (const Crossing& c : xs_) {
-      if (c.x <= right.x + origin_uncertainty + c.uncertainty) continue;
+      if (c.x <= right.x + origin_uncertainty + c.uncertainty) {
+        // Another arc through the ray's origin (a hole tangent to a line there): which side the
+        // hole is on is not the ray's to say.
+        if (!own && c.x >= right.x - origin_uncertainty - c.uncertainty) hit.ambiguous_origin = true;
+        continue;
+      }
       if (std::abs(c.x - hit.x) <= c.uncertainty + hit.uncertainty) hit.ambiguous = true;
       if (c.x < hit.x) hit = {c.x, c.ty, c.uncertainty, a, false};
     }
@@ -135,6 +145,7 @@ class ArcRays {
   Box nodes_box_;
   BoxGrid arc_grid_;
   std::vector<Crossing> xs_;
+  std::span<const int> hole_;
   LargeVector<int> stamp_;
 };
 
@@ -168,7 +179,8 @@ std::vector<int> hole_ray_faces(const Diagram& d, bool by_sites, const TracingGe
     const Point right = rightmost_point(d, cs.halves_of(cs.cycles[holes[k]]));
     if (!std::isfinite(right.x)) continue;
     if (!rays.usable()) continue;  // no finite extent to grid: containment tests
-    const RayHit hit = rays.first_hit(right, k);
+    const RayHit hit = rays.first_hit(right, k, cs.halves_of(cs.cycles[holes[k]]));
+    if (hit.ambiguous_origin) continue;  // containment tests
     if (hit.arc < 0) {
       ray_face[k] = rays.has_unbounded_arcs() ? -2 : -1;
       continue;

@@ -31,8 +31,9 @@ double read_turn(const Circle& c, bool ccw, const Node& p, const Node& q) {
 
 bool ends_within_rounding(const Arc& a, const std::vector<Node>& nodes, const std::vector<Site>& sites,
                           double extent) {
+  if (a.from < 0 || a.to < 0 || a.from == a.to) return false;
   const Circle* c = std::get_if<Circle>(&a.curve);
-  if (!c || a.from < 0 || a.to < 0 || a.from == a.to) return false;
+  if (!c) return within_rounding(nodes[a.from], nodes[a.to], extent);
   const Site& si = sites[a.left_site];
   const Site& sj = sites[a.right_site];
   // Huge circles (nearly equal weights) are read as straight where it matters (kHugeCircleRatio).
@@ -42,11 +43,17 @@ bool ends_within_rounding(const Arc& a, const std::vector<Node>& nodes, const st
 
 ArcMend arc_mend(const Arc& a, const std::vector<Node>& nodes, const std::vector<Site>& sites,
                  const std::vector<int>& zeros, const std::vector<RawPoint>& link, double extent) {
-  const Circle* c = std::get_if<Circle>(&a.curve);
   const Site& si = sites[a.left_site];
   const Site& sj = sites[a.right_site];
   const Node& p = nodes[a.from];
   const Node& q = nodes[a.to];
+  const Circle* c = std::get_if<Circle>(&a.curve);
+  if (!c) {
+    // A segment is always the short piece; it reads wrongly when its rounded nodes run against its
+    // direction (equal nodes read as the empty segment it nearly is).
+    const Line& l = std::get<Line>(a.curve);
+    return (q.x - p.x) * l.dx + (q.y - p.y) * l.dy >= 0 ? ArcMend::kNone : ArcMend::kDrop;
+  }
   // Which piece: tiny if some crossing of the circle lies away from the ends; else the point
   // opposite p is on the arc iff no link site is nearer there.
   const bool clustered = std::all_of(zeros.begin(), zeros.end(), [&](int z) { return z >= 0 && within_rounding(nodes[z], p, extent); });

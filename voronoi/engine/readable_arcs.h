@@ -26,15 +26,18 @@ enum class ArcMend {
   kUnknown,  // too close to call: the engine must fail rather than guess
 };
 
-// Whether `a` is a circle arc (not a huge one, tolerance::kHugeCircleRatio) whose distinct end
-// nodes are within rounding of each other (self_check.h's allowed_off of the sites' bounding-box
-// diagonal `extent`): only such an arc may be read wrongly. Cheap; most arcs stop here.
+// Whether `a` is a segment, or a circle arc (not a huge one, tolerance::kHugeCircleRatio), whose
+// distinct end nodes are within rounding of each other (self_check.h's allowed_off of the sites'
+// bounding-box diagonal `extent`): only such an arc may be read wrongly. Cheap; most arcs stop here.
 bool ends_within_rounding(const Arc& a, const std::vector<Node>& nodes, const std::vector<Site>& sites,
                           double extent);
 
 // For such an arc just emitted by the walk around the power facet of its sites, which found the
 // zero points `zeros` (node ids in circle order) and whose other bounding sites are `link`: how
-// to mend it. The arc runs between two consecutive zeros, so if any zero of the walk lies farther
+// to mend it. A segment is dropped when its rounded nodes do not follow its direction: five sites
+// of a grid equidistant from one point up to the rounding of their decimal coordinates have nodes
+// an ulp apart, a segment between them pointing backwards, and a face of site 8 some 1e-17 across
+// that no reader can trace (issue 11). The arc runs between two consecutive zeros, so if any zero of the walk lies farther
 // than rounding from its ends it is the tiny piece; only when all of them cluster there is the
 // point opposite probed.
 ArcMend arc_mend(const Arc& a, const std::vector<Node>& nodes, const std::vector<Site>& sites,
