@@ -67,25 +67,4 @@ std::optional<Constraint> node_constraint(const TracedGraph& t, int f, int h_out
   return c;
 }
 
-// The solution circles of the nodes of face f (at most four), for re-anchoring the sites of faces
-// at degenerate nodes (FaceIndex::degenerate_node: rounding of the sites decides their
-// combinatorics, and re-anchoring on the nodes' solution circles lets the recomputed diagram
-// reproduce them).
-std::vector<Constraint> face_circle_constraints(const TracedGraph& t, int f) {
-  const Diagram& g = t.g;
-  std::vector<Constraint> cs;
-  std::vector<int> seen_nodes;
-  for (const auto cycle : face_cycles(g, f))
-    for (const HalfArc& hh : cycle) {
-      const Arc& arc = g.arcs[hh.arc];
-      const int v = hh.forward ? arc.from : arc.to;
-      if (v == kNone || t.on_frame[v] || arc.frame) continue;
-      if (std::find(seen_nodes.begin(), seen_nodes.end(), v) != seen_nodes.end()) continue;
-      seen_nodes.push_back(v);
-      if (auto c = node_constraint(t, f, half_id(hh)); c && c->is_circle) cs.push_back(*c);
-      if (cs.size() >= 4) return cs;
-    }
-  return cs;
-}
-
 }  // namespace covmap::recognition::stages
