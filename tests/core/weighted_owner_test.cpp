@@ -101,3 +101,26 @@ TEST(WeightedOwner, BisectorOffsetStaysAccurateFarAway) {
 
 }  // namespace
 }  // namespace covmap
+
+namespace covmap {
+namespace {
+
+// Far from two equal-weight sites the bisector offset is, to first order, the distance to their
+// perpendicular bisector, a closed form. The gradient used to be the difference of two unit vectors that agree
+// to |b - a| / |p|: at 1e15 it lost every digit or came out 0 ("inf off"), and every exact
+// collinear diagram (nodes 1e15 out) failed the checker.
+TEST(BisectorOffset, FarFromEqualWeightSitesIsTheDistanceToTheirBisector) {
+  const Site a{"a", 0.0, 0.0, 2.0}, b{"b", 0.6, 0.8, 2.0};  // bisector: 0.6 x + 0.8 y = 0.5
+  for (const double far : {1e3, 1e9, 1e15}) {
+    for (const double off : {-0.25, 0.0, 0.125}) {
+      // Along the bisector (direction (0.8, -0.6)) `far` out, moved `off` towards b.
+      const Point p{0.3 + 0.8 * far + 0.6 * off, 0.4 - 0.6 * far + 0.8 * off};
+      const double exact = 0.6 * p.x + 0.8 * p.y - 0.5;  // signed distance, > 0 on b's side
+      // First order: off² / far relative; the rounding of p (ε · far) absolute.
+      EXPECT_NEAR(bisector_offset(p, a, b), exact, 1e-6 * std::abs(exact) + 1e-15 * far) << "far " << far << " off " << off;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace covmap
