@@ -52,10 +52,18 @@ std::optional<Constraint> node_constraint(const TracedGraph& t, int f, int h_out
   // frame that large the graph sits within 1e-8 of the origin, where the matrix tolerance falls to
   // rounding and a solution circle reads as two points (issue 11).
   const double reach = scale + t.extent.distance_to({at.real(), at.imag()});
+  // Arcs shorter than kNodeFrameFloor of the graph (the rest of a node split by rounding: a grid
+  // in decimal coordinates splits a point of five sites into three nodes an ulp apart) say
+  // nothing about where the sites are.
+  const double floor = tolerance::kNodeFrameFloor * scale;
   double L = 0.0;
-  if (!reaches.empty()) {
-    std::nth_element(reaches.begin(), reaches.begin() + reaches.size() / 2, reaches.end());
-    L = reaches[reaches.size() / 2];
+  const auto tiny = std::partition(reaches.begin(), reaches.end(), [&](double r) { return r >= floor; });
+  if (tiny == reaches.begin() && !reaches.empty()) {
+    L = *std::max_element(reaches.begin(), reaches.end());
+  } else if (tiny != reaches.begin()) {
+    const auto middle = reaches.begin() + (tiny - reaches.begin()) / 2;
+    std::nth_element(reaches.begin(), middle, tiny);
+    L = *middle;
   }
   if (!(L > 0) || L > reach) L = reach;
   const mobius::NodeFrame frame{at, L};
