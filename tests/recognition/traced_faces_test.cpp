@@ -53,5 +53,13 @@ TEST(TracedFaces, ExactGridsOfThreeHundredTraceAsTheirLabels) {
   for (int seed = 1; seed <= 5; ++seed) expect_traced_as_labelled(RecognitionFamily::kGrid, 300, "0", seed);
 }
 
+// Exactly collinear sites in decimal (300 of them): equal-weight bisectors meet 1e12..1e15 out on
+// both sides, and cycles run out to them and back as strips 0.01 wide. The signed area from the
+// rounded far nodes (stated to 0.06) lost its sign and outer cycles became holes, merging faces;
+// chords of segments are now read from their lines (cycle_orientation.cpp).
+TEST(TracedFaces, ExactCollinearSitesOfThreeHundredTraceAsTheirLabels) {
+  for (int seed = 1; seed <= 3; ++seed) expect_traced_as_labelled(RecognitionFamily::kCollinear, 300, "0", seed);
+}
+
 }  // namespace
 }  // namespace covmap::recognition
