@@ -207,14 +207,33 @@ FeasibleRegion feasible_region(std::span<const GeneralizedCircle> constraints, C
   // Step from the boundary into the region by halving lengths; keep the deepest point. At most
   // kMaxProbedFacets facets are probed (evenly spread), which bounds this part at O(k m).
   const std::size_t stride = std::max<std::size_t>(1, probes.size() / tolerance::kMaxProbedFacets);
-  double best = 0.0;
+  std::vector<std::pair<double, Complex>> starts;  // each probe's deepest point
   for (std::size_t k = 0; k < probes.size(); k += stride) {
-    const Complex z0 = probes[k].on;
+    std::pair<double, Complex> deepest{0.0, probes[k].on};
     for (double step = 0.5; step > tolerance::kSmallestProbeStep; step *= 0.5) {
-      const Complex z = z0 + step * probes[k].inward;
+      const Complex z = probes[k].on + step * probes[k].inward;
       const double m = margin_at(z);
-      if (m > best) best = m, out.representative = z;
+      if (m > deepest.first) deepest = {m, z};
     }
+    if (deepest.first > 0) starts.push_back(deepest);
+  }
+  // The deepest region point is where the largest disk inside the region is centred: from the best
+  // few starts, climb the margin (the distance to the nearest constraint) by a compass search.
+  std::sort(starts.begin(), starts.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  if (starts.size() > tolerance::kDeepestPointStarts) starts.resize(tolerance::kDeepestPointStarts);
+  double best = 0.0;
+  for (auto [m, z] : starts) {
+    for (double step = 0.5 * m; step > tolerance::kSmallestProbeStep; step *= 0.5) {
+      for (bool moved = true; moved;) {
+        moved = false;
+        for (int k = 0; k < 8; ++k) {
+          const Complex t = z + std::polar(step, 0.7853981633974483 * k);
+          const double mt = margin_at(t);
+          if (mt > m) m = mt, z = t, moved = true;
+        }
+      }
+    }
+    if (m > best) best = m, out.representative = z;
   }
   if (!(best > 0)) return out;
   out.empty = false;

@@ -17,6 +17,10 @@ inline constexpr std::size_t kMaxProbedFacets = 64;
 // ... and the shortest step (a fraction of the search window's half-size) tried from a boundary
 // point into the region: regions thinner than this are reported as having no interior.
 inline constexpr double kSmallestProbeStep = 1e-9;
+// ... and from how many of the deepest probe points a compass search climbs to the deepest point
+// (the centre of the largest disk inside the region; the region need not be convex, so a few
+// starts guard against a local summit). Each climb costs O(m) per step, ~30 halvings.
+inline constexpr std::size_t kDeepestPointStarts = 4;
 // A facet whose unit normal has a t-component below this fraction of its (x, y) part is vertical: it
 // meets the paraboloid in a line (a line constraint or a side of the window; the normal of an
 // exactly vertical facet, computed from its rounded vertices, is ~1e-17 off).
