@@ -12,6 +12,8 @@
 namespace covmap::voronoi::tracing {
 namespace {
 
+constexpr double kOffCentre = 0.38196601125010515;  // 1/φ²
+
 // Paths for the containment tests of holes the ray cannot place (every hole when tracing by
 // sites): computed on first use and kept, since one large face's outer cycle is tested against
 // many holes.
@@ -79,7 +81,10 @@ int containing_face(const Diagram& d, bool by_sites, const CycleSet& cs, const L
                     const FaceAssembly& fa, const Cycle& hole, PathCache& cached_path, FaceGrid& grid) {
   const HalfArc first = half_of(cs.cycle_halves[hole.begin]);
   const ArcPathView path = arc_path(d.arcs[first.arc], d.nodes);
-  const double mid = std::isfinite(path.s0) && std::isfinite(path.s1) ? 0.5 * (path.s0 + path.s1)
+  // Not the middle of the arc: degenerate inputs (grids) make a hole tangent to another arc at its
+  // axis-extreme and middle points, where the point would lie on the candidate face's boundary and
+  // its containment is noise. 1/φ² of the way along is no such point.
+  const double mid = std::isfinite(path.s0) && std::isfinite(path.s1) ? path.s0 + kOffCentre * (path.s1 - path.s0)
                      : std::isfinite(path.s0)                          ? path.s0 + 1.0
                      : std::isfinite(path.s1)                          ? path.s1 - 1.0
                                                                        : 0.0;

@@ -90,7 +90,20 @@ class ArcRays {
   // extent of 1, placing the hole in the wrong face (issue 11).
   struct Crossing {
     double x, ty, uncertainty;
+    bool at_end = false;  // at one of the arc's end nodes, or along the ray: the ray cannot tell
   };
+
+  // Whether (x, y) lies within `u` of an end node of arc a: the ray passes through a node, where
+  // the arcs that end there are all "hit" or (by the strict parameter test) none of them.
+  bool near_end(int a, double x, double y, double u) const {
+    for (const int v : {d_.arcs[a].from, d_.arcs[a].to}) {
+      if (v == kNone) continue;
+      const Node& n = d_.nodes[v];
+      if (std::abs(n.x - x) <= u + tolerance::kRayTie * std::abs(n.x) && std::abs(n.y - y) <= u + tolerance::kRayTie * std::abs(n.y))
+        return true;
+    }
+    return false;
+  }
 
   // Crossings of the horizontal line y with arc a (box b).
   void crossings(int a, const Box& b, double y) {
@@ -107,14 +120,21 @@ class ArcRays {
         // A full circle has no end where the ray could pass through a node: its start angle
         // is an ordinary point (concentric circles are hit exactly there).
         const bool full = d_.arcs[a].from == kNone;
-        if ((s > p.s0 && s < p.s1) || full)
-          xs_.push_back({x, p.tangent(s).y, tolerance::kRayTie * (std::abs(x) + std::abs(y) + p.r)});
+        const double u = tolerance::kRayTie * (std::abs(x) + std::abs(y) + p.r);
+        const bool end = !full && near_end(a, x, y, u);
+        if ((s > p.s0 && s < p.s1) || full || end) xs_.push_back({x, p.tangent(s).y, u, end});
       }
     } else if (p.uy != 0) {
       const double s = (y - p.oy) / p.uy;
       const double x = p.ox + s * p.ux;
-      if (s > p.s0 && s < p.s1)
-        xs_.push_back({x, p.uy, tolerance::kRayTie * (std::abs(x) + std::abs(y) + std::abs(p.ox) + std::abs(p.oy))});
+      const double u = tolerance::kRayTie * (std::abs(x) + std::abs(y) + std::abs(p.ox) + std::abs(p.oy));
+      const bool end = near_end(a, x, y, u);
+      if ((s > p.s0 && s < p.s1) || end) xs_.push_back({x, p.uy, u, end});
+    } else if (std::abs(y - p.oy) <= tolerance::kRayTie * (std::abs(y) + std::abs(p.oy))) {
+      // A horizontal segment along the ray: its nearer end is where the ray meets it, ambiguously.
+      const double x0 = p.ox + p.s0 * p.ux, x1 = p.ox + p.s1 * p.ux;
+      const double x = std::min(std::isfinite(x0) ? x0 : -INFINITY, std::isfinite(x1) ? x1 : -INFINITY);
+      if (std::isfinite(x)) xs_.push_back({x, 0.0, tolerance::kRayTie * (std::abs(x) + std::abs(y)), true});
     }
   }
 
@@ -132,7 +152,7 @@ class ArcRays {
         continue;
       }
       if (std::abs(c.x - hit.x) <= c.uncertainty + hit.uncertainty) hit.ambiguous = true;
-      if (c.x < hit.x) hit = {c.x, c.ty, c.uncertainty, a, false};
+      if (c.x < hit.x) hit = {c.x, c.ty, c.uncertainty, a, c.at_end};
     }
   }
 

@@ -70,5 +70,14 @@ TEST(TracedFaces, ExactGridsScaledByAThousandthTraceAsTheirLabels) {
     expect_traced_as_labelled(RecognitionFamily::kGrid, 300, "0", seed, {1e-3, 0.0, 0.0, 0.0});
 }
 
+// Exact grids of 100 sites at k/15: a full-circle hole whose ray to +x passed exactly through a node
+// (two segments ending there, so by the strict parameter test neither was hit) and then along a
+// horizontal segment found a face beyond; and its containment point, the circle's leftmost point,
+// lay on a vertical segment. Rays through a node or along a segment now defer to containment,
+// whose point is 1/φ² along the hole's arc (hole_rays.cpp, hole_placement.cpp).
+TEST(TracedFaces, ExactGridsOfAHundredTraceAsTheirLabels) {
+  for (int seed = 1; seed <= 10; ++seed) expect_traced_as_labelled(RecognitionFamily::kGrid, 100, "0", seed);
+}
+
 }  // namespace
 }  // namespace covmap::recognition
