@@ -3,6 +3,8 @@
 // RecognitionOptions and CompareOptions with their documentation.)
 #pragma once
 
+#include <cstddef>
+
 namespace covmap::recognition::tolerance {
 
 // An arc's end node may be off its curve by the recognition tolerance plus this many units of
@@ -43,6 +45,15 @@ inline constexpr double kMaxArcWeight = 1e4;
 // faces, docs/PERFORMANCE.md).
 inline constexpr double kSolveReduction = 1e-8;
 inline constexpr int kSolveIterations = 100;
+// The weight solve's multigrid (laplacian_multigrid.h) coarsens until at most kCoarsestUnknowns
+// remain, which it factors densely (a few MB of work at most), and gives up coarsening when a level
+// keeps more than kCoarsening of its unknowns (a graph whose matching fails, such as a star; planar
+// graphs keep about a quarter).
+inline constexpr std::size_t kCoarsestUnknowns = 256;
+inline constexpr double kCoarsening = 0.75;
+// The multigrid's K-cycle makes a second Krylov step on a level only while the first left more than
+// this fraction of the residual (the value of Notay's aggregation multigrid).
+inline constexpr double kKCycleResidual = 0.25;
 // The position solve makes at most kPositionSteps Gauss-Newton steps, a further one only while the
 // last moved a site by more than kFurtherStep of the extent — a rounded graph, where the
 // linearisation error of a correction c (~c²) still matters; an exact graph's first correction is
