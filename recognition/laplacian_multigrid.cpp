@@ -150,6 +150,12 @@ LaplacianMultigrid::LaplacianMultigrid(GroundedLaplacian fine) {
     aggregate_.push_back(std::move(first));
     levels_.push_back(std::move(coarse));
   }
+  work_.resize(levels_.size());
+  for (std::size_t l = 0; l + 1 < levels_.size(); ++l) {
+    const std::size_t n = levels_[l].size(), coarse = levels_[l + 1].size();
+    work_[l].residual.resize(n), work_[l].rc.resize(coarse), work_[l].zc.resize(coarse);
+    if (l > 0) for (auto* v : {&work_[l].c1, &work_[l].v1, &work_[l].c2, &work_[l].v2, &work_[l].rest}) v->resize(n);
+  }
   const GroundedLaplacian& last = levels_.back();
   const std::size_t n = last.size();
   if (n <= tolerance::kCoarsestUnknowns) {
@@ -191,8 +197,10 @@ void LaplacianMultigrid::cycle(std::size_t level, const LargeVector<double>& r, 
   const std::size_t n = a.size(), coarse = levels_[level + 1].size();
   for (std::size_t f = 0; f < n; ++f) z[f] = 0.0;
   gauss_seidel(a, r, z, true);
-  LargeVector<double> residual(n), rc(coarse, 0.0), zc(coarse);
+  Work& w = work_[level];
+  LargeVector<double>&residual = w.residual, &rc = w.rc, &zc = w.zc;
   a.apply(z, residual);
+  for (std::size_t c = 0; c < coarse; ++c) rc[c] = 0.0;
   for (std::size_t f = 0; f < n; ++f) rc[aggregate[f]] += r[f] - residual[f];
   coarse_correction(level + 1, rc, zc);
   for (std::size_t f = 0; f < n; ++f) z[f] += zc[aggregate[f]];
@@ -207,17 +215,16 @@ void LaplacianMultigrid::coarse_correction(std::size_t level, const LargeVector<
   if (level + 1 == levels_.size()) return solve_coarsest(r, z);
   const GroundedLaplacian& a = levels_[level];
   const std::size_t n = a.size();
-  LargeVector<double> c1(n), v1(n);
+  Work& w = work_[level];
+  LargeVector<double>&c1 = w.c1, &v1 = w.v1, &rest = w.rest, &c2 = w.c2, &v2 = w.v2;
   cycle(level, r, c1);
   a.apply(c1, v1);
   const double rho1 = dot(c1, v1), alpha1 = dot(c1, r) / rho1;
-  LargeVector<double> rest(n);
   for (std::size_t f = 0; f < n; ++f) rest[f] = r[f] - alpha1 * v1[f];
   if (!(rho1 > 0) || dot(rest, rest) <= tolerance::kKCycleResidual * tolerance::kKCycleResidual * dot(r, r)) {
     for (std::size_t f = 0; f < n; ++f) z[f] = rho1 > 0 ? alpha1 * c1[f] : c1[f];
     return;
   }
-  LargeVector<double> c2(n), v2(n);
   cycle(level, rest, c2);
   a.apply(c2, v2);
   const double gamma = dot(c2, v1), beta = dot(c2, v2) - gamma * gamma / rho1, alpha2 = dot(c2, rest) / beta;

@@ -42,7 +42,7 @@ class LaplacianMultigrid {
   explicit LaplacianMultigrid(GroundedLaplacian fine);
   const GroundedLaplacian& matrix() const { return levels_.front(); }
   std::size_t levels() const { return levels_.size(); }
-  // z = M⁻¹ r: one V-cycle from z = 0.
+  // z = M⁻¹ r: one cycle from z = 0. Uses the object's work space: one call at a time.
   void precondition(const LargeVector<double>& r, LargeVector<double>& z) const;
 
  private:
@@ -53,6 +53,13 @@ class LaplacianMultigrid {
   std::vector<GroundedLaplacian> levels_;
   std::vector<LargeVector<int>> aggregate_;  // per level but the last: each unknown's on the next
   std::vector<double> coarsest_factor_;      // dense Cholesky factor of the last level (row-major)
+  // Work space per level, allocated once (fresh pages cost more than the arithmetic at 10^6):
+  // cycle's residual and the coarse right-hand side and correction; the K-cycle's two directions,
+  // their images and the remaining residual.
+  struct Work {
+    LargeVector<double> residual, rc, zc, c1, v1, c2, v2, rest;
+  };
+  mutable std::vector<Work> work_;
   bool factored_ = false;
 };
 
