@@ -32,7 +32,7 @@ template <class T, class Apply, class Precondition>
 int preconditioned_conjugate_gradients(const Apply& apply, const Precondition& precondition, LargeVector<T>& x,
                                        LargeVector<T>& r, double rz_floor, bool flexible = false) {
   const std::size_t n = x.size();
-  LargeVector<T> z(n), p(n), q(n), z_last(n);
+  LargeVector<T> z(n), p(n), q(n), z_last(flexible ? n : 0);
   precondition(r, z);
   p = z;
   double rz = real_dot(r, z);
