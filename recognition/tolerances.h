@@ -3,6 +3,8 @@
 // RecognitionOptions and CompareOptions with their documentation.)
 #pragma once
 
+#include <cstddef>
+
 namespace covmap::recognition::tolerance {
 
 // An arc's end node may be off its curve by the recognition tolerance plus this many units of
@@ -38,17 +40,30 @@ inline constexpr double kMatrixRounding = 1e-12;
 inline constexpr double kNodeFrameFloor = 1e-9;
 inline constexpr double kMatrixCeiling = 1e-2;
 
-// The weight solve (weight_solve.cpp): an arc's statement of log(w_r / w_l) weighs (|c - s| over the
-// sites' spacing)², between 1 and kMaxArcWeight (lines, and huge circles of nearly equal weights,
-// are the most accurate; a larger spread would only slow the conjugate gradients).
+// The weight solve (weight_solve.cpp): an arc's statement of log(w_r / w_l) weighs
+// (|c - s_l|² + |c - s_r|²) over the graph's mean site spacing squared, between 1 and kMaxArcWeight
+// (lines, and huge circles of nearly equal weights, are the most accurate; a larger spread would
+// only slow the conjugate gradients, and dropping the floor of 1 made the solution worse: 8e-12
+// instead of 4e-12 at 10^5 sites).
 inline constexpr double kMaxArcWeight = 1e4;
 // The weight and position solves' conjugate gradients stop when the preconditioned residual has
-// shrunk by kSolveReduction (their start is already within ~1e-10 of the answer, so this is well
-// below rounding), or below its own rounding (weights), or after kSolveIterations passes over the
-// arcs (the Laplacian's condition grows like the number of faces; the cap bounds the cost at 10^6
-// faces, docs/PERFORMANCE.md).
+// shrunk by kSolveReduction (the position solve's start is within ~1e-10 of the answer, so this is
+// well below rounding), or below its own rounding (weights), or after kSolveIterations passes over
+// the arcs — a safety net that neither reaches at 10^6 faces: the position solve's mirror relations
+// fix every site (no null space) and take 27-35 Jacobi iterations there; the weight solve's
+// Laplacian, preconditioned by multigrid, takes 1-7 from a good start and 69 from one spoilt by a
+// wrong arc (Jacobi capped at 100 with weights 4e-7 off, weight_solve.cpp).
 inline constexpr double kSolveReduction = 1e-8;
 inline constexpr int kSolveIterations = 100;
+// The weight solve's multigrid (laplacian_multigrid.h) coarsens until at most kCoarsestUnknowns
+// remain, which it factors densely (a few MB of work at most), and gives up coarsening when a level
+// keeps more than kCoarsening of its unknowns (a graph whose matching fails, such as a star; planar
+// graphs keep about a fifth).
+inline constexpr std::size_t kCoarsestUnknowns = 256;
+inline constexpr double kCoarsening = 0.75;
+// The multigrid's K-cycle makes a second Krylov step on a level only while the first left more than
+// this fraction of the residual (the value of Notay's aggregation multigrid).
+inline constexpr double kKCycleResidual = 0.25;
 // The position solve makes at most kPositionSteps Gauss-Newton steps, a further one only while the
 // last moved a site by more than kFurtherStep of the extent — a rounded graph, where the
 // linearisation error of a correction c (~c²) still matters; an exact graph's first correction is
