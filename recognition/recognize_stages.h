@@ -227,13 +227,19 @@ LargeVector<char> faces_at_degenerate_nodes(const Diagram& g, const voronoi::Fac
 // Candidate p as the site of face `start`, propagated to every face reachable from it.
 void propagate(const TracedGraph& t, const LargeVector<char>& at_degenerate_node, int start, mobius::Complex p, PropagationBuffers& buffers);
 
-// Every arc against its two sites (on its two sides, mirror images): the residual summary, and the
-// first failing arc (in arc order) as the failure, with the counts.
+// Every arc against its two sites (on its two sides, mirror images): the residual summary, and as
+// the failure the element nearest the defect (disagreeing_node, else the failing arc worst against
+// its allowance), with the counts.
 struct ArcVerification {
   ResidualSummary residuals;
   std::optional<RecognitionFailure> failure;
 };
 ArcVerification verify_arcs(const TracedGraph& t, const LargeVector<FaceSite>& site);
+
+// The node nearest the defect of a graph that is no bisector graph, found with no site: the one
+// whose solution sets miss the point the other nodes of its faces share (verification.cpp says
+// how it is chosen); nullopt when every face agrees in itself.
+std::optional<RecognitionFailure> disagreeing_node(const TracedGraph& t);
 
 // Keeps the kWorstResiduals largest of `all` in `summary.worst`, largest first.
 void keep_worst(std::vector<Residual> all, ResidualSummary& summary);
