@@ -11,6 +11,7 @@
 #include <random>
 
 #include "recognition/recognize.h"
+#include "recognition_families.h"
 #include "voronoi/arc_path.h"
 #include "voronoi/engine.h"
 
@@ -53,7 +54,15 @@ bool names_disagreeing_node(const Reconstruction& r) {
   return r.failure && r.failure->arcs_beyond > 0 && r.failure->node != kNone;
 }
 
-TEST(Negative, ShiftedNodeIsRejected) {
+// The graph as generated (digits 0), or written with `digits` significant digits and recognized at
+// ten units of the last digit, which the defects (1e-3 of the sites' square) are far beyond.
+RecognitionOptions options_for(int digits) {
+  RecognitionOptions options;
+  if (digits > 0) options.relative_tolerance = std::pow(10.0, 1 - digits);
+  return options;
+}
+
+void expect_shifted_node_named(int digits) {
   std::mt19937_64 rng(31);
   std::uniform_real_distribution<double> angle(0.0, 6.283185307179586);
   int rejected = 0, tried = 0, located = 0;
@@ -90,8 +99,9 @@ TEST(Negative, ShiftedNodeIsRejected) {
     }
     if (!bent) continue;
     d.nodes[v] = {moved.x, moved.y};
+    if (digits > 0) testing::round_graph(d, digits);
     ++tried;
-    const Reconstruction r = recognize(d);
+    const Reconstruction r = recognize(d, options_for(digits));
     EXPECT_FALSE(r.bisector_graph) << "trial " << trial;
     if (r.bisector_graph) continue;
     ASSERT_TRUE(r.failure.has_value()) << "trial " << trial;
@@ -121,7 +131,10 @@ TEST(Negative, ShiftedNodeIsRejected) {
   EXPECT_GE(located, 10);
 }
 
-TEST(Negative, MergedFacesAreRejected) {
+TEST(Negative, ShiftedNodeIsRejected) { expect_shifted_node_named(0); }
+TEST(Negative, ShiftedNodeInRoundedGraphIsRejected) { expect_shifted_node_named(9); }
+
+void expect_merged_faces_named(int digits) {
   std::mt19937_64 rng(32);
   int rejected = 0, tried = 0, located = 0;
   for (int trial = 0; trial < 60; ++trial) {
@@ -138,8 +151,9 @@ TEST(Negative, MergedFacesAreRejected) {
     const Arc removed = d.arcs[victim];
     d.arcs.erase(d.arcs.begin() + victim);
     clear_faces(d);
+    if (digits > 0) testing::round_graph(d, digits);
     ++tried;
-    const Reconstruction r = recognize(d);
+    const Reconstruction r = recognize(d, options_for(digits));
     EXPECT_FALSE(r.bisector_graph) << "trial " << trial;
     if (r.bisector_graph) continue;
     ASSERT_TRUE(r.failure.has_value()) << "trial " << trial;
@@ -160,6 +174,9 @@ TEST(Negative, MergedFacesAreRejected) {
   ::testing::Test::RecordProperty("located", located);
   EXPECT_GE(located, 10);
 }
+
+TEST(Negative, MergedFacesAreRejected) { expect_merged_faces_named(0); }
+TEST(Negative, MergedFacesInRoundedGraphAreRejected) { expect_merged_faces_named(9); }
 
 }  // namespace
 }  // namespace covmap::recognition
