@@ -9,6 +9,9 @@
 //
 // --grids G adds G integer grids (25 sites at integer positions in [0, 7)², weights 1 or 2: nodes of
 // degree four and more, tangencies; tests/voronoi/site_families.h, family Grid, seeds 1..G).
+// --first-seed S draws the random instances from seeds S, S+1, ... (default 1), so that a second
+// run measures other instances. Every false "no" is listed by its seed (false_no_seeds): with --n,
+// --dist and that seed (--count 1) it is reproduced.
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
@@ -31,10 +34,11 @@ struct Row {
   int instances = 0, accurate = 0, no_accurate = 0, no_inaccurate = 0, not_bisector = 0;
   double seconds = 0.0;
   std::string first_no;  // the first difference of the first false "no"
+  std::vector<int> no_seeds;  // the seeds of the false "no"s
 };
 
 // One instance: recognized with the check, classified into the row.
-void run(const std::vector<covmap::Site>& sites, double accurate_limit, Row& row) {
+void run(const std::vector<covmap::Site>& sites, int seed, double accurate_limit, Row& row) {
   covmap::Diagram d = covmap::voronoi::build_diagram(sites);
   d.sites.clear();
   clear_faces(d);
@@ -52,6 +56,7 @@ void run(const std::vector<covmap::Site>& sites, double accurate_limit, Row& row
   row.accurate += accurate;
   if (r.voronoi != covmap::recognition::MwvdAnswer::kNo) return;
   (accurate ? row.no_accurate : row.no_inaccurate) += 1;
+  row.no_seeds.push_back(seed);
   if (row.first_no.empty() && !r.voronoi_differences.empty()) row.first_no = r.voronoi_differences.front().message;
 }
 
@@ -65,7 +70,8 @@ void print(const Row& row, bool json_out) {
                                 {"false_no_inaccurate", row.no_inaccurate},
                                 {"not_bisector_graph", row.not_bisector},
                                 {"recognize_s", row.seconds},
-                                {"first_false_no", row.first_no}}
+                                {"first_false_no", row.first_no},
+                                {"false_no_seeds", row.no_seeds}}
                      .dump()
               << "\n";
   } else {
@@ -80,13 +86,14 @@ void print(const Row& row, bool json_out) {
 int main(int argc, char** argv) {
   CLI::App app{"false-\"no\" rate of the MWVD check on exact MWVDs"};
   std::vector<std::string> sizes = {"100", "1000"}, counts = {"100", "20"}, dists = {"uniform12", "uniform01"};
-  int grids = 15;
+  int grids = 15, first_seed = 1;
   double accurate_limit = 1e-8;
   bool json_out = false;
   app.add_option("--n", sizes, "numbers of sites (comma separated)")->delimiter(',');
   app.add_option("--count", counts, "instances per size (comma separated, one per --n)")->delimiter(',');
   app.add_option("--dist", dists, "weight distributions (see mwvd_bench)")->delimiter(',');
   app.add_option("--grids", grids, "integer-weight grids to add (seeds 1..G)");
+  app.add_option("--first-seed", first_seed, "the random instances' first seed (then S+1, ...)");
   app.add_option("--accurate", accurate_limit, "reconstruction error below which an instance counts as accurate");
   app.add_flag("--json", json_out, "one JSON object per row");
   CLI11_PARSE(app, argc, argv);
@@ -107,14 +114,15 @@ int main(int argc, char** argv) {
     for (std::size_t k = 0; k < sizes.size(); ++k) {
       Row row{dist->name(), static_cast<std::size_t>(std::stod(sizes[k]))};
       const int count = std::stoi(counts[k]);
-      for (int seed = 1; seed <= count; ++seed) run(covmap::bench::make_sites(row.n, *dist, seed), accurate_limit, row);
+      for (int seed = first_seed; seed < first_seed + count; ++seed)
+        run(covmap::bench::make_sites(row.n, *dist, seed), seed, accurate_limit, row);
       print(row, json_out);
     }
   }
   if (grids > 0) {
     Row row{"grid", 25};
     for (int seed = 1; seed <= grids; ++seed)
-      run(covmap::voronoi::testing::make_sites(covmap::voronoi::testing::Family::Grid, 25, seed), accurate_limit, row);
+      run(covmap::voronoi::testing::make_sites(covmap::voronoi::testing::Family::Grid, 25, seed), seed, accurate_limit, row);
     print(row, json_out);
   }
   return 0;
