@@ -12,6 +12,7 @@
 //   candidates          candidates.cpp         the start face's candidate sites, polished
 //   propagation         propagation.cpp        one candidate to every face, breadth first
 //   verification        verification.cpp       every arc against the two sites it separates
+//   disagreeing node    disagreeing_node.cpp   a failing graph's nodes against each other: the defect
 //   position solve      position_solve.cpp     sites refined by least squares over all arcs
 //   weight solve        weight_solve.cpp       log-weights by least squares over all arcs
 //   site collection     site_collection.cpp    one site per face into the reconstruction's sites
