@@ -122,7 +122,8 @@ int main(int argc, char** argv) {
   if (grids > 0) {
     Row row{"grid", 25};
     for (int seed = 1; seed <= grids; ++seed)
-      run(covmap::voronoi::testing::make_sites(covmap::voronoi::testing::Family::Grid, 25, seed), seed, accurate_limit, row);
+      run(covmap::voronoi::testing::make_sites(covmap::voronoi::testing::Family::Grid, 25, seed), seed, accurate_limit,
+          row);
     print(row, json_out);
   }
   return 0;

@@ -65,9 +65,9 @@ struct NodeVerdict {
 
 // Candidate sites of a face are taken from pairs among kConsensusNodes of its nodes spread evenly
 // along its boundary, so that the work stays linear in the face's size. A defect spoils a run of
-// consecutive nodes: a moved node itself and the other ends of its arcs, and up to five in all
-// when bending its arcs changes how the faces around it are traced (seen in negative_test.cpp);
-// twelve leave at least two sound ones whatever the run.
+// consecutive nodes of a face: a moved node and the other ends of its arcs, up to five when bending
+// its arcs changes how the faces around it are traced (seen in negative_test.cpp); of twelve
+// sampled nodes such a run leaves at least seven sound ones (a face of k ≤ 12 nodes: k − 5).
 constexpr std::size_t kConsensusNodes = 12;
 
 // The point on which most of face f's node constraints agree (fixed points and pairwise
@@ -96,7 +96,8 @@ void face_verdicts(const TracedGraph& t, int f, std::vector<NodeVerdict>& out) {
       count += off <= t.tol_at(p);
       total += off;
     }
-    if (count > best_count || (count == best_count && total < best_total)) best_count = count, best_total = total, best = p;
+    if (count > best_count || (count == best_count && total < best_total))
+      best_count = count, best_total = total, best = p;
   }
   if (best_count < 2) return;
   for (const Constraint& c : cs) {
@@ -146,7 +147,8 @@ std::optional<RecognitionFailure> disagreeing_node(const TracedGraph& t) {
   // then for the largest share of its faces, then the centre of the cluster, then the largest
   // miss; ties: the lower index.
   auto rank = [](const Tally& n) {
-    return std::tuple(n.disagrees, static_cast<double>(n.disagrees) / n.tested, n.neighbours, n.worst.ratio, -n.worst.node);
+    const double share = static_cast<double>(n.disagrees) / n.tested;
+    return std::tuple(n.disagrees, share, n.neighbours, n.worst.ratio, -n.worst.node);
   };
   const Tally* pick = nullptr;
   for (const auto& [node, n] : tally)

@@ -175,7 +175,8 @@ void expect_missing_faces_found(int digits) {
         ++named;
         // Where the missing face is named, the MWVD of the generating sites is the region of f's
         // site (up to the point's own accuracy when it is f's longest arc's midpoint).
-        EXPECT_LE(outside_region_of(sites, instance->site, {diff.x, diff.y}), accuracy) << "trial " << trial << ": " << diff.message;
+        EXPECT_LE(outside_region_of(sites, instance->site, {diff.x, diff.y}), accuracy)
+            << "trial " << trial << ": " << diff.message;
       }
       EXPECT_EQ(named, 1) << "trial " << trial;
       break;  // one face per diagram

@@ -122,7 +122,8 @@ void expect_shifted_node_named(int digits) {
       reach = std::max(reach, distance(moved, at(d, other)));
     }
     EXPECT_TRUE(in_star) << "trial " << trial << ": " << r.reason;
-    EXPECT_LE(distance({r.failure->x, r.failure->y}, moved), reach * (1 + 1e-12)) << "trial " << trial << ": " << r.reason;
+    EXPECT_LE(distance({r.failure->x, r.failure->y}, moved), reach * (1 + 1e-12))
+        << "trial " << trial << ": " << r.reason;
     EXPECT_LE(distance({r.failure->x, r.failure->y}, at(d, r.failure->node)), 1e-12) << "trial " << trial;
   }
   EXPECT_GT(tried, 40);
@@ -163,7 +164,8 @@ void expect_merged_faces_named(int digits) {
     // The removed arc's two ends are left with degree two between two different curves, which no
     // bisector graph has: the node named is one of them, at its own position.
     ++located;
-    EXPECT_TRUE(r.failure->node == removed.from || r.failure->node == removed.to) << "trial " << trial << ": " << r.reason;
+    EXPECT_TRUE(r.failure->node == removed.from || r.failure->node == removed.to)
+        << "trial " << trial << ": " << r.reason;
     EXPECT_LE(std::min(distance({r.failure->x, r.failure->y}, at(d, removed.from)),
                        distance({r.failure->x, r.failure->y}, at(d, removed.to))),
               1e-12)
