@@ -26,15 +26,21 @@ double bisector_offset(Point p, const Site& a, const Site& b) {
   const double la_minus_lb =
       sum > 0.0 ? ((b.x - a.x) * (ax + bx) + (b.y - a.y) * (ay + by)) / sum : 0.0;
   const double f = la_minus_lb / a.weight + lb * (b.weight - a.weight) / (a.weight * b.weight);
-  // grad |p - s| / w = unit(p - s) / w; at p == s take the zero subgradient.
+  // grad f = unit(p - a) / wa - unit(p - b) / wb; at p == s take the zero subgradient. Far out the
+  // two unit vectors agree to ~|b - a| / |p|, and subtracting them as computed left rounding (or 0:
+  // "inf off" at the nodes 1e15 out of nearly collinear sites). With d = b - a and p - b = (p - a) - d:
+  //   grad f = (p - a) (la (wb - wa) - wb (la - lb)) / (la lb wa wb) + d / (lb wb),
+  // where la - lb is the cancellation-free difference above, and the two terms cancel only where
+  // the gradient truly vanishes (p on the line through both sites).
   double gx = 0.0, gy = 0.0;
-  if (la > 0.0) {
-    gx += ax / (la * a.weight);
-    gy += ay / (la * a.weight);
-  }
-  if (lb > 0.0) {
-    gx -= bx / (lb * b.weight);
-    gy -= by / (lb * b.weight);
+  if (la > 0.0 && lb > 0.0) {
+    const double k = (la * (b.weight - a.weight) - b.weight * la_minus_lb) / (la * lb * a.weight * b.weight);
+    gx = ax * k + (b.x - a.x) / (lb * b.weight);
+    gy = ay * k + (b.y - a.y) / (lb * b.weight);
+  } else if (la > 0.0) {
+    gx = ax / (la * a.weight), gy = ay / (la * a.weight);
+  } else if (lb > 0.0) {
+    gx = -bx / (lb * b.weight), gy = -by / (lb * b.weight);
   }
   const double g = std::sqrt(gx * gx + gy * gy);
   if (g == 0.0) return f == 0.0 ? 0.0 : std::copysign(kInf, f);

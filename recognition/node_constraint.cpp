@@ -27,18 +27,21 @@ std::optional<Constraint> node_constraint(const TracedGraph& t, int f, int h_out
   const Arc& first = g.arcs[h_out / 2];
   const int v = (h_out % 2 == 0) ? first.from : first.to;
   const mobius::Complex at(g.nodes[v].x, g.nodes[v].y);
-  // The half-arcs of the walk around v, and the neighbourhood's size: the longest reach of an arc
-  // at v to its other end. Not the first arc's: a node of degree four split by a perturbation of
+  // The half-arcs of the walk around v, and the neighbourhood's size: the median reach of the arcs
+  // at v to their other ends. Not the first arc's: a node of degree four split by a perturbation of
   // 1e-15 has a tiny arc, and in a frame that small the sites sit 1e13 units out, where a solution
-  // circle of ordinary size read as its tangent line (issue 11: grids moved by 1e-15 rejected).
+  // circle of ordinary size read as its tangent line (issue 11: grids moved by 1e-15 rejected). Not
+  // the longest: an arc of nearly equal weights may run 1e6 out, and the lines the engine writes
+  // for such flat circles make the composition an involution only to ~L/r, which in so large a
+  // frame exceeded the tolerance (weights equal to 1e-9: a solution circle read as two points).
   std::vector<int> walk;
-  double L = 0.0;
+  std::vector<double> reaches;
   for (int h = h_out, face = f;;) {
     if (h == kNone || g.arcs[h / 2].frame || walk.size() >= 64) return std::nullopt;
     walk.push_back(h);
     const Arc& arc = g.arcs[h / 2];
     const int far_end = (h % 2 == 0) ? arc.to : arc.from;
-    if (far_end != kNone) L = std::max(L, std::abs(mobius::Complex(g.nodes[far_end].x, g.nodes[far_end].y) - at));
+    if (far_end != kNone) reaches.push_back(std::abs(mobius::Complex(g.nodes[far_end].x, g.nodes[far_end].y) - at));
     const int twin = h ^ 1;
     face = face_of_half[twin];
     h = next_half[twin];
@@ -49,6 +52,19 @@ std::optional<Constraint> node_constraint(const TracedGraph& t, int f, int h_out
   // frame that large the graph sits within 1e-8 of the origin, where the matrix tolerance falls to
   // rounding and a solution circle reads as two points (issue 11).
   const double reach = scale + t.extent.distance_to({at.real(), at.imag()});
+  // Arcs shorter than kNodeFrameFloor of the graph (the rest of a node split by rounding: a grid
+  // in decimal coordinates splits a point of five sites into three nodes an ulp apart) say
+  // nothing about where the sites are.
+  const double floor = tolerance::kNodeFrameFloor * scale;
+  double L = 0.0;
+  const auto tiny = std::partition(reaches.begin(), reaches.end(), [&](double r) { return r >= floor; });
+  if (tiny == reaches.begin() && !reaches.empty()) {
+    L = *std::max_element(reaches.begin(), reaches.end());
+  } else if (tiny != reaches.begin()) {
+    const auto middle = reaches.begin() + (tiny - reaches.begin()) / 2;
+    std::nth_element(reaches.begin(), middle, tiny);
+    L = *middle;
+  }
   if (!(L > 0) || L > reach) L = reach;
   const mobius::NodeFrame frame{at, L};
   const double mt = matrix_tolerance(t, at, L);
@@ -65,27 +81,6 @@ std::optional<Constraint> node_constraint(const TracedGraph& t, int f, int h_out
   if (c.is_circle) c.circle = frame.to_plane(c.circle);
   for (mobius::Complex& p : c.points) p = frame.to_plane(p);
   return c;
-}
-
-// The solution circles of the nodes of face f (at most four), for re-anchoring the sites of faces
-// at degenerate nodes (FaceIndex::degenerate_node: rounding of the sites decides their
-// combinatorics, and re-anchoring on the nodes' solution circles lets the recomputed diagram
-// reproduce them).
-std::vector<Constraint> face_circle_constraints(const TracedGraph& t, int f) {
-  const Diagram& g = t.g;
-  std::vector<Constraint> cs;
-  std::vector<int> seen_nodes;
-  for (const auto cycle : face_cycles(g, f))
-    for (const HalfArc& hh : cycle) {
-      const Arc& arc = g.arcs[hh.arc];
-      const int v = hh.forward ? arc.from : arc.to;
-      if (v == kNone || t.on_frame[v] || arc.frame) continue;
-      if (std::find(seen_nodes.begin(), seen_nodes.end(), v) != seen_nodes.end()) continue;
-      seen_nodes.push_back(v);
-      if (auto c = node_constraint(t, f, half_id(hh)); c && c->is_circle) cs.push_back(*c);
-      if (cs.size() >= 4) return cs;
-    }
-  return cs;
 }
 
 }  // namespace covmap::recognition::stages

@@ -110,14 +110,13 @@ struct NormalOperator {
 };
 
 // One Gauss-Newton step; the largest correction made (0 when none was made).
-double gauss_newton_step(const TracedGraph& t, const SolveOrder& order, const LargeVector<char>& fixed,
-                         LargeVector<FaceSite>& site) {
+double gauss_newton_step(const TracedGraph& t, const SolveOrder& order, LargeVector<FaceSite>& site) {
   const std::size_t n = order.order.size();
   const LargeVector<ArcRow> rows = arc_rows(t, order, site);
   if (rows.empty()) return 0.0;
   const NormalOperator op(rows, n);
   // Right-hand side -Jᵀ e (the residual at x = 0), and the Jacobi preconditioner (each face's
-  // block is a multiple of 1). Fixed faces take no correction: their diagonal is 0 (frozen).
+  // block is a multiple of 1).
   LargeVector<Complex> r(n, 0.0), x(n, 0.0);
   LargeVector<double> diag(n, 0.0);
   for (const ArcRow& row : rows) {
@@ -127,8 +126,6 @@ double gauss_newton_step(const TracedGraph& t, const SolveOrder& order, const La
     diag[row.r] += row.scale * row.scale;
     diag[row.l] += row.scale * row.scale * std::norm(row.k);
   }
-  for (std::size_t f = 0; f < n; ++f)
-    if (fixed[order.order[f]]) diag[f] = 0.0;
   conjugate_gradients([&](const LargeVector<Complex>& in, LargeVector<Complex>& out) { op.apply(in, out); }, diag, x, r);
   // A correction comparable with the graph is no refinement: the linearisation would not hold.
   double largest = 0.0;
@@ -147,10 +144,9 @@ SolveOrder::SolveOrder(const LargeVector<int>& faces_in_order, std::size_t faces
   for (std::size_t k = 0; k < order.size(); ++k) rank[order[k]] = static_cast<int>(k);
 }
 
-void solve_positions(const TracedGraph& t, const SolveOrder& order, const LargeVector<char>& fixed,
-                     LargeVector<FaceSite>& site) {
+void solve_positions(const TracedGraph& t, const SolveOrder& order, LargeVector<FaceSite>& site) {
   for (int step = 0; step < tolerance::kPositionSteps; ++step)
-    if (!(gauss_newton_step(t, order, fixed, site) > tolerance::kFurtherStep * t.scale)) break;
+    if (!(gauss_newton_step(t, order, site) > tolerance::kFurtherStep * t.scale)) break;
 }
 
 }  // namespace covmap::recognition::stages

@@ -84,7 +84,6 @@ Reconstruction recognize_in_frame(Reconstruction out, const InputScale& in, cons
     members.insert(members.end(), candidates.points.begin(), candidates.points.end());
     candidates.points = std::move(members);
   }
-  const LargeVector<char> at_degenerate_node = faces_at_degenerate_nodes(g, face_index);
   if (candidates.points.empty())
     return rejected(std::move(out), no_common_point(traced, start.face, start.constraints, candidates.closest));
   out.timings.start = timer.lap();
@@ -97,9 +96,9 @@ Reconstruction recognize_in_frame(Reconstruction out, const InputScale& in, cons
   const LargeVector<double> spread =
       face_spreads(g, face_index.face_of_half, in.extent.centre(), in.scale);
   for (const mobius::Complex& p : candidates.points) {
-    propagate(traced, at_degenerate_node, start.face, p, buffers);
+    propagate(traced, start.face, p, buffers);
     const SolveOrder order(buffers.queue, g.faces.size());
-    solve_positions(traced, order, at_degenerate_node, buffers.site);
+    solve_positions(traced, order, buffers.site);
     ArcVerification verified = verify_arcs(traced, buffers.site);
     out.timings.propagate += timer.lap();
     if (verified.failure) {

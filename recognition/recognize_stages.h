@@ -189,9 +189,6 @@ std::vector<Point> clip_polygon_of(const Diagram& g);
 // nullopt when the walk around the node meets a frame arc or an open end.
 std::optional<Constraint> node_constraint(const TracedGraph& t, int f, int h_out);
 
-// The solution circles of the nodes of face f (at most four), for re-anchoring the sites of faces
-// at degenerate nodes.
-std::vector<Constraint> face_circle_constraints(const TracedGraph& t, int f);
 
 StartFace start_face(const TracedGraph& t);
 
@@ -221,12 +218,9 @@ Rejection no_common_point(const TracedGraph& t, int start, const std::vector<Con
 // circles alone can be ill-conditioned when they meet at a shallow angle.
 mobius::Complex polish(mobius::Complex p, const std::vector<Constraint>& cs, double tol);
 
-// Faces at a degenerate node (FaceIndex::degenerate_node): those on either side of an arc ending
-// there.
-LargeVector<char> faces_at_degenerate_nodes(const Diagram& g, const voronoi::FaceIndex& index);
 
 // Candidate p as the site of face `start`, propagated to every face reachable from it.
-void propagate(const TracedGraph& t, const LargeVector<char>& at_degenerate_node, int start, mobius::Complex p, PropagationBuffers& buffers);
+void propagate(const TracedGraph& t, int start, mobius::Complex p, PropagationBuffers& buffers);
 
 // Every arc against its two sites (on its two sides, mirror images): the residual summary, and as
 // the failure the element nearest the defect (disagreeing_node, else the failing arc worst against
@@ -246,9 +240,7 @@ std::optional<RecognitionFailure> disagreeing_node(const TracedGraph& t);
 void keep_worst(std::vector<Residual> all, ResidualSummary& summary);
 
 // The sites of all assigned faces refined by Gauss-Newton steps of least squares over every arc
-// (each arc: its two sites are mirror images in it), except the `fixed` ones: faces at degenerate
-// nodes, whose sites propagation re-anchored on their nodes' solution circles (there the rounding
-// of the sites decides the recomputed diagram's combinatorics). A step whose correction exceeds
+// (each arc: its two sites are mirror images in it). A step whose correction exceeds
 // tolerance::kLinearisation of the extent is not made.
 // Both solves number their unknowns in `order` (the faces in breadth-first order, the propagation's
 // queue): neighbouring faces get nearby numbers, and the iterations read memory nearly in order.
@@ -257,8 +249,7 @@ struct SolveOrder {
   const LargeVector<int>& order;  // unknown -> face
   LargeVector<int> rank;          // face -> unknown (kNone: not an unknown)
 };
-void solve_positions(const TracedGraph& t, const SolveOrder& order, const LargeVector<char>& fixed,
-                     LargeVector<FaceSite>& site);
+void solve_positions(const TracedGraph& t, const SolveOrder& order, LargeVector<FaceSite>& site);
 
 // The log-weights of all assigned faces by weighted least squares over every arc between two of
 // them (each arc states log(w_right / w_left) from its two sites' positions), started from the

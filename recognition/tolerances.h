@@ -30,6 +30,12 @@ inline constexpr double kCollapsedExtent = 1e-6;
 // with O(1) entries — and never above kMatrixCeiling, beyond which "proportional" and "identity"
 // would lose their meaning (a node much shorter than the tolerance).
 inline constexpr double kMatrixRounding = 1e-12;
+
+// A node's frame (node_constraint.cpp) is the median length of its arcs, leaving out arcs shorter
+// than this fraction of the graph's extent: the pieces of a point where four or more bisectors meet,
+// split by rounding into nodes 1e-17..1e-10 apart, whose length says nothing about the distance of
+// the sites. (A frame that small read every solution circle as its tangent line.)
+inline constexpr double kNodeFrameFloor = 1e-9;
 inline constexpr double kMatrixCeiling = 1e-2;
 
 // The weight solve (weight_solve.cpp): an arc's statement of log(w_r / w_l) weighs (|c - s| over the

@@ -54,6 +54,27 @@ Outgoing outgoing_half_arcs(const Diagram& d, bool by_sites) {
   return o;
 }
 
+// Two lines leaving one node in directions equal to rounding: the bisectors of nearly collinear
+// sites of equal weight, which meet 1e15 extents out, where their directions differ by 1e-18 and
+// the node is stated only to ±0.5. Their order there is read near the graph instead, from the
+// points the lines are stated through: going from the node along the common direction u, the line
+// that passes the other on its left has the larger angle (behind the node, the smaller). +1 when y
+// lies counter-clockwise of x, -1 when clockwise, 0 when this cannot tell (not two lines, or the
+// same line).
+int parallel_lines_side(const Diagram& d, int x, int y) {
+  const Line* lx = std::get_if<Line>(&d.arcs[x / 2].curve);
+  const Line* ly = std::get_if<Line>(&d.arcs[y / 2].curve);
+  if (!lx || !ly) return 0;
+  const double sx = x % 2 == 0 ? 1.0 : -1.0;  // the direction of travel of half-arc x
+  const Point u{sx * lx->dx, sx * lx->dy};
+  const Arc& ax = d.arcs[x / 2];
+  const Node& v = d.nodes[x % 2 == 0 ? ax.from : ax.to];
+  const double offset = u.x * (ly->y - lx->y) - u.y * (ly->x - lx->x);  // y's point left of x's line: > 0
+  const double ahead = u.x * (0.5 * (lx->x + ly->x) - v.x) + u.y * (0.5 * (lx->y + ly->y) - v.y);
+  if (offset == 0 || ahead == 0 || !std::isfinite(offset * ahead)) return 0;
+  return (offset > 0) == (ahead > 0) ? 1 : -1;
+}
+
 // The half-arcs leaving one node in counter-clockwise order. Departures whose pseudo-angles agree
 // within tolerance::kParallelAngle (chained: a run of such gaps is one group, so the grouping is
 // the same whoever asks) leave in the same direction as far as rounding can tell: of those, the
@@ -95,6 +116,7 @@ void counter_clockwise(const Diagram& d, const TracingGeometry& geometry, std::s
       std::sort(order.begin() + static_cast<std::ptrdiff_t>(b), order.begin() + static_cast<std::ptrdiff_t>(e),
                 [&](int x, int y) {
                   if (dep[x].curvature != dep[y].curvature) return dep[x].curvature < dep[y].curvature;
+                  if (const int side = parallel_lines_side(d, x, y)) return side > 0;
                   const Point u = direction(x), v = direction(y);
                   const double cross = u.x * v.y - u.y * v.x;  // > 0: y lies counter-clockwise of x
                   return cross != 0 ? cross > 0 : x < y;

@@ -26,6 +26,11 @@ inline constexpr double kParallelAngle = 1e-8;
 inline constexpr double kRayTie = 1e-12;
 inline constexpr double kRayTangent = 1e-12;
 
+// Face tracing, cycle orientation (cycle_orientation.cpp): a cycle's signed area within this many
+// ulps of the size of the terms it is summed from has no sign to trust (a lens between nodes an ulp
+// apart); its orientation is then its total turning, read from directions.
+inline constexpr double kOrientationAreaUlps = 64.0;
+
 // Clipping: a crossing of an arc with the clip boundary closer than this fraction of the clip
 // polygon's size (the diagonal of its bounding box) to a polygon vertex is snapped onto that vertex, so an arc through a corner
 // is not split into a piece of zero length.

@@ -101,3 +101,31 @@ TEST(WeightedOwner, BisectorOffsetStaysAccurateFarAway) {
 
 }  // namespace
 }  // namespace covmap
+
+namespace covmap {
+namespace {
+
+// Far from two equal-weight sites the bisector offset is, to first order, the distance to their
+// perpendicular bisector, a closed form. The gradient used to be the difference of two unit vectors that agree
+// to |b - a| / |p|: at 1e15 it lost every digit or came out 0 ("inf off"), and every exact
+// collinear diagram (nodes 1e15 out) failed the checker.
+TEST(BisectorOffset, FarFromEqualWeightSitesIsTheDistanceToTheirBisector) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int trial = 0; trial < 200; ++trial) {
+    // Two sites of equal weight about 1 apart, a point `far` out along their bisector and `off`
+    // off it.
+    const Site a{"a", u(rng), u(rng), 2.0}, b{"b", u(rng), u(rng), 2.0};
+    const double dx = b.x - a.x, dy = b.y - a.y, len = std::hypot(dx, dy);
+    const double nx = dx / len, ny = dy / len;  // unit normal of the bisector, towards b
+    // Offsets well beyond the rounding of p (ε · far), so that a gradient off by 10% would show.
+    const double far = std::pow(10.0, 3 + trial % 14), off = (0.25 + 1e-13 * far) * u(rng);
+    const Point p{0.5 * (a.x + b.x) - ny * far + nx * off, 0.5 * (a.y + b.y) + nx * far + ny * off};
+    const double exact = nx * (p.x - 0.5 * (a.x + b.x)) + ny * (p.y - 0.5 * (a.y + b.y));  // signed distance
+    // First order: off² / far relative; the rounding of p (ε · far) absolute.
+    EXPECT_NEAR(bisector_offset(p, a, b), exact, 1e-6 * std::abs(exact) + 1e-15 * far) << "trial " << trial << " far " << far;
+  }
+}
+
+}  // namespace
+}  // namespace covmap

@@ -77,6 +77,26 @@ TEST(NearlyEqualWeights, FarOrphanFacesAreNotReconstructedAsTwinSites) {
   EXPECT_GE(round_trips, 7);
 }
 
+// Weights equal to one in a billion: the engine writes the bisectors' huge circles (radii ~1e10)
+// as lines where they are flat at the rounding of doubles, and at a node of two such lines and a
+// circle the composition around it is an involution only to ~1e-7 of the node's frame. In a frame
+// as large as the node's longest arc (issue 11's fix for split nodes) that exceeded the tolerance
+// and a solution circle was read as two points: "no common point" (exactness probe, equal weights
+// at 1e-9). The frame is now the node's median arc.
+TEST(NearlyEqualWeights, WeightsEqualToOneInABillionAreTheMwvdOfTheirReconstruction) {
+  int round_trips = 0;
+  for (std::uint64_t seed = 1; seed <= 60; ++seed) {
+    const std::vector<Site> sites = equal_weight_sites(seed, 1e-9);
+    const Diagram drawn = voronoi::build_diagram(sites);
+    if (!check::check_diagram(drawn).ok()) continue;
+    ++round_trips;
+    const Reconstruction r = recognize(drawn);
+    ASSERT_TRUE(r.bisector_graph) << "seed " << seed << ": " << r.reason;
+    EXPECT_EQ(r.voronoi, MwvdAnswer::kYes) << "seed " << seed;
+  }
+  EXPECT_GE(round_trips, 50);
+}
+
 // Two distinct sites closer than any far orphan's allowance, each with its own face near them,
 // stay two sites.
 TEST(NearlyEqualWeights, DistinctNearbySitesAreNotMerged) {

@@ -23,8 +23,9 @@ using testing::RecognitionFamily;
 
 using covmap::testing::canonical_faces;
 
-void expect_traced_as_labelled(RecognitionFamily family, int n, const char* perturb, int seed) {
-  const auto sites = testing::recognition_sites(family, n, seed, *testing::perturbation_from_string(perturb), {});
+void expect_traced_as_labelled(RecognitionFamily family, int n, const char* perturb, int seed,
+                               const testing::Similarity& placement = {}) {
+  const auto sites = testing::recognition_sites(family, n, seed, *testing::perturbation_from_string(perturb), placement);
   Diagram labelled;
   try {
     labelled = voronoi::build_diagram(sites);
@@ -51,6 +52,22 @@ TEST(TracedFaces, RecognitionFamiliesTraceAsTheirLabels) {
 // (readable_arcs.h) — before, geometry merged three faces there (seed 2).
 TEST(TracedFaces, ExactGridsOfThreeHundredTraceAsTheirLabels) {
   for (int seed = 1; seed <= 5; ++seed) expect_traced_as_labelled(RecognitionFamily::kGrid, 300, "0", seed);
+}
+
+// Exactly collinear sites in decimal (300 of them): equal-weight bisectors meet 1e12..1e15 out on
+// both sides, and cycles run out to them and back as strips 0.01 wide. The signed area from the
+// rounded far nodes (stated to 0.06) lost its sign and outer cycles became holes, merging faces;
+// chords of segments are now read from their lines (cycle_orientation.cpp).
+TEST(TracedFaces, ExactCollinearSitesOfThreeHundredTraceAsTheirLabels) {
+  for (int seed = 1; seed <= 3; ++seed) expect_traced_as_labelled(RecognitionFamily::kCollinear, 300, "0", seed);
+}
+
+// The same grids scaled by 1e-3: a circle and its near-tangent line bound a lens of one site between
+// nodes an ulp apart, whose signed area is below the rounding of its terms; it was taken for a hole
+// and merged into its neighbour's face. Orientation now falls back to the cycle's total turning.
+TEST(TracedFaces, ExactGridsScaledByAThousandthTraceAsTheirLabels) {
+  for (int seed = 1; seed <= 3; ++seed)
+    expect_traced_as_labelled(RecognitionFamily::kGrid, 300, "0", seed, {1e-3, 0.0, 0.0, 0.0});
 }
 
 }  // namespace

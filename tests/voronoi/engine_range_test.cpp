@@ -9,7 +9,6 @@
 #include <type_traits>
 
 #include "check/check.h"
-#include "checker_reach.h"
 #include "site_families.h"
 #include "voronoi/engine.h"
 #include "voronoi/engine/limits.h"
@@ -86,8 +85,7 @@ TEST(EngineRange, FarNodeOfAPerturbedGridIsFinite) {
   check::CheckOptions options;
   options.max_reported = 100000;
   const check::CheckReport report = check::check_diagram(build_diagram(sites), options);
-  for (const check::Violation& v : report.violations)
-    EXPECT_FALSE(testing::judged(v, 100 * std::sqrt(2.0))) << v.message;
+  EXPECT_TRUE(report.ok()) << report.brief();
 }
 
 TEST(EngineRange, StraightenedArcOfNearlyEqualWeightsStaysOnItsBisector) {
@@ -98,8 +96,7 @@ TEST(EngineRange, StraightenedArcOfNearlyEqualWeightsStaysOnItsBisector) {
     check::CheckOptions options;
     options.max_reported = 100000;
     const check::CheckReport report = check::check_diagram(build_diagram(sites), options);
-    for (const check::Violation& v : report.violations)
-      EXPECT_FALSE(testing::judged(v, 1e4)) << "seed " << seed << ": " << v.message;
+    EXPECT_TRUE(report.ok()) << "seed " << seed << ": " << report.brief();
   }
 }
 
@@ -131,15 +128,12 @@ std::vector<Site> perturbed_grid(std::uint64_t seed) {
   return sites;
 }
 
-// The checker's violations near the sites (testing::judged: not beyond 1e6 extents, where its
-// first-order distances overflow).
-int judged_violations(const std::vector<Site>& sites, std::string* brief) {
-  const Diagram d = build_diagram(sites);
-  const check::CheckReport report = check::check_diagram(d, check::CheckOptions{});
+// The checker's violations (anywhere: since its bisector gradient stopped cancelling, nodes 1e17
+// out are judged too).
+int violations(const std::vector<Site>& sites, std::string* brief) {
+  const check::CheckReport report = check::check_diagram(build_diagram(sites), check::CheckOptions{});
   *brief = report.brief();
-  int violations = 0;
-  for (const check::Violation& v : report.violations) violations += testing::judged(v, engine::site_extent(sites));
-  return violations;
+  return static_cast<int>(report.violations.size());
 }
 
 // Regression (a checker false positive): in a grid at 1e7 with integer weights moved by 1e-15,
@@ -164,7 +158,7 @@ TEST(EngineRange, TouchingDisksOfAPerturbedGridAreNoCrossing) {
 TEST(EngineRange, InternallyTangentBisectorsOfAPerturbedGridKeepTheirRegions) {
   for (const std::uint64_t seed : {369, 1341, 1393, 1903, 1913, 2312, 2757, 315}) {
     std::string brief;
-    EXPECT_EQ(judged_violations(perturbed_grid(seed), &brief), 0) << "grid seed " << seed << ": " << brief;
+    EXPECT_EQ(violations(perturbed_grid(seed), &brief), 0) << "grid seed " << seed << ": " << brief;
   }
 }
 
