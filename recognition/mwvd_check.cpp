@@ -68,6 +68,17 @@ void mwvd_check(Reconstruction& out, const InputScale& in, const RecognitionOpti
     differences.insert(differences.begin(), missing.begin(), missing.end());
   } catch (const voronoi::InvalidSites& e) {
     differences.insert(differences.begin(), {DifferenceKind::NodeOnlyInA, kNone, 0, 0, e.what()});
+  } catch (const voronoi::EngineFailure& e) {
+    // The engine refuses to draw these sites (it fails rather than write a diagram its own
+    // self-check rejects: integer grids reconstructed to an ulp off). Without the recomputed
+    // diagram a missing face cannot be ruled out: the input's own differences still say "no",
+    // and none leave the answer unknown, with the reason — never a "no" without evidence.
+    if (differences.empty()) {
+      out.voronoi = MwvdAnswer::kUnknown;
+      out.reason += std::string("; the MWVD check is undecided: the engine could not draw the reconstructed sites (") +
+                    e.what() + ")";
+      return;
+    }
   }
   out.voronoi = differences.empty() ? MwvdAnswer::kYes : MwvdAnswer::kNo;
   out.voronoi_differences = std::move(differences);

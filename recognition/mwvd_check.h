@@ -21,7 +21,9 @@
 //      collinear sites meeting far away after rounding). A face of D none of
 //      whose arcs has a counterpart is reported as a missing face, at a point of it.
 // Together: G is the MWVD of S within the tolerance. Linear in the size of the graphs (nearest-site
-// queries by a kd-tree, counterparts by a hash of site pairs).
+// queries by a kd-tree, counterparts by a hash of site pairs). When the engine refuses to draw S
+// (voronoi::EngineFailure) and G agrees with S at every point, the answer is "unknown", with the
+// reason appended to the reconstruction's: a missing face cannot be ruled out, nor shown.
 #pragma once
 
 #include <span>

@@ -98,7 +98,8 @@ struct RecognitionFailure {
   double x = 0.0, y = 0.0;  // where
   double amount = 0.0;      // by how much (a length)
   // How many arcs and nodes disagree beyond the tolerance (Reconstruction::residuals names the
-  // worst); the fields above describe the first failure met.
+  // worst); the fields above describe the node nearest the defect when the graph's nodes point at
+  // one, else the failing element found (docs/RECOGNITION.md, "Failures name what failed").
   int arcs_beyond = 0;
   int nodes_beyond = 0;
 };

@@ -12,6 +12,7 @@
 //   candidates          candidates.cpp         the start face's candidate sites, polished
 //   propagation         propagation.cpp        one candidate to every face, breadth first
 //   verification        verification.cpp       every arc against the two sites it separates
+//   disagreeing node    disagreeing_node.cpp   a failing graph's nodes against each other: the defect
 //   position solve      position_solve.cpp     sites refined by least squares over all arcs
 //   weight solve        weight_solve.cpp       log-weights by least squares over all arcs
 //   site collection     site_collection.cpp    one site per face into the reconstruction's sites
@@ -221,13 +222,19 @@ mobius::Complex polish(mobius::Complex p, const std::vector<Constraint>& cs, dou
 // Candidate p as the site of face `start`, propagated to every face reachable from it.
 void propagate(const TracedGraph& t, int start, mobius::Complex p, PropagationBuffers& buffers);
 
-// Every arc against its two sites (on its two sides, mirror images): the residual summary, and the
-// first failing arc (in arc order) as the failure, with the counts.
+// Every arc against its two sites (on its two sides, mirror images): the residual summary, and as
+// the failure the element nearest the defect (disagreeing_node, else the failing arc worst against
+// its allowance), with the counts.
 struct ArcVerification {
   ResidualSummary residuals;
   std::optional<RecognitionFailure> failure;
 };
 ArcVerification verify_arcs(const TracedGraph& t, const LargeVector<FaceSite>& site);
+
+// The node nearest the defect of a graph that is no bisector graph, found with no site: the one
+// whose solution sets miss the point the other nodes of its faces share (verification.cpp says
+// how it is chosen); nullopt when every face agrees in itself.
+std::optional<RecognitionFailure> disagreeing_node(const TracedGraph& t);
 
 // Keeps the kWorstResiduals largest of `all` in `summary.worst`, largest first.
 void keep_worst(std::vector<Residual> all, ResidualSummary& summary);

@@ -1,6 +1,10 @@
 // Verification in recognize(): every arc, independently and in parallel, against the two sites it
 // separates: each on its own side, and the two mirror images in it. Every arc is measured, so the
 // answer says how many disagree and which are worst, not only the first.
+//
+// A rejected graph's failure names the element nearest the defect (disagreeing_node.cpp), not the
+// first failing arc; only when the graph's nodes agree among themselves is the failing arc named
+// that is worst against its allowance.
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -18,11 +22,12 @@ bool larger(const Residual& a, const Residual& b) {
   return ra > rb || (ra == rb && a.index < b.index);
 }
 
-// One worker's share of the arcs: its worst residuals, how many arcs fail, and its first failure.
+// One worker's share of the arcs: its worst residuals, how many arcs fail, and its worst failure.
 struct ChunkResult {
   std::vector<Residual> worst;
   int failing = 0;
-  std::optional<RecognitionFailure> first;           // measured: off by some length
+  std::optional<RecognitionFailure> worst_failure;   // measured: off by the most allowances
+  double worst_ratio = 0.0;                          // its amount / allowance
   std::optional<RecognitionFailure> first_untraced;  // an arc with one face on both sides
   int unverified = 0;                                // arcs with a side tracing left open
 };
@@ -35,11 +40,15 @@ void remember(ChunkResult& r, const Residual& x) {
   }
 }
 
-void fail(ChunkResult& r, int arc, int face, mobius::Complex where, double amount, const std::string& message,
-          bool untraced = false) {
+// An arc failing by `amount`, `allowed` by the tolerance (0: untraced, kept only when it is the first).
+void fail(ChunkResult& r, int arc, int face, mobius::Complex where, double amount, double allowed,
+          const std::string& message) {
   ++r.failing;
-  std::optional<RecognitionFailure>& first = untraced ? r.first_untraced : r.first;
-  if (first) return;
+  const bool untraced = !(allowed > 0);
+  const double ratio = untraced ? 0.0 : amount / allowed;
+  std::optional<RecognitionFailure>& kept = untraced ? r.first_untraced : r.worst_failure;
+  if (kept && (untraced || !(ratio > r.worst_ratio))) return;
+  if (!untraced) r.worst_ratio = ratio;
   RecognitionFailure f;
   f.arc = arc;
   f.face = face;
@@ -47,7 +56,7 @@ void fail(ChunkResult& r, int arc, int face, mobius::Complex where, double amoun
   f.y = where.imag();
   f.amount = amount;
   f.message = message;
-  first = std::move(f);
+  kept = std::move(f);
 }
 
 void verify_chunk(const TracedGraph& t, const LargeVector<FaceSite>& site, std::size_t b, std::size_t e, ChunkResult& r) {
@@ -67,7 +76,7 @@ void verify_chunk(const TracedGraph& t, const LargeVector<FaceSite>& site, std::
       const mobius::Complex where = v != kNone ? mobius::Complex(g.nodes[v].x, g.nodes[v].y) : mobius::Complex(0.0, 0.0);
       std::ostringstream msg;
       msg << "arc " << a << " has face " << left << " on both sides";
-      fail(r, static_cast<int>(a), left, where, 0.0, msg.str(), true);
+      fail(r, static_cast<int>(a), left, where, 0.0, 0.0, msg.str());
       continue;
     }
     if (!site[left].assigned || !site[right].assigned) continue;
@@ -90,7 +99,7 @@ void verify_chunk(const TracedGraph& t, const LargeVector<FaceSite>& site, std::
         failed = true;
         std::ostringstream msg;
         msg << "arc " << a << ": the site of face " << f << " lies on the wrong side of it (by " << t.unit * off << ")";
-        fail(r, static_cast<int>(a), f, p, off, msg.str());
+        fail(r, static_cast<int>(a), f, bis.v, off, allowed, msg.str());
       }
     }
     // The mirror residual divided by √|k| (k: the inversion's derivative, |k| = (w_r / w_l)², the
@@ -105,7 +114,7 @@ void verify_chunk(const TracedGraph& t, const LargeVector<FaceSite>& site, std::
       std::ostringstream msg;
       msg << "arc " << a << ": the sites of faces " << left << " and " << right
           << " are not mirror images in it (off by " << t.unit * off << ")";
-      fail(r, static_cast<int>(a), right, partner.position, off, msg.str());
+      fail(r, static_cast<int>(a), right, bis.v, off, allowed, msg.str());
     }
   }
 }
@@ -131,21 +140,29 @@ ArcVerification verify_arcs(const TracedGraph& t, const LargeVector<FaceSite>& s
   ArcVerification out;
   out.residuals.tolerance = t.tol;
   std::vector<Residual> all;
+  double worst_ratio = 0.0;
   for (ChunkResult& r : found) {
     out.residuals.arcs_beyond += r.failing;
     out.residuals.arcs_unverified += r.unverified;
     all.insert(all.end(), r.worst.begin(), r.worst.end());
-    if (r.first && !out.failure) out.failure = std::move(r.first);  // chunks are in arc order
+    // The worst failing arc; ties: the earlier chunk, in arc order.
+    if (r.worst_failure && (!out.failure || r.worst_ratio > worst_ratio))
+      out.failure = std::move(r.worst_failure), worst_ratio = r.worst_ratio;
   }
   // An arc off by a length is the better evidence; untraced arcs only when there is none.
   for (ChunkResult& r : found)
     if (r.first_untraced && !out.failure) out.failure = std::move(r.first_untraced);
   keep_worst(std::move(all), out.residuals);
-  if (out.failure) {
-    out.failure->arcs_beyond = out.residuals.arcs_beyond;
-    out.failure->message = std::to_string(out.residuals.arcs_beyond) + " arc(s) disagree with the sites beyond the tolerance; the first: " +
-                           out.failure->message;
+  if (!out.failure) return out;
+  std::string message = std::to_string(out.residuals.arcs_beyond) +
+                        " arc(s) disagree with the sites beyond the tolerance; the worst: " + out.failure->message;
+  // The defect itself, when a face's nodes disagree among themselves.
+  if (std::optional<RecognitionFailure> local = disagreeing_node(t)) {
+    out.failure = std::move(local);
+    message += "; nearest the defect: " + out.failure->message;
   }
+  out.failure->arcs_beyond = out.residuals.arcs_beyond;
+  out.failure->message = std::move(message);
   return out;
 }
 
