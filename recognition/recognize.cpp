@@ -32,6 +32,19 @@ class LapTimer {
   Clock::time_point last_ = Clock::now();
 };
 
+// A rejection names the element nearest the defect when the graph's nodes can find it among
+// themselves (disagreeing_node.cpp): the start face's closest miss and the worst failing arc can lie
+// anywhere beyond a moved node or a removed arc. Run only once every candidate has failed.
+Rejection at_the_defect(const TracedGraph& t, Rejection why) {
+  std::optional<RecognitionFailure> local = disagreeing_node(t);
+  if (!local) return why;
+  why.reason += "; nearest the defect: " + local->message;
+  if (why.failure) local->arcs_beyond = why.failure->arcs_beyond, local->nodes_beyond = why.failure->nodes_beyond;
+  local->message = why.reason;
+  why.failure = std::move(local);
+  return why;
+}
+
 Reconstruction rejected(Reconstruction out, Rejection why) {
   out.bisector_graph = false;
   out.reason = std::move(why.reason);
@@ -85,7 +98,7 @@ Reconstruction recognize_in_frame(Reconstruction out, const InputScale& in, cons
     candidates.points = std::move(members);
   }
   if (candidates.points.empty())
-    return rejected(std::move(out), no_common_point(traced, start.face, start.constraints, candidates.closest));
+    return rejected(std::move(out), at_the_defect(traced, no_common_point(traced, start.face, start.constraints, candidates.closest)));
   out.timings.start = timer.lap();
 
   // Each candidate propagated to every face, every arc verified, the survivors' weights solved over
@@ -113,7 +126,7 @@ Reconstruction recognize_in_frame(Reconstruction out, const InputScale& in, cons
   if (solutions.empty()) {
     std::string reason = closest ? closest->failure->message : "no candidate survived";
     if (closest) out.residuals = std::move(closest->residuals);
-    return rejected(std::move(out), Rejection{std::move(reason), closest ? closest->failure : std::nullopt});
+    return rejected(std::move(out), at_the_defect(traced, Rejection{std::move(reason), closest ? closest->failure : std::nullopt}));
   }
   out.residuals = solutions.front().residuals;
   accept(out, solutions, candidates.family, free_root);

@@ -223,8 +223,8 @@ mobius::Complex polish(mobius::Complex p, const std::vector<Constraint>& cs, dou
 void propagate(const TracedGraph& t, int start, mobius::Complex p, PropagationBuffers& buffers);
 
 // Every arc against its two sites (on its two sides, mirror images): the residual summary, and as
-// the failure the element nearest the defect (disagreeing_node, else the failing arc worst against
-// its allowance), with the counts.
+// the failure the failing arc worst against its allowance, with the counts. (recognize() names the
+// node nearest the defect, disagreeing_node, once every candidate has failed.)
 struct ArcVerification {
   ResidualSummary residuals;
   std::optional<RecognitionFailure> failure;

@@ -2,9 +2,8 @@
 // separates: each on its own side, and the two mirror images in it. Every arc is measured, so the
 // answer says how many disagree and which are worst, not only the first.
 //
-// A rejected graph's failure names the element nearest the defect (disagreeing_node.cpp), not the
-// first failing arc; only when the graph's nodes agree among themselves is the failing arc named
-// that is worst against its allowance.
+// The failure is the failing arc worst against its allowance; once every candidate has failed,
+// recognize() names the node nearest the defect instead (disagreeing_node.cpp).
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -156,11 +155,6 @@ ArcVerification verify_arcs(const TracedGraph& t, const LargeVector<FaceSite>& s
   if (!out.failure) return out;
   std::string message = std::to_string(out.residuals.arcs_beyond) +
                         " arc(s) disagree with the sites beyond the tolerance; the worst: " + out.failure->message;
-  // The defect itself, when a face's nodes disagree among themselves.
-  if (std::optional<RecognitionFailure> local = disagreeing_node(t)) {
-    out.failure = std::move(local);
-    message += "; nearest the defect: " + out.failure->message;
-  }
   out.failure->arcs_beyond = out.residuals.arcs_beyond;
   out.failure->message = std::move(message);
   return out;

@@ -46,12 +46,10 @@ int degree(const Diagram& d, int v) {
 Point at(const Diagram& d, int v) { return {d.nodes[v].x, d.nodes[v].y}; }
 double distance(Point a, Point b) { return std::hypot(a.x - b.x, a.y - b.y); }
 
-// A rejection whose failure names a node found by the graph's own nodes disagreeing (verification,
-// after a candidate was propagated). Rejections at the start face still name the node whose
-// solution set the start face's best candidate misses, at that candidate (candidates.cpp;
-// docs/RECOGNITION.md, Known limits): counted, not located here.
+// A rejection whose failure names a node found by the graph's own nodes disagreeing
+// (disagreeing_node.cpp), whether the start face found no candidate or every candidate failed.
 bool names_disagreeing_node(const Reconstruction& r) {
-  return r.failure && r.failure->arcs_beyond > 0 && r.failure->node != kNone;
+  return r.failure && r.failure->node != kNone && r.reason.find("nearest the defect") != std::string::npos;
 }
 
 // The graph as generated (digits 0), or written with `digits` significant digits and recognized at
@@ -129,7 +127,7 @@ void expect_shifted_node_named(int digits) {
   EXPECT_GT(tried, 40);
   EXPECT_EQ(rejected, tried);
   ::testing::Test::RecordProperty("located", located);
-  EXPECT_GE(located, 10);
+  EXPECT_EQ(located, rejected) << "every rejection names the defect";
 }
 
 TEST(Negative, ShiftedNodeIsRejected) { expect_shifted_node_named(0); }
@@ -174,7 +172,7 @@ void expect_merged_faces_named(int digits) {
   EXPECT_GT(tried, 40);
   EXPECT_EQ(rejected, tried);
   ::testing::Test::RecordProperty("located", located);
-  EXPECT_GE(located, 10);
+  EXPECT_EQ(located, rejected) << "every rejection names the defect";
 }
 
 TEST(Negative, MergedFacesAreRejected) { expect_merged_faces_named(0); }
