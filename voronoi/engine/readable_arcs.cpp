@@ -97,13 +97,31 @@ void apply_mends(Diagram& d, const std::vector<ArcMend>& mends) {
     any = true;
   }
   if (!any) return;
-  // An arc not mended itself whose ends were merged through others' mends has ends farther apart
-  // than rounding, so it reads correctly from them: a near-full one is kept as a loop, a short one
-  // (rounding-sized, or a line segment) dropped.
   auto near_full = [&](const Arc& a) {
     const Circle* c = std::get_if<Circle>(&a.curve);
     return c && read_turn(*c, a.ccw, d.nodes[a.from], d.nodes[a.to]) > M_PI;
   };
+  // A short arc not mended itself, between nodes within rounding, one or both of which others'
+  // mends merged into nodes a few ulps away, would be read from those: its two ends can then have
+  // one angle in doubles and its sweep be unreadable (a grid's sites an ulp off the integers: the
+  // self-check refused the diagram). It is as tiny as the mends it sits between: its ends' nodes are
+  // merged too, and it is dropped below. Until no such arc is left (merges cascade in a cluster).
+  const double extent = site_extent(d.sites);
+  for (bool merged = true; merged;) {
+    merged = false;
+    for (std::size_t k = 0; k < d.arcs.size(); ++k) {
+      const Arc& a = d.arcs[k];
+      if (mends[k] != ArcMend::kNone || a.from == kNone || a.to == kNone || a.from == a.to) continue;
+      const int rf = find(a.from), rt = find(a.to);
+      if (rf == rt || (rf == a.from && rt == a.to) || near_full(a)) continue;
+      if (!within_rounding(d.nodes[a.from], d.nodes[a.to], extent)) continue;
+      parent[rf] = rt;
+      merged = true;
+    }
+  }
+  // An arc not mended itself whose ends were merged through others' mends has ends farther apart
+  // than rounding, or is one of the short arcs just merged, so it reads correctly from them: a
+  // near-full one is kept as a loop, a short one (rounding-sized, or a line segment) dropped.
   std::vector<Arc> kept;
   kept.reserve(d.arcs.size());
   for (std::size_t k = 0; k < d.arcs.size(); ++k) {
