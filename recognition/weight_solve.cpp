@@ -50,9 +50,19 @@ struct ArcSystem {
 // (The even average of both forms, as before, let the short distance of a light site enclosed by a
 // heavy one dominate: 5e-11 relative weight error at 10^5 sites with weights in [0.1, 1.1] where the
 // least squares of these statements gives 7e-12.)
-std::pair<double, double> arc_ratio(const Arc& arc, const mobius::ArcBisector& b, mobius::Complex sl,
-                                    mobius::Complex sr, double spacing) {
-  if (b.line) return {0.0, tolerance::kMaxArcWeight};
+std::pair<double, double> arc_ratio(const Arc& arc, const std::vector<Node>& nodes, const mobius::ArcBisector& b,
+                                    mobius::Complex sl, mobius::Complex sr, double spacing) {
+  if (b.line) {
+    // Equal weights, exactly for a line of equal-weight sites; but a writer may also put a line for
+    // a short arc of a circle too flat to tell from its chord (the engine does, for radii beyond 10⁶
+    // times the sites' spacing: weights equal only to 10⁻⁶), and one such segment among 10⁶ faces,
+    // trusted as much as any line, set 2.4e-7 of weight error over the subtree behind it. A segment
+    // is trusted as its length over the spacing, squared (a flat arc is short); a whole line or a
+    // ray, fully.
+    if (arc.from == kNone || arc.to == kNone) return {0.0, tolerance::kMaxArcWeight};
+    const double chord = std::hypot(nodes[arc.to].x - nodes[arc.from].x, nodes[arc.to].y - nodes[arc.from].y);
+    return {0.0, std::clamp(chord * chord / (spacing * spacing), 1.0, tolerance::kMaxArcWeight)};
+  }
   const double r = std::get<Circle>(arc.curve).r;
   const double dl = std::abs(b.gamma - (sl - b.v)), dr = std::abs(b.gamma - (sr - b.v));
   const double trust_l = dl * dl, trust_r = dr * dr, trust = trust_l + trust_r;
@@ -87,7 +97,7 @@ ArcSystem arc_system(const TracedGraph& t, const SolveOrder& order, const LargeV
     int l, r;
     if (!usable(a, l, r)) continue;
     const mobius::ArcBisector b = mobius::arc_bisector(g.arcs[a], g.nodes, site[l].position);
-    auto [d, omega] = arc_ratio(g.arcs[a], b, site[l].position, site[r].position, spacing);
+    auto [d, omega] = arc_ratio(g.arcs[a], g.nodes, b, site[l].position, site[r].position, spacing);
     // As in the position solve: an arc through a far node is stated only to that distance's rounding.
     const double far = 1.0 + t.extent.distance_to({b.v.real(), b.v.imag()}) / t.scale;
     omega /= far * far;
