@@ -1,6 +1,6 @@
 // Continuations for trace_faces(): per half-arc, the half-arc after it around its face, at the node
 // where it ends (by site labels, or by angle where a region touches itself or tracing is by
-// geometry), or around infinity. By geometry, also the nodes whose combinatorics rounding can change.
+// geometry), or around infinity.
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -168,22 +168,9 @@ int next_of(const Diagram& d, bool by_sites, const TracingGeometry& geometry, co
   return turn_at(d, geometry, outgoing.at(hi.end), h, [&](int c) { return label(d, by_sites, c) == label(d, by_sites, h); });
 }
 
-// A node whose degree is not three or where two arcs are tangent.
-bool degenerate(const TracingGeometry& geometry, std::span<const int> out) {
-  bool degenerate = out.size() != 3;
-  for (std::size_t i = 0; i < out.size() && !degenerate; ++i)
-    for (std::size_t j = i + 1; j < out.size(); ++j) {
-      // Tangent curves: directions equal or opposite (pseudo-angles differ by 0, 2 or 4).
-      const double diff = std::abs(geometry.depart[out[i]].angle - geometry.depart[out[j]].angle);
-      const double off = std::min({diff, std::abs(diff - 0.5 * kPseudoTurn), std::abs(diff - kPseudoTurn)});
-      if (off < tolerance::kParallelAngle) degenerate = true;
-    }
-  return degenerate;
-}
-
 }  // namespace
 
-LargeVector<int> continuations(const Diagram& d, bool by_sites, const TracingGeometry& geometry, FaceIndex* index) {
+LargeVector<int> continuations(const Diagram& d, bool by_sites, const TracingGeometry& geometry) {
   const int halves = 2 * static_cast<int>(d.arcs.size());
   const Outgoing outgoing = outgoing_half_arcs(d, by_sites);
   // The continuation of every half-arc, computed once (in parallel; next_of only reads).
@@ -198,7 +185,6 @@ LargeVector<int> continuations(const Diagram& d, bool by_sites, const TracingGeo
   // By geometry every arc at a node is eligible, so the continuations are settled node by node:
   // each half-arc arriving at v is the twin of one leaving it, and all the data is v's own.
   const std::size_t nodes = d.nodes.size();
-  if (index) index->degenerate_node.resize(nodes);
   parallel_chunks(nodes, worker_count(nodes), [&](std::size_t b, std::size_t e, int) {
     std::vector<int> order;  // reused from node to node
     for (std::size_t v = b; v < e; ++v) {
@@ -207,8 +193,6 @@ LargeVector<int> continuations(const Diagram& d, bool by_sites, const TracingGeo
       counter_clockwise(d, geometry, out, order);
       for (std::size_t k = 0; k < order.size(); ++k)
         next_half[order[k] ^ 1] = order[(k + order.size() - 1) % order.size()];
-      if (!index) continue;
-      index->degenerate_node[v] = degenerate(geometry, out);
     }
   });
   parallel_chunks(static_cast<std::size_t>(halves), worker_count(halves), [&](std::size_t b, std::size_t e, int) {

@@ -136,9 +136,8 @@ Box central_box(const std::vector<Node>& nodes);
 
 // ---- Continuations (continuations.cpp) ----
 
-// Per half-arc, the half-arc following it around its face (-1: none). By geometry, also fills
-// index->degenerate_node when index is given.
-LargeVector<int> continuations(const Diagram& d, bool by_sites, const TracingGeometry& geometry, FaceIndex* index);
+// Per half-arc, the half-arc following it around its face (-1: none).
+LargeVector<int> continuations(const Diagram& d, bool by_sites, const TracingGeometry& geometry);
 
 // ---- Cycles (cycle_walk.cpp, cycle_orientation.cpp) ----
 

@@ -54,7 +54,7 @@ void trace_faces(Diagram& d, FaceLabels labels, FaceIndex* index) {
   clear_faces(d);
   const bool by_sites = labels == FaceLabels::kSites;
   const TracingGeometry geometry = tracing_geometry(d, !by_sites);
-  LargeVector<int> next_half = continuations(d, by_sites, geometry, index);
+  LargeVector<int> next_half = continuations(d, by_sites, geometry);
   CycleSet cycles = walk_cycles(d, by_sites, next_half);
   const LargeVector<int> cycle_of_half = orient_cycles(d, geometry, cycles);
   FaceAssembly faces = outer_faces(d, by_sites, cycles);

@@ -28,10 +28,6 @@ enum class FaceLabels {
 struct FaceIndex {
   LargeVector<int> face_of_half;
   LargeVector<int> next_half;
-  // Per node, tracing by geometry only (empty otherwise): 1 where the degree is not three or two
-  // arcs are tangent (directions within tolerance::kParallelAngle modulo π) — the nodes whose
-  // combinatorics a rounding of the sites can change.
-  LargeVector<char> degenerate_node;
 };
 
 // When `index` is given it is filled too (what the tracing knows anyway; rebuilding it from the

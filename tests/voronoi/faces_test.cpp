@@ -264,8 +264,6 @@ TEST(FacesByGeometryLarge, MatchLabelledFacesWithTheirIndex) {
         ++on_cycles;
       }
   EXPECT_EQ(on_cycles, index.face_of_half.size()) << "every half-arc bounds exactly one face";
-  // Random sites in general position: every node has degree three and no tangency.
-  EXPECT_EQ(std::count(index.degenerate_node.begin(), index.degenerate_node.end(), 1), 0);
 
   Diagram again = labelled;
   for (Arc& a : again.arcs) a.left_site = a.right_site = kNone;
@@ -279,28 +277,6 @@ TEST(FacesByGeometryLarge, MatchLabelledFacesWithTheirIndex) {
   }
 }
 
-// Grid sites give nodes of degree four and more: those, and only nodes of degree other than three
-// or with tangent arcs, are flagged degenerate.
-TEST(FaceIndex, FlagsNodesOfDegreeOtherThanThree) {
-  int flagged_high_degree = 0;
-  for (int seed = 1; seed <= 20; ++seed) {
-    Diagram d = build_diagram(testing::make_sites(Family::Grid, 25, seed));
-    std::vector<int> degree(d.nodes.size(), 0);
-    for (const Arc& a : d.arcs)
-      for (int v : {a.from, a.to})
-        if (v != kNone) ++degree[v];
-    for (Arc& a : d.arcs) a.left_site = a.right_site = kNone;
-    FaceIndex index;
-    trace_faces(d, FaceLabels::kGeometry, &index);
-    ASSERT_EQ(index.degenerate_node.size(), d.nodes.size());
-    for (std::size_t v = 0; v < d.nodes.size(); ++v)
-      if (degree[v] != 3) {
-        EXPECT_EQ(index.degenerate_node[v], 1) << "seed " << seed << " node " << v;
-        ++flagged_high_degree;
-      }
-  }
-  EXPECT_GT(flagged_high_degree, 10) << "the grid family should produce nodes of degree > 3";
-}
 
 }  // namespace
 }  // namespace covmap::voronoi
