@@ -12,7 +12,9 @@
 // and the later stages work with what they have. Throws std::invalid_argument for an empty map
 // and, before any work, MapTooLarge for a map naming more than kMaxSensors; throws
 // cleaning::SnapTooSmall when the snap distance is too small for the map. Long solves call
-// `progress` at least every tolerance::kHeartbeatSeconds.
+// `progress` at least every tolerance::kHeartbeatSeconds. Deterministic (issue 12): the same
+// input and options give the same result, bit for bit, whatever options.threads, except the
+// wall-clock `timings` and `seconds`.
 #pragma once
 
 #include <cstddef>
