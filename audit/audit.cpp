@@ -9,27 +9,27 @@
 #include "audit/audit_stages.h"
 #include "audit/start_values.h"
 #include "audit/tolerances.h"
-#include "core/readable_numbers.h"
 
 namespace covmap::audit {
 namespace {
 
 using namespace stages;
 
-// Appends "<what> took <seconds since the previous lap>" (core/readable_numbers.h) to the audit's messages.
+// Appends {what, seconds since the previous lap} to the audit's timings (apart from its messages,
+// which must read the same on every run).
 class StageTimer {
  public:
-  StageTimer(std::chrono::steady_clock::time_point start, std::vector<std::string>& messages)
-      : last_(start), messages_(messages) {}
+  StageTimer(std::chrono::steady_clock::time_point start, std::vector<StageTiming>& timings)
+      : last_(start), timings_(timings) {}
   void lap(const std::string& what) {
     const auto now = std::chrono::steady_clock::now();
-    messages_.push_back(what + " took " + seconds(std::chrono::duration<double>(now - last_).count()));
+    timings_.push_back({what, std::chrono::duration<double>(now - last_).count()});
     last_ = now;
   }
 
  private:
   std::chrono::steady_clock::time_point last_;
-  std::vector<std::string>& messages_;
+  std::vector<StageTiming>& timings_;
 };
 
 // kMaxSensors, checked before any work.
@@ -79,7 +79,7 @@ AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSen
     progress("refinement, solver iteration " + std::to_string(iteration), 0.3);
   };
   out.boundary_samples = setup.samples.size();
-  StageTimer timer(t0, out.messages);
+  StageTimer timer(t0, out.timings);
   timer.lap("cleaning and starting values");
   const fitting::RefineResult refined =
       multi_start_refinement(setup, estimates, start, cells, raster, reported_of, out.messages);

@@ -12,7 +12,9 @@
 // and the later stages work with what they have. Throws std::invalid_argument for an empty map
 // and, before any work, MapTooLarge for a map naming more than kMaxSensors; throws
 // cleaning::SnapTooSmall when the snap distance is too small for the map. Long solves call
-// `progress` at least every tolerance::kHeartbeatSeconds.
+// `progress` at least every tolerance::kHeartbeatSeconds. Deterministic (issue 12): the same
+// input and options give the same result, bit for bit, whatever options.threads, except the
+// wall-clock `timings` and `seconds`.
 #pragma once
 
 #include <cstddef>
@@ -52,8 +54,8 @@ struct AuditOptions {
   double power_floor_db = 1.0;
   // Called with (stage name, fraction done in [0, 1]) on long runs; may be empty.
   std::function<void(const std::string&, double)> progress;
-  // Worker threads of the least-squares refinement. Until the refinement is made independent of
-  // thread scheduling (issue 12), only one thread gives the same numbers on every run.
+  // Worker threads of the refinement's covariance. The result is the same whatever the count (the
+  // solver itself runs on one thread: fitting/refine.cpp says why).
   int threads = 2;
 };
 
@@ -103,6 +105,14 @@ struct DiagramAgreement {
   std::vector<std::string> appeared;  // sensors with a recomputed cell but none in the map
 };
 
+// Wall-clock time of one stage of the audit.
+struct StageTiming {
+  std::string stage;
+  double seconds = 0.0;
+};
+
+// Every member but `timings` and `seconds` is the same, bit for bit, on every run of the same input
+// and options, whatever options.threads (issue 12); those two are wall-clock times, kept apart.
 struct AuditResult {
   std::vector<SensorAudit> sensors;   // map sensors first (map order), then reported-only ones
   cleaning::CleanedMap cleaned;
@@ -113,8 +123,9 @@ struct AuditResult {
   double bin_size_m = 0.0;
   std::size_t boundary_samples = 0;
   std::string refinement_summary;     // fitting's brief report
-  std::vector<std::string> messages;  // notable events of each stage, for the report
-  double seconds = 0.0;
+  std::vector<std::string> messages;  // notable events of each stage, for the report (no times)
+  std::vector<StageTiming> timings;   // per stage, in order
+  double seconds = 0.0;               // the whole audit
 };
 
 AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSensor> reported,

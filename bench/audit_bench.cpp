@@ -105,7 +105,8 @@ int main(int argc, char** argv) {
     seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
     iou_sum += r.refined_agreement.mean_iou;
     for (const auto& m : r.messages)
-      if (m.find(" took ") != std::string::npos || m.find("phase ") != std::string::npos) stages.push_back(m);
+      if (m.find("phase ") != std::string::npos) stages.push_back(m);
+    for (const auto& t : r.timings) stages.push_back(t.stage + " took " + std::to_string(t.seconds) + " s");
     stages.push_back(r.refinement_summary);
     std::map<std::string, const mapgen::TrueSensor*> truth;
     for (const auto& t : generated.truth) truth[t.id] = &t;

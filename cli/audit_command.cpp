@@ -43,7 +43,7 @@ CLI::App* setup_audit(CLI::App& app, AuditCommandOptions& options) {
   cmd->add_flag("--fail-on-inconsistent", options.fail_on_inconsistent,
                 "exit 1 when a reported sensor is inconsistent with the map (for pipelines)");
   cmd->add_flag("-q,--quiet", options.quiet, "no progress messages");
-  cmd->add_option("--threads", options.threads, "refinement threads (1 gives the same numbers on every run)")
+  cmd->add_option("--threads", options.threads, "threads of the refinement's covariance (the reports are the same whatever the count)")
       ->check(whole_number_in(1, 64))
       ->capture_default_str();
   return cmd;

@@ -23,7 +23,7 @@ struct AuditCommandOptions {
   bool quiet = false;                // no progress on stderr
   bool force = false;                // write into a foreign folder; audit despite plausibility warnings
   bool fail_on_inconsistent = false; // exit 1 when a reported sensor is inconsistent
-  int threads = 2;                   // refinement threads (1: reproducible numbers)
+  int threads = 2;                   // covariance threads (same reports whatever the count)
   std::string command_line;          // recorded in the reports
 };
 

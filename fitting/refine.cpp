@@ -42,7 +42,11 @@ class Heartbeat : public ceres::IterationCallback {
 ceres::Solver::Options solver_options(const RefineOptions& options) {
   ceres::Solver::Options solver;
   solver.max_num_iterations = options.max_iterations;
-  solver.num_threads = options.threads;
+  // One thread, whatever options.threads: Ceres' evaluator hands residual blocks to its threads
+  // dynamically and adds each thread's partial cost and gradient in turn, so with more threads the
+  // sums, hence the accepted steps and the result, depend on scheduling (issue 12). The covariance
+  // (covariance.cpp) keeps the threads: it computes each block independently.
+  solver.num_threads = 1;
   solver.function_tolerance = options.function_tolerance;
   solver.use_inner_iterations = options.inner_iterations;
   solver.use_nonmonotonic_steps = options.nonmonotonic_steps;

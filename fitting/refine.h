@@ -95,7 +95,8 @@ struct RefineOptions {
   // residuals (a robust reduced chi-square) and scales the samples' contribution to the covariance.
   // false: sample σ are calibrated standard deviations and are used as they are.
   bool estimate_noise_scale = true;
-  // Threads for the solver and the covariance. Must be >= 1.
+  // Threads for the covariance (the solver runs on one: see refine.cpp). Must be >= 1. The
+  // result is the same, bit for bit, whatever the count.
   int threads = 1;
   // Print Ceres' per-iteration progress to stdout.
   bool verbose = false;
@@ -144,7 +145,8 @@ struct RefineSummary {
   double noise_variance_factor = 1.0;
   double seconds = 0.0;
 
-  // One line: "CONVERGENCE after 7 iterations, cost 12.3 -> 0.41, rms 0.0011 over 400 samples, 0.02 s".
+  // One line: "CONVERGENCE after 7 iterations, cost 12.3 -> 0.41, rms 0.0011 over 400 samples".
+  // Without `seconds`, so that it reads the same on every run of the same input.
   std::string brief() const;
 };
 

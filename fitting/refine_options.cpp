@@ -55,8 +55,8 @@ bool RefineOptions::IsValid(std::string* error) const {
 
 std::string RefineSummary::brief() const {
   char buffer[256];
-  std::snprintf(buffer, sizeof buffer, "%s after %d iterations, cost %.6g -> %.6g, rms %.6g over %zu samples, %.3g s",
-                termination.c_str(), iterations, initial_cost, final_cost, rms_residual, samples, seconds);
+  std::snprintf(buffer, sizeof buffer, "%s after %d iterations, cost %.6g -> %.6g, rms %.6g over %zu samples",
+                termination.c_str(), iterations, initial_cost, final_cost, rms_residual, samples);
   std::string line = buffer;
   if (sites_without_samples > 0) line += ", " + std::to_string(sites_without_samples) + " sites without samples";
   return line;

@@ -196,7 +196,6 @@ void summary(std::ostream& out, const AuditReportContext& c) {
                            human_number(c.options->position_floor_bins * r.bin_size_m, 4) + " m), " +
                            human_number(c.options->power_floor_db, 4) + " dB");
   }
-  row(out, "time", fixed_number(r.seconds, 2) + " s");
   out << "</table></div>\n</div>\n";
 
   if (!r.messages.empty()) {
@@ -205,6 +204,18 @@ void summary(std::ostream& out, const AuditReportContext& c) {
     out << "</ul>\n";
   }
   out << "</section>\n";
+}
+
+// The wall-clock times on one line of their own: the only part of the page that differs between
+// runs of the same command (issue 12).
+void run_timings(std::ostream& out, const audit::AuditResult& r) {
+  out << "<p class=\"meta\" id=\"run-timings\">Time: " << fixed_number(r.seconds, 2) << " s";
+  const char* separator = " (";
+  for (const audit::StageTiming& t : r.timings) {
+    out << separator << html_escape(t.stage) << " " << fixed_number(t.seconds, 3) << " s";
+    separator = ", ";
+  }
+  out << (r.timings.empty() ? "" : ")") << "</p>\n";
 }
 
 void map_section(std::ostream& out, const AuditReportContext& c) {
@@ -269,7 +280,9 @@ void write_audit_html(const AuditReportContext& c, std::ostream& out) {
       << "<h1>Coverage map audit</h1>\n<p class=\"meta\">Map <code>" << html_escape(c.map_file) << "</code>";
   if (!c.sensors_file.empty()) out << ", reported sensors <code>" << html_escape(c.sensors_file) << "</code>";
   out << ". Written by <code>covmap audit</code> (report format covmap.audit/1).</p>\n";
-  if (!c.command_line.empty()) out << "<p class=\"meta\">Command: <code>" << html_escape(c.command_line) << "</code></p>\n";
+  if (!c.command_line.empty())
+    out << "<p class=\"meta\" id=\"run-command\">Command: <code>" << html_escape(c.command_line) << "</code></p>\n";
+  run_timings(out, c.result);
   summary(out, c);
   map_section(out, c);
   sensor_table(out, c);

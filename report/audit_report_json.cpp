@@ -128,6 +128,13 @@ json map_json(const AuditReportContext& c) {
   return j;
 }
 
+// Wall-clock times, the one member that differs between runs of the same input (issue 12).
+json timings_json(const audit::AuditResult& r) {
+  json stages = json::array();
+  for (const audit::StageTiming& t : r.timings) stages.push_back({{"stage", t.stage}, {"seconds", number_or_null(t.seconds)}});
+  return {{"seconds", number_or_null(r.seconds)}, {"stages", std::move(stages)}};
+}
+
 }  // namespace
 
 void write_audit_json(const AuditReportContext& c, std::ostream& out) {
@@ -152,7 +159,7 @@ void write_audit_json(const AuditReportContext& c, std::ostream& out) {
                     {"reported", r.reported_agreement ? agreement_json(*r.reported_agreement) : json()}};
   j["thresholds"] = c.options ? thresholds_json(*c.options, r.bin_size_m) : json();
   j["messages"] = string_list(r.messages);
-  j["seconds"] = number_or_null(r.seconds);
+  j["timings"] = timings_json(r);
   j["sensors"] = json::array();
   for (const auto& s : r.sensors) j["sensors"].push_back(sensor_json(s, c.map));
   detail::write_json(j, out, 1);

@@ -106,7 +106,10 @@ TEST(AuditJson, TopLevelMembersAndCounts) {
   EXPECT_EQ(j["thresholds"]["position_floor_m"], 5.0);
   EXPECT_EQ(j["thresholds"]["power_floor_db"], 0.5);
   EXPECT_EQ(j["messages"].size(), 2u);
-  EXPECT_EQ(j["seconds"], 0.75);
+  EXPECT_EQ(j["timings"]["seconds"], 0.75);
+  ASSERT_EQ(j["timings"]["stages"].size(), f.result.timings.size());
+  EXPECT_EQ(j["timings"]["stages"][0]["stage"], f.result.timings[0].stage);
+  EXPECT_EQ(j["timings"]["stages"][0]["seconds"], f.result.timings[0].seconds);
 }
 
 TEST(AuditJson, SensorsCarryReconstructionReportAndComparison) {
@@ -223,7 +226,7 @@ TEST(AuditJson, NonFiniteNumbersBecomeNull) {
   EXPECT_TRUE(j["sensors"][1]["lon"].is_null());  // no position, no geography
   EXPECT_EQ(j["sensors"][1]["y"], 3.0);
   EXPECT_TRUE(j["sensors"][1]["power_error_db"].is_null());
-  EXPECT_TRUE(j["seconds"].is_null());
+  EXPECT_TRUE(j["timings"]["seconds"].is_null());
   EXPECT_TRUE(j["agreement"]["refined"]["hausdorff_m"].is_null());
 }
 

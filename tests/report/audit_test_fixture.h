@@ -112,6 +112,7 @@ inline AuditFixture audit_fixture(bool geographic, const std::string& a_id = "a"
   f.result.refinement_summary = "converged after 12 iterations";
   f.result.messages = {"cleaning: 3 gaps closed", "fit: 1 sensor without uncertainty"};
   f.result.seconds = 0.75;
+  f.result.timings = {{"cleaning and starting values", 0.25}, {"refinement", 0.5}};
   f.result.refined_agreement = {0.975, 12.5, {}, {"ghost"}};
   f.result.reported_agreement = audit::DiagramAgreement{0.91, 85.0, {"c"}, {}};
   f.result.reported_diagram = f.result.refined_diagram;
