@@ -3,6 +3,8 @@
 // walk around the node through the traced faces, and the exact reading of the fixed set.
 #include <algorithm>
 #include <cmath>
+#include <array>
+#include <span>
 #include <vector>
 
 #include "mobius/node_constraint.h"
@@ -34,14 +36,18 @@ std::optional<Constraint> node_constraint(const TracedGraph& t, int f, int h_out
   // the longest: an arc of nearly equal weights may run 1e6 out, and the lines the engine writes
   // for such flat circles make the composition an involution only to ~L/r, which in so large a
   // frame exceeded the tolerance (weights equal to 1e-9: a solution circle read as two points).
-  std::vector<int> walk;
-  std::vector<double> reaches;
+  // Fixed capacity, no allocation: every node of every face is walked when a graph is rejected
+  // (disagreeing_node.cpp), and no node of a bisector graph needs more than kMaxWalk arcs here.
+  constexpr std::size_t kMaxWalk = 64;
+  std::array<int, kMaxWalk> walk_buffer;
+  std::array<double, kMaxWalk> reach_buffer;
+  std::size_t walked = 0, reached = 0;
   for (int h = h_out, face = f;;) {
-    if (h == kNone || g.arcs[h / 2].frame || walk.size() >= 64) return std::nullopt;
-    walk.push_back(h);
+    if (h == kNone || g.arcs[h / 2].frame || walked >= kMaxWalk) return std::nullopt;
+    walk_buffer[walked++] = h;
     const Arc& arc = g.arcs[h / 2];
     const int far_end = (h % 2 == 0) ? arc.to : arc.from;
-    if (far_end != kNone) reaches.push_back(std::abs(mobius::Complex(g.nodes[far_end].x, g.nodes[far_end].y) - at));
+    if (far_end != kNone) reach_buffer[reached++] = std::abs(mobius::Complex(g.nodes[far_end].x, g.nodes[far_end].y) - at);
     const int twin = h ^ 1;
     face = face_of_half[twin];
     h = next_half[twin];
@@ -57,6 +63,7 @@ std::optional<Constraint> node_constraint(const TracedGraph& t, int f, int h_out
   // nothing about where the sites are.
   const double floor = tolerance::kNodeFrameFloor * scale;
   double L = 0.0;
+  const std::span<double> reaches(reach_buffer.data(), reached);
   const auto tiny = std::partition(reaches.begin(), reaches.end(), [&](double r) { return r >= floor; });
   if (tiny == reaches.begin() && !reaches.empty()) {
     L = *std::max_element(reaches.begin(), reaches.end());
@@ -69,7 +76,7 @@ std::optional<Constraint> node_constraint(const TracedGraph& t, int f, int h_out
   const mobius::NodeFrame frame{at, L};
   const double mt = matrix_tolerance(t, at, L);
   mobius::Mobius h_total;
-  for (const int h : walk) h_total = mobius::then_invert_in(h_total, g.arcs[h / 2], frame);
+  for (const int h : std::span<const int>(walk_buffer.data(), walked)) h_total = mobius::then_invert_in(h_total, g.arcs[h / 2], frame);
   Constraint c;
   static_cast<mobius::NodeConstraint&>(c) = mobius::exact_fixed_set(h_total, mt);
   // A solution circle through the node whose curvature is at the rounding of the composition

@@ -6,7 +6,7 @@
 //   input preparation   input_preparation.cpp  clear the input's labels, the tolerance, arc ends
 //   graph frame         graph_frame.cpp        the graph centred and scaled, and back
 //   frame               frame.cpp              nodes on a clipped map's frame, the face outside it
-//   start face          start_face.cpp         the face whose nodes constrain its site the most
+//   start face          start_face.cpp         the face whose near nodes fix its site best
 //   node constraints    node_constraint.cpp    going around a node: the fixed set of the inversions
 //   free root           free_root.cpp          no node fixes a site: the root's region (§3)
 //   candidates          candidates.cpp         the start face's candidate sites, polished
