@@ -89,7 +89,9 @@ struct SensorAudit {
   double position_error_m = 0.0;      // |reported - reconstructed|
   std::optional<double> power_error_db;  // reported - reconstructed power
   std::optional<double> weight_ratio;    // reported / reconstructed weight, both normalised alike
-  double chi2 = 0.0;                  // the Mahalanobis distance² behind the verdict
+  // The Mahalanobis distance² behind the verdict; nullopt when the sensor was not judged by it
+  // (unreported, undetermined, not in the map), so that reports write null, not a made-up 0.
+  std::optional<double> chi2;
   SensorVerdict verdict = SensorVerdict::kUnreported;
   std::string reason;                 // one sentence
   // Agreement of this sensor's cell with the map (intersection over union of areas), for the

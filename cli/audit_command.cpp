@@ -64,6 +64,38 @@ void refuse_implausible_input(const AuditCommandOptions& options, const io::Cove
   }
 }
 
+// Whether the summary lists the sensor by name with its reason: every verdict a planner must act on
+// or look at. No default: a new verdict must be decided here (cli/ compiles with -Werror=switch).
+bool listed_by_name(audit::SensorVerdict verdict) {
+  switch (verdict) {
+    case audit::SensorVerdict::kInconsistent:
+    case audit::SensorVerdict::kUndetermined:
+    case audit::SensorVerdict::kNotInMap: return true;
+    case audit::SensorVerdict::kConsistent:
+    case audit::SensorVerdict::kUnreported: return false;
+  }
+  return true;
+}
+
+// One line that accounts for every sensor (the counts by verdict add up to the total), the
+// agreement of the diagrams, then the sensors worth a look, by name under their verdict.
+void print_summary(const AuditCommandOptions& options, const audit::AuditResult& result,
+                   const report::AuditVerdictCounts& counts) {
+  std::cout << options.map_path << ": " << counts.sensors << " sensors (" << counts.in_map << " with a cell in the map, "
+            << counts.sensors - counts.in_map << " reported without one; " << counts.reported << " reported): "
+            << report::verdict_counts_text(counts) << "; refined diagram agrees with the map on "
+            << fixed(100.0 * result.refined_agreement.mean_iou, 1) << " % of its area";
+  if (result.reported_agreement)
+    std::cout << " (reported sensors: " << fixed(100.0 * result.reported_agreement->mean_iou, 1) << " %)";
+  std::cout << " -> " << options.output_dir << "\n";
+  for (const audit::SensorVerdict verdict : audit::kAllSensorVerdicts) {
+    if (!listed_by_name(verdict) || counts.of(verdict) == 0) continue;
+    std::cout << "  " << report::verdict_words(verdict) << ":\n";
+    for (const auto& s : result.sensors)
+      if (s.verdict == verdict) std::cout << "    " << s.id << ": " << s.reason << "\n";
+  }
+}
+
 }  // namespace
 
 int run_audit(const AuditCommandOptions& options) {
@@ -123,16 +155,8 @@ int run_audit(const AuditCommandOptions& options) {
                                                  {"diagram.geojson", diagram.str()}},
                             options.force);
     const report::AuditVerdictCounts counts = report::count_verdicts(result.sensors);
-    std::cout << options.map_path << ": " << result.cleaned.sensors.size() << " sensors in the map, "
-              << counts.reported << " reported: " << counts.consistent << " consistent, " << counts.inconsistent
-              << " inconsistent, " << counts.not_in_map << " not in the map; refined diagram agrees with the map on "
-              << fixed(100.0 * result.refined_agreement.mean_iou, 1) << " % of its area";
-    if (result.reported_agreement)
-      std::cout << " (reported sensors: " << fixed(100.0 * result.reported_agreement->mean_iou, 1) << " %)";
-    std::cout << " -> " << options.output_dir << "\n";
-    for (const auto& s : result.sensors)
-      if (s.verdict == audit::SensorVerdict::kInconsistent) std::cout << "  " << s.id << ": " << s.reason << "\n";
-    return options.fail_on_inconsistent && counts.inconsistent > 0 ? kFindings : kOk;
+    print_summary(options, result, counts);
+    return options.fail_on_inconsistent && counts.of(audit::SensorVerdict::kInconsistent) > 0 ? kFindings : kOk;
   });
 }
 

@@ -63,7 +63,7 @@ json sensor_properties(const audit::SensorAudit& s, const io::CoverageMap& map) 
             {"reason", s.reason},
             {"position_error_m", compared ? number_or_null(s.position_error_m) : json()},
             {"power_error_db", compared ? number_or_null(s.power_error_db) : json()},
-            {"chi2", compared ? number_or_null(s.chi2) : json()},
+            {"chi2", number_or_null(s.chi2)},
             {"iou_refined", number_or_null(s.iou_refined)},
             {"iou_reported", number_or_null(s.iou_reported)}};
   // Reported position under the names a GIS user expects for the map's coordinates.

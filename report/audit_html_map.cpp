@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 #include <ostream>
+#include <stdexcept>
+#include <string>
 #include <unordered_map>
 
 #include "report/audit_geometry.h"
@@ -134,7 +136,7 @@ std::string arcs_path(const Diagram& d, const Frame& f, const AuditRenderOptions
 }
 
 std::string sensor_title(const audit::SensorAudit& s) {
-  std::string t = s.id + " \xE2\x80\x94 " + verdict_label(s.verdict);
+  std::string t = s.id + " \xE2\x80\x94 " + std::string(verdict_words(s.verdict));
   if (s.in_map) {
     t += "\nweight " + human_number(s.weight, 4);
     if (s.tx_power_dbm) t += ", power " + human_number(*s.tx_power_dbm, 4) + " dBm";
@@ -143,8 +145,8 @@ std::string sensor_title(const audit::SensorAudit& s) {
   if (s.reported && s.in_map) {
     t += "\nmoved " + human_number(s.position_error_m) + " m from the reported position";
     if (s.power_error_db) t += "\npower error " + human_number(*s.power_error_db) + " dB";
-    t += "\n\xCF\x87\xC2\xB2 = " + human_number(s.chi2);
   }
+  if (s.chi2) t += "\n\xCF\x87\xC2\xB2 = " + human_number(*s.chi2);
   if (!s.reason.empty()) t += "\n" + s.reason;
   return html_escape(t);
 }
@@ -223,25 +225,15 @@ std::string verdict_colour(audit::SensorVerdict verdict) {
     case audit::SensorVerdict::kInconsistent: return "#d73027";
     case audit::SensorVerdict::kNotInMap: return "#e08000";
     case audit::SensorVerdict::kUnreported: return "#2b6cb0";
-    case audit::SensorVerdict::kUndetermined: return "#555555";
+    case audit::SensorVerdict::kUndetermined: return "#7a7a7a";
   }
-  return "#555555";
-}
-
-std::string verdict_label(audit::SensorVerdict verdict) {
-  if (verdict == audit::SensorVerdict::kNotInMap) return "not in map";
-  return std::string(audit::to_string(verdict));
+  throw std::logic_error("verdict_colour: a verdict outside the enumeration");
 }
 
 std::string verdict_class(audit::SensorVerdict verdict) {
-  switch (verdict) {
-    case audit::SensorVerdict::kConsistent: return "v-consistent";
-    case audit::SensorVerdict::kInconsistent: return "v-inconsistent";
-    case audit::SensorVerdict::kNotInMap: return "v-not-in-map";
-    case audit::SensorVerdict::kUnreported: return "v-unreported";
-    case audit::SensorVerdict::kUndetermined: return "v-other";  // no style of its own yet (issue 13)
-  }
-  return "v-other";
+  std::string c = "v-" + std::string(audit::to_string(verdict));
+  std::replace(c.begin(), c.end(), '_', '-');
+  return c;
 }
 
 void write_audit_map_svg(const AuditReportContext& c, std::ostream& out) {
@@ -262,10 +254,8 @@ void write_audit_map_svg(const AuditReportContext& c, std::ostream& out) {
       << "\" height=\"" << human_number(static_cast<double>(f.height) * o.html_grid_px, 10)
       << "\" preserveAspectRatio=\"xMidYMid meet\" role=\"img\" aria-label=\"coverage map\">\n";
   out << "<defs>\n";
-  // One arrow head per class (undetermined draws as "v-other").
-  for (const audit::SensorVerdict verdict : {audit::SensorVerdict::kConsistent, audit::SensorVerdict::kInconsistent,
-                                             audit::SensorVerdict::kNotInMap, audit::SensorVerdict::kUnreported,
-                                             audit::SensorVerdict::kUndetermined}) {
+  // One arrow head per verdict.
+  for (const audit::SensorVerdict verdict : audit::kAllSensorVerdicts) {
     out << "<marker id=\"arrow-" << verdict_class(verdict) << "\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerUnits=\"userSpaceOnUse\" markerWidth=\""
         << units(kArrowHeadPx) << "\" markerHeight=\"" << units(kArrowHeadPx)
         << "\" orient=\"auto\"><path d=\"M0 0L10 5L0 10z\" fill=\"" << verdict_colour(verdict) << "\"/></marker>\n";

@@ -46,13 +46,11 @@ std::string grid_path(std::span<const GridPoint> points, bool closed);
 // The <svg id="map"> element with everything above.
 void write_audit_map_svg(const AuditReportContext& context, std::ostream& out);
 
-// Verdict colours shared by the map and the table: green consistent, red inconsistent, orange
-// not in map, blue unreported.
+// Verdict colours shared by the map, the cards, the legend and the table: green consistent, red
+// inconsistent, grey undetermined, orange not in map, blue unreported.
 std::string verdict_colour(audit::SensorVerdict verdict);
-// "consistent", "inconsistent", "undetermined", "not in map", "unreported".
-std::string verdict_label(audit::SensorVerdict verdict);
-// A CSS class name for the verdict: "v-consistent", "v-inconsistent", "v-not-in-map",
-// "v-unreported", "v-other".
+// A CSS class name for the verdict: "v-" and its report name with '-' for '_' ("v-consistent",
+// "v-not-in-map", ...).
 std::string verdict_class(audit::SensorVerdict verdict);
 
 }  // namespace covmap::report::detail

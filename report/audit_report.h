@@ -29,11 +29,13 @@
 //    io/atomic_file.h to get all-or-nothing files).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <iosfwd>
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 
 #include "io/coverage_map.h"
 #include "audit/audit.h"
@@ -88,20 +90,28 @@ void write_audit_html(const AuditReportContext& context, std::ostream& out);    
 void write_sensors_geojson(const AuditReportContext& context, std::ostream& out);  // sensors.geojson
 void write_diagram_geojson(const AuditReportContext& context, std::ostream& out);  // diagram.geojson
 
-// How the audited sensors came out, as the summaries of report.json and report.html count them.
+// How the audited sensors came out, as report.json, report.html and `covmap audit`'s summary line
+// count them. Every sensor has exactly one verdict, so the counts by verdict add up to `sensors`.
 struct AuditVerdictCounts {
-  std::size_t sensors = 0;       // all entries of AuditResult::sensors
-  std::size_t in_map = 0;        // with a cell in the map
-  std::size_t reported = 0;      // with reported values
-  std::size_t consistent = 0;    // verdict "consistent"
-  std::size_t inconsistent = 0;  // verdict "inconsistent"
-  std::size_t not_in_map = 0;    // reported, but no cell of the map names them
-  std::size_t unreported = 0;    // in the map, not reported (no verdict)
-  // Reported, but not determined by the map. report.json's summary still calls this count "other"
-  // and report.html "other verdict" (kept unchanged by the restructuring; issue 13 renames it).
-  std::size_t undetermined = 0;
+  std::size_t sensors = 0;   // all entries of AuditResult::sensors: map sensors, then reported-only
+  std::size_t in_map = 0;    // with a cell in the map
+  std::size_t reported = 0;  // with reported values
+  // by_verdict[i]: the sensors whose verdict is audit::kAllSensorVerdicts[i].
+  std::array<std::size_t, std::size(audit::kAllSensorVerdicts)> by_verdict{};
+
+  std::size_t of(audit::SensorVerdict verdict) const;
 };
+// Throws std::logic_error for a verdict missing from audit::kAllSensorVerdicts (a programming
+// error: such a sensor would otherwise go uncounted).
 AuditVerdictCounts count_verdicts(std::span<const audit::SensorAudit> sensors);
+
+// A verdict in plain words, the same in the summary line, the HTML cards, legend and table:
+// "consistent", "inconsistent", "undetermined (the map cannot tell)", "reported but not in the
+// map", "in the map but not reported".
+std::string_view verdict_words(audit::SensorVerdict verdict);
+// Every verdict with its count, in the order of audit::kAllSensorVerdicts, for people:
+// "47 consistent, 5 inconsistent, 6 undetermined (the map cannot tell), ...". Zero counts included.
+std::string verdict_counts_text(const AuditVerdictCounts& counts);
 
 // Every repair the cleaning made: merged junctions, closed gaps, resolved overlaps, dropped short
 // chains and snapped nodes.

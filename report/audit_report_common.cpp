@@ -1,5 +1,10 @@
-// The parts of report/audit_report.h that every report shares: option validation and the counts.
+// The parts of report/audit_report.h that every report shares: option validation, the counts and
+// the verdicts' words.
+#include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <stdexcept>
+#include <string>
 
 #include "report/audit_report.h"
 
@@ -24,21 +29,47 @@ bool AuditRenderOptions::is_valid(std::string* why) const {
   return true;
 }
 
+std::size_t AuditVerdictCounts::of(audit::SensorVerdict verdict) const {
+  for (std::size_t i = 0; i < by_verdict.size(); ++i)
+    if (audit::kAllSensorVerdicts[i] == verdict) return by_verdict[i];
+  return 0;
+}
+
 AuditVerdictCounts count_verdicts(std::span<const audit::SensorAudit> sensors) {
   AuditVerdictCounts c;
   c.sensors = sensors.size();
   for (const auto& s : sensors) {
     c.in_map += s.in_map ? 1 : 0;
     c.reported += s.reported ? 1 : 0;
-    switch (s.verdict) {
-      case audit::SensorVerdict::kConsistent: ++c.consistent; break;
-      case audit::SensorVerdict::kInconsistent: ++c.inconsistent; break;
-      case audit::SensorVerdict::kNotInMap: ++c.not_in_map; break;
-      case audit::SensorVerdict::kUnreported: ++c.unreported; break;
-      case audit::SensorVerdict::kUndetermined: ++c.undetermined; break;
-    }
+    const auto* at = std::find(std::begin(audit::kAllSensorVerdicts), std::end(audit::kAllSensorVerdicts), s.verdict);
+    if (at == std::end(audit::kAllSensorVerdicts))
+      throw std::logic_error("count_verdicts: a verdict missing from audit::kAllSensorVerdicts");
+    ++c.by_verdict[static_cast<std::size_t>(at - std::begin(audit::kAllSensorVerdicts))];
   }
   return c;
+}
+
+std::string_view verdict_words(audit::SensorVerdict verdict) {
+  // No default: a new verdict must be named here (report/ compiles with -Werror=switch).
+  switch (verdict) {
+    case audit::SensorVerdict::kUnreported: return "in the map but not reported";
+    case audit::SensorVerdict::kConsistent: return "consistent";
+    case audit::SensorVerdict::kInconsistent: return "inconsistent";
+    case audit::SensorVerdict::kUndetermined: return "undetermined (the map cannot tell)";
+    case audit::SensorVerdict::kNotInMap: return "reported but not in the map";
+  }
+  throw std::logic_error("verdict_words: a verdict outside the enumeration");
+}
+
+std::string verdict_counts_text(const AuditVerdictCounts& counts) {
+  std::string text;
+  for (std::size_t i = 0; i < counts.by_verdict.size(); ++i) {
+    if (i) text += ", ";
+    text += std::to_string(counts.by_verdict[i]);
+    text += ' ';
+    text += verdict_words(audit::kAllSensorVerdicts[i]);
+  }
+  return text;
 }
 
 std::size_t cleaning_repairs(const cleaning::CleaningReport& r) {

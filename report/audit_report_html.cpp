@@ -3,6 +3,8 @@
 // Nothing is loaded from anywhere: CSS and JavaScript are inline and the page names no URL.
 #include <ostream>
 #include <stdexcept>
+#include <string>
+#include <string_view>
 
 #include "report/audit_html_map.h"
 #include "report/audit_html_text.h"
@@ -25,8 +27,6 @@ code{font-size:.92em;background:#f3f3f3;padding:0 .25em;word-break:break-all}
 .cards{display:flex;flex-wrap:wrap;gap:.6em;margin:.6em 0}
 .card{border:1px solid #ddd;border-left-width:5px;border-radius:5px;padding:.4em .9em;min-width:7.5em}
 .card b{display:block;font-size:1.7em;font-variant-numeric:tabular-nums}
-.card.v-consistent{border-left-color:#1a9850}.card.v-inconsistent{border-left-color:#d73027}
-.card.v-not-in-map{border-left-color:#e08000}.card.v-unreported{border-left-color:#2b6cb0}
 .details{display:flex;flex-wrap:wrap;gap:0 2.5em}
 table{border-collapse:collapse}td,th{padding:.2em .6em;text-align:left;border-bottom:1px solid #eee;vertical-align:top}
 table.kv th{font-weight:normal;color:#555}
@@ -34,8 +34,6 @@ td.n{text-align:right;font-variant-numeric:tabular-nums;white-space:nowrap}
 table.sortable th{cursor:pointer;user-select:none;background:#f5f5f5;position:sticky;top:0;white-space:nowrap}
 table.sortable th[data-dir=asc]::after{content:" \25B2"}table.sortable th[data-dir=desc]::after{content:" \25BC"}
 td.verdict{font-weight:600;white-space:nowrap}
-.v-consistent td.verdict{color:#1a9850}.v-inconsistent td.verdict{color:#d73027}
-.v-not-in-map td.verdict{color:#e08000}.v-unreported td.verdict{color:#2b6cb0}
 tr.v-inconsistent{background:#fff3f1}
 .controls label{margin-right:1.2em}
 .legend span{margin-right:1.2em;white-space:nowrap}.legend i{display:inline-block;width:.8em;height:.8em;border-radius:50%;margin-right:.3em;vertical-align:-.05em}
@@ -115,9 +113,20 @@ constexpr const char* kScript = R"js(
 })();
 )js";
 
+// The colours of every verdict's card and table cell, from the one palette (verdict_colour) that
+// also draws the map and the legend.
+std::string verdict_style() {
+  std::string css;
+  for (const audit::SensorVerdict verdict : audit::kAllSensorVerdicts) {
+    const std::string c = detail::verdict_class(verdict), colour = detail::verdict_colour(verdict);
+    css += ".card." + c + "{border-left-color:" + colour + "}." + c + " td.verdict{color:" + colour + "}\n";
+  }
+  return css;
+}
+
 std::string count_text(std::size_t n) { return std::to_string(n); }
 
-void card(std::ostream& out, const char* id, const char* css_class, std::size_t value, const char* label) {
+void card(std::ostream& out, const std::string& id, const std::string& css_class, std::size_t value, std::string_view label) {
   out << "<div class=\"card " << css_class << "\"><b id=\"" << id << "\">" << value << "</b>" << label << "</div>\n";
 }
 
@@ -149,13 +158,15 @@ void summary(std::ostream& out, const AuditReportContext& c) {
   const audit::AuditResult& r = c.result;
   const AuditVerdictCounts n = count_verdicts(r.sensors);
   out << "<section id=\"summary\"><h2>Summary</h2>\n<div class=\"cards\">\n";
+  // Every sensor once: the total, then one card per verdict (zero counts too), adding up to it.
   card(out, "count-sensors", "", n.sensors, "sensors");
-  card(out, "count-consistent", "v-consistent", n.consistent, "consistent");
-  card(out, "count-inconsistent", "v-inconsistent", n.inconsistent, "inconsistent");
-  card(out, "count-not-in-map", "v-not-in-map", n.not_in_map, "reported, not in map");
-  card(out, "count-unreported", "v-unreported", n.unreported, "in map, unreported");
-  if (n.undetermined) card(out, "count-other", "", n.undetermined, "other verdict");
-  out << "</div>\n<div class=\"details\">\n";
+  for (std::size_t i = 0; i < n.by_verdict.size(); ++i) {
+    const std::string css = detail::verdict_class(audit::kAllSensorVerdicts[i]);
+    card(out, "count-" + css.substr(2), css, n.by_verdict[i], html_escape(verdict_words(audit::kAllSensorVerdicts[i])));
+  }
+  out << "</div>\n<p class=\"meta\" id=\"count-sum\">" << n.sensors << " sensors = " << n.in_map
+      << " with a cell in the map + " << (n.sensors - n.in_map) << " reported without one; " << n.reported
+      << " reported in all.</p>\n<div class=\"details\">\n";
   agreement_table(out, "Recomputed (refined) sensors vs map", &r.refined_agreement);
   agreement_table(out, "Reported sensors vs map", r.reported_agreement ? &*r.reported_agreement : nullptr);
 
@@ -227,10 +238,8 @@ void map_section(std::ostream& out, const AuditReportContext& c) {
       << "<label><input type=\"checkbox\" data-layer=\"layer-sensors\" checked> sensors</label></div>\n";
   detail::write_audit_map_svg(c, out);
   out << "<p class=\"legend\">";
-  // Undetermined sensors have no legend entry yet (issue 13 redesigns the page).
-  for (const audit::SensorVerdict verdict : {audit::SensorVerdict::kConsistent, audit::SensorVerdict::kInconsistent,
-                                             audit::SensorVerdict::kNotInMap, audit::SensorVerdict::kUnreported}) {
-    out << "<span><i style=\"background:" << detail::verdict_colour(verdict) << "\"></i>" << detail::verdict_label(verdict)
+  for (const audit::SensorVerdict verdict : audit::kAllSensorVerdicts) {
+    out << "<span><i style=\"background:" << detail::verdict_colour(verdict) << "\"></i>" << html_escape(verdict_words(verdict))
         << "</span>";
   }
   out << "<span>dots: reconstructed positions; rings: reported positions; arrows: reported &rarr; "
@@ -255,11 +264,11 @@ void sensor_table(std::ostream& out, const AuditReportContext& c) {
     const bool compared = s.reported && s.in_map;
     const auto when = [](bool ok, double v) { return ok ? std::optional<double>(v) : std::nullopt; };
     out << "<tr class=\"" << detail::verdict_class(s.verdict) << "\"><td><code>" << html_escape(s.id) << "</code></td>"
-        << "<td class=\"verdict\">" << html_escape(detail::verdict_label(s.verdict)) << "</td>"
+        << "<td class=\"verdict\">" << html_escape(verdict_words(s.verdict)) << "</td>"
         << num_cell(when(compared, s.position_error_m))
         << num_cell(when(s.in_map && s.uncertainty_available, s.sigma_position_m))
         << num_cell(compared ? s.power_error_db : std::nullopt)
-        << num_cell(when(compared, s.chi2))
+        << num_cell(s.chi2)
         << num_cell(when(s.in_map, s.weight), 4)
         << num_cell(s.in_map ? s.tx_power_dbm : std::nullopt, 4)
         << num_cell(s.reported ? s.reported->weight : std::nullopt, 4)
@@ -276,7 +285,7 @@ void write_audit_html(const AuditReportContext& c, std::ostream& out) {
   if (std::string why; !c.render.is_valid(&why)) throw std::invalid_argument("write_audit_html: " + why);
   out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
       << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
-      << "<title>covmap audit: " << html_escape(c.map_file) << "</title>\n<style>" << kStyle << "</style>\n</head>\n<body>\n"
+      << "<title>covmap audit: " << html_escape(c.map_file) << "</title>\n<style>" << kStyle << verdict_style() << "</style>\n</head>\n<body>\n"
       << "<h1>Coverage map audit</h1>\n<p class=\"meta\">Map <code>" << html_escape(c.map_file) << "</code>";
   if (!c.sensors_file.empty()) out << ", reported sensors <code>" << html_escape(c.sensors_file) << "</code>";
   out << ". Written by <code>covmap audit</code> (report format covmap.audit/1).</p>\n";

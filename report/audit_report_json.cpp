@@ -70,7 +70,7 @@ json sensor_json(const audit::SensorAudit& s, const io::CoverageMap& map) {
   j["position_error_m"] = compared ? number_or_null(s.position_error_m) : json();
   j["power_error_db"] = compared ? number_or_null(s.power_error_db) : json();
   j["weight_ratio"] = compared ? number_or_null(s.weight_ratio) : json();
-  j["chi2"] = compared ? number_or_null(s.chi2) : json();
+  j["chi2"] = number_or_null(s.chi2);  // null unless the verdict was reached by the χ² test
   j["verdict"] = detail::verdict_json(s.verdict);
   j["reason"] = s.reason;
   j["iou_refined"] = number_or_null(s.iou_refined);
@@ -128,6 +128,15 @@ json map_json(const AuditReportContext& c) {
   return j;
 }
 
+// Every sensor counted once: the totals, then every verdict of audit::kAllSensorVerdicts under its
+// report name, so the verdict counts add up to "sensors".
+json summary_json(const AuditVerdictCounts& counts) {
+  json j = {{"sensors", counts.sensors}, {"in_map", counts.in_map}, {"reported", counts.reported}};
+  for (std::size_t i = 0; i < counts.by_verdict.size(); ++i)
+    j[std::string(audit::to_string(audit::kAllSensorVerdicts[i]))] = counts.by_verdict[i];
+  return j;
+}
+
 // Wall-clock times, the one member that differs between runs of the same input (issue 12).
 json timings_json(const audit::AuditResult& r) {
   json stages = json::array();
@@ -140,17 +149,13 @@ json timings_json(const audit::AuditResult& r) {
 void write_audit_json(const AuditReportContext& c, std::ostream& out) {
   if (std::string why; !c.render.is_valid(&why)) throw std::invalid_argument("write_audit_json: " + why);
   const audit::AuditResult& r = c.result;
-  const AuditVerdictCounts counts = count_verdicts(r.sensors);
   json j = json::object();
   j["format"] = "covmap.audit/1";
   j["command_line"] = c.command_line;
   j["map"] = map_json(c);
   j["sensors_file"] = c.sensors_file.empty() ? json() : json(c.sensors_file);
   j["alpha"] = number_or_null(c.alpha);
-  j["summary"] = {{"sensors", counts.sensors},       {"in_map", counts.in_map},
-                  {"reported", counts.reported},     {"consistent", counts.consistent},
-                  {"inconsistent", counts.inconsistent}, {"not_in_map", counts.not_in_map},
-                  {"unreported", counts.unreported}, {"other", counts.undetermined}};
+  j["summary"] = summary_json(count_verdicts(r.sensors));
   j["cleaning"] = cleaning_json(r.cleaned.report);
   j["bin_size_m"] = number_or_null(r.bin_size_m);
   j["boundary_samples"] = r.boundary_samples;

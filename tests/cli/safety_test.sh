@@ -42,7 +42,7 @@ expect 2 "did not write.*mydata.txt.*--force" "foreign folder refused"
 [ "$(cat "$work/d/mydata.txt")" = precious ] && [ "$(ls -A "$work/d")" = mydata.txt ] && ok || fail "foreign folder touched: $(ls -A "$work/d")"
 # 2. With --force covmap writes its files beside the user's and leaves the user's alone.
 run 120 audit --planar "$map" -o "$work/d" -q --force
-expect 0 "sensors in the map" "--force into a foreign folder"
+expect 0 "with a cell in the map" "--force into a foreign folder"
 [ "$(cat "$work/d/mydata.txt")" = precious ] && [ -s "$work/d/report.json" ] && ok || fail "--force lost the user's file"
 # 3. A file where the report folder should go is refused and survives.
 echo mine >"$work/f.txt"

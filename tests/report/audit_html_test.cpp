@@ -125,6 +125,40 @@ TEST(AuditHtml, SummaryCountsVerdicts) {
   EXPECT_NE(html.find("0.975"), std::string::npos);  // refined mean IoU
 }
 
+// Issue 12: the page called undetermined sensors "other verdict" and left them out of the legend.
+// Every verdict has a card with its count (zero included), its words in the legend, and the cards
+// add up to the sensors.
+TEST(AuditHtml, EveryVerdictNamedCountedAndInTheLegend) {
+  const AuditFixture f = testing::audit_fixture_with_undetermined(true);
+  const std::string html = html_of(context_of(f));
+  EXPECT_EQ(html.find("other verdict"), std::string::npos);
+  EXPECT_EQ(html.find("v-other"), std::string::npos);
+  const std::string legend = between(html, "<p class=\"legend\">", "</p>");
+  std::size_t total = 0;
+  for (const audit::SensorVerdict v : audit::kAllSensorVerdicts) {
+    const std::string name = std::regex_replace(std::string(audit::to_string(v)), std::regex("_"), "-");
+    const std::string words = detail::html_escape(verdict_words(v));
+    const std::size_t want = static_cast<std::size_t>(std::count_if(
+        f.result.sensors.begin(), f.result.sensors.end(), [&](const audit::SensorAudit& a) { return a.verdict == v; }));
+    EXPECT_NE(html.find("id=\"count-" + name + "\">" + std::to_string(want) + "</b>" + words + "<"), std::string::npos)
+        << name;
+    EXPECT_NE(legend.find(words), std::string::npos) << name;
+    EXPECT_NE(html.find(".card.v-" + name + "{"), std::string::npos) << name;  // styled like the legend
+    total += want;
+  }
+  EXPECT_EQ(total, f.result.sensors.size());
+  EXPECT_NE(html.find("id=\"count-undetermined\">1<"), std::string::npos);
+  // The undetermined sensor's row has no χ² (an empty cell), not 0.
+  const std::string row = between(html, "<tr class=\"v-undetermined\">", "</tr>");
+  ASSERT_FALSE(row.empty());
+  std::vector<std::string> cells;
+  const std::regex cell(R"(<td[^>]*>)");
+  for (auto it = std::sregex_iterator(row.begin(), row.end(), cell); it != std::sregex_iterator(); ++it)
+    cells.push_back(it->str());
+  ASSERT_GT(cells.size(), 5u);
+  EXPECT_EQ(cells[5], "<td class=\"n\" data-v=\"\">") << row;  // column 6: χ²
+}
+
 TEST(AuditHtml, MapShowsCellsBoundariesArrowsAndDots) {
   const AuditFixture f = audit_fixture(false);
   const std::string html = html_of(context_of(f));

@@ -178,6 +178,82 @@ TEST(AuditJson, SensorsCarryReconstructionReportAndComparison) {
   EXPECT_EQ(e["reported"]["x"], 50.0);
 }
 
+// Issue 12: the summary dropped undetermined sensors (counted them as "other"), so its verdict
+// counts did not add up. Every verdict of the enumeration is a member, counted here by hand.
+TEST(AuditJson, SummaryCountsEveryVerdictAndAddsUp) {
+  const AuditFixture f = testing::audit_fixture_with_undetermined(true);
+  const json s = audit_json(context_of(f))["summary"];
+  EXPECT_FALSE(s.contains("other"));
+  std::size_t total = 0;
+  for (const audit::SensorVerdict v : audit::kAllSensorVerdicts) {
+    const std::string name(audit::to_string(v));
+    ASSERT_TRUE(s.contains(name)) << name;
+    const auto want = std::count_if(f.result.sensors.begin(), f.result.sensors.end(),
+                                    [&](const audit::SensorAudit& a) { return a.verdict == v; });
+    EXPECT_EQ(s[name].get<std::size_t>(), static_cast<std::size_t>(want)) << name;
+    total += s[name].get<std::size_t>();
+  }
+  EXPECT_EQ(s["undetermined"], 1);
+  EXPECT_EQ(s["sensors"], 6);
+  EXPECT_EQ(total, s["sensors"].get<std::size_t>());
+  EXPECT_EQ(s["in_map"], 5);
+  EXPECT_EQ(s["reported"], 5);
+}
+
+// Issue 12: an undetermined sensor's χ² was written as 0.0; it was never computed, so null, in
+// report.json and sensors.geojson alike, while the other numbers of its comparison are written.
+TEST(AuditJson, ChiSquareOfAnUndeterminedSensorIsNull) {
+  const AuditFixture f = testing::audit_fixture_with_undetermined(true);
+  const json u = audit_json(context_of(f))["sensors"][4];
+  ASSERT_EQ(u["id"], "u");
+  EXPECT_EQ(u["verdict"], "undetermined");
+  EXPECT_TRUE(u["chi2"].is_null());
+  EXPECT_EQ(u["position_error_m"].get<double>(), std::hypot(10.0, 10.0));
+  bool found = false;
+  for (const auto& feature : features_of_kind(sensors_geojson(context_of(f)), "sensor")) {
+    const json& p = feature["properties"];
+    if (p["id"] == "u") {
+      found = true;
+      EXPECT_TRUE(p["chi2"].is_null());
+      EXPECT_EQ(p["verdict"], "undetermined");
+    } else if (p["id"] == "b") {
+      EXPECT_EQ(p["chi2"], 412.0);  // judged: its χ² is written
+    }
+  }
+  EXPECT_TRUE(found);
+}
+
+TEST(AuditCounts, EverySensorCountedOnceUnderItsVerdict) {
+  const AuditFixture f = testing::audit_fixture_with_undetermined(false);
+  const AuditVerdictCounts n = count_verdicts(f.result.sensors);
+  std::size_t total = 0;
+  for (const std::size_t k : n.by_verdict) total += k;
+  EXPECT_EQ(total, f.result.sensors.size());
+  EXPECT_EQ(n.of(audit::SensorVerdict::kConsistent), 2u);
+  EXPECT_EQ(n.of(audit::SensorVerdict::kInconsistent), 1u);
+  EXPECT_EQ(n.of(audit::SensorVerdict::kUndetermined), 1u);
+  EXPECT_EQ(n.of(audit::SensorVerdict::kNotInMap), 1u);
+  EXPECT_EQ(n.of(audit::SensorVerdict::kUnreported), 1u);
+  // The text for people names every verdict with its count, zero counts included.
+  const std::string text = verdict_counts_text(n);
+  for (const audit::SensorVerdict v : audit::kAllSensorVerdicts)
+    EXPECT_NE(text.find(std::to_string(n.of(v)) + " " + std::string(verdict_words(v))), std::string::npos) << text;
+  const std::string none = verdict_counts_text(count_verdicts({}));
+  for (const audit::SensorVerdict v : audit::kAllSensorVerdicts)
+    EXPECT_NE(none.find("0 " + std::string(verdict_words(v))), std::string::npos) << none;
+}
+
+// Plain, distinct words for every verdict: no generic "other", none naming two verdicts.
+TEST(AuditCounts, EveryVerdictHasItsOwnWords) {
+  std::set<std::string> seen;
+  for (const audit::SensorVerdict v : audit::kAllSensorVerdicts) {
+    const std::string words(verdict_words(v));
+    EXPECT_FALSE(words.empty());
+    EXPECT_EQ(words.find("other"), std::string::npos) << words;
+    EXPECT_TRUE(seen.insert(words).second) << words;
+  }
+}
+
 TEST(AuditJson, PlanarMapHasNullLonLatAndProjection) {
   const AuditFixture f = audit_fixture(false);
   const json j = audit_json(context_of(f));

@@ -150,6 +150,22 @@ inline AuditFixture audit_fixture(bool geographic, const std::string& a_id = "a"
   return f;
 }
 
+// The fixture plus sensor 'u': in the map and reported, but undetermined, so never judged by the
+// χ² test (chi2 unset) — the sensor the reports used to count as "other" with χ² = 0 (issue 12).
+inline AuditFixture audit_fixture_with_undetermined(bool geographic) {
+  AuditFixture f = audit_fixture(geographic);
+  audit::SensorAudit u;
+  u.id = "u";
+  u.position = {300.0, 700.0};
+  u.weight = 0.2;
+  u.reported = ReportedSensor{.id = "u", .position = {310.0, 690.0}, .weight = 0.2};
+  u.position_error_m = std::hypot(10.0, 10.0);
+  u.verdict = audit::SensorVerdict::kUndetermined;
+  u.reason = "the map does not determine this sensor (too few boundary points); not judged";
+  f.result.sensors.insert(f.result.sensors.begin() + 4, u);  // map sensors first, then reported-only
+  return f;
+}
+
 inline AuditReportContext context_of(const AuditFixture& f) {
   return AuditReportContext{.result = f.result,
                             .map = f.map,
