@@ -106,11 +106,12 @@ struct AuditVerdictCounts {
 AuditVerdictCounts count_verdicts(std::span<const audit::SensorAudit> sensors);
 
 // A verdict in plain words, the same in the summary line, the HTML cards, legend and table:
-// "consistent", "inconsistent", "undetermined (the map cannot tell)", "reported but not in the
-// map", "in the map but not reported".
+// "consistent", "inconsistent", "undetermined (not judged)", "reported but not in the map", "in
+// the map but not reported". Each sensor's reason says why in its own case.
 std::string_view verdict_words(audit::SensorVerdict verdict);
-// Every verdict with its count, in the order of audit::kAllSensorVerdicts, for people:
-// "47 consistent, 5 inconsistent, 6 undetermined (the map cannot tell), ...". Zero counts included.
+// Every verdict with its count, in the order of audit::kAllSensorVerdicts, zero counts included, for
+// people: "0 in the map but not reported, 47 consistent, 5 inconsistent, 6 undetermined (not
+// judged), 0 reported but not in the map".
 std::string verdict_counts_text(const AuditVerdictCounts& counts);
 
 // Every repair the cleaning made: merged junctions, closed gaps, resolved overlaps, dropped short

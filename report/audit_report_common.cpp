@@ -55,7 +55,7 @@ std::string_view verdict_words(audit::SensorVerdict verdict) {
     case audit::SensorVerdict::kUnreported: return "in the map but not reported";
     case audit::SensorVerdict::kConsistent: return "consistent";
     case audit::SensorVerdict::kInconsistent: return "inconsistent";
-    case audit::SensorVerdict::kUndetermined: return "undetermined (the map cannot tell)";
+    case audit::SensorVerdict::kUndetermined: return "undetermined (not judged)";
     case audit::SensorVerdict::kNotInMap: return "reported but not in the map";
   }
   throw std::logic_error("verdict_words: a verdict outside the enumeration");
