@@ -18,7 +18,9 @@ is adjusted to what the audit achieves:
              map and its verdict is neither null nor "not_in_map"
   undetermined <= 2 % of the sensors whose cell the map resolves (below)
   accounting the summary's counts by verdict add up to its sensors, match the sensors listed, and
-             the stdout summary line says the same; every truth sensor is listed once
+             the stdout summary line says the same; every truth sensor is listed once; χ² is a
+             number exactly for the sensors the χ² test judged (null for undetermined, not_in_map
+             and unreported ones)
 
 "Can reveal", defined from the truth alone (independent of the audit):
   - the cell is resolved: it has at least MIN_CELL_BINS = 100 bins, i.e. it is about 10 bins
@@ -97,6 +99,12 @@ def accounting_failures(name, truth, report, stdout):
     if sorted(ids) != truth_ids:
         failures.append(f"{name}: sensors listed {len(ids)} (distinct {len(set(ids))}) are not the "
                         f"{len(truth_ids)} true sensors")
+    # A χ² exists only where the χ² test judged the sensor; elsewhere it was never computed: null.
+    for s in listed:
+        judged = s["verdict"] in ("consistent", "inconsistent")
+        if judged != (s["chi2"] is not None) and s["verdict"] in ("consistent", "inconsistent", "undetermined",
+                                                                   "not_in_map", None):
+            failures.append(f"{name}: sensor {s['id']} ({s['verdict']}) has chi2 {s['chi2']}")
     # stdout: "MAP: N sensors (...): n1 words, n2 words, ...; refined diagram ..."
     first = stdout.splitlines()[0] if stdout else ""
     match = re.match(r".*?: (\d+) sensors \((\d+) with a cell in the map, (\d+) reported without one; "
