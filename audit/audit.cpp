@@ -2,6 +2,7 @@
 #include "audit/audit.h"
 
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 #include <string_view>
 #include <unordered_set>
@@ -40,6 +41,18 @@ void refuse_oversized(std::span<const CoverageCell> map) {
     throw MapTooLarge("the map names " + std::to_string(sensors.size()) + " sensors; one audit takes at most " +
                                 std::to_string(kMaxSensors) +
                                 " (the refinement would run for hours): split the map into regions");
+}
+
+// R of the refinement, with the sensitivity it implies when powers fix the scale.
+std::optional<ReceptionLimit> reception_limit(const cleaning::CleanedMap& cleaned, const fitting::RefineResult& refined,
+                                              const WeightScale& scale, const AuditOptions& options) {
+  if (!refined.range) return std::nullopt;
+  ReceptionLimit limit;
+  limit.range_m = *refined.range;
+  limit.range_sigma_m = refined.range_sigma;
+  limit.sensors = cleaned.range_edges.size();
+  if (scale.p0 && options.alpha) limit.sensitivity_dbm = *scale.p0 - 10.0 * *options.alpha * std::log10(limit.range_m);
+  return limit;
 }
 
 }  // namespace
@@ -89,6 +102,7 @@ AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSen
 
   // 4. Powers and the common factor of weights; 5. per sensor: reconstruction, uncertainty, verdict.
   const WeightScale scale = weight_scale(refined, reported_of, options);
+  out.reception = reception_limit(out.cleaned, refined, scale, options);
   out.sensors = sensor_audits(cleaned, cells, refined, setup, reported_of, reported, scale, options);
 
   // 6. Recompute the diagrams and compare them with the map on a raster.

@@ -105,6 +105,18 @@ struct DiagramAgreement {
   std::vector<std::string> appeared;  // sensors with a recomputed cell but none in the map
 };
 
+// The map's reception limit (issue 12): where coverage ends against uncovered area that is not the
+// map's frame (cleaning's range edges), sensor i's coverage ends at R·w_i with one R for the map.
+struct ReceptionLimit {
+  double range_m = 0.0;        // R: the reach of a sensor of weight 1 (the strongest), metres
+  double range_sigma_m = 0.0;  // its 1-σ (0 when not computed)
+  // With reported powers and alpha: the power received at the edge of coverage, p0 − 10·α·log10(R /
+  // 1 m) dBm, where p0 is the transmit power of weight 1 — the receivers' sensitivity up to the
+  // model's constant loss at 1 m (the same for every sensor, so differences between maps are exact).
+  std::optional<double> sensitivity_dbm;
+  std::size_t sensors = 0;     // sensors whose coverage ends at a range edge somewhere
+};
+
 // Wall-clock time of one stage of the audit.
 struct StageTiming {
   std::string stage;
@@ -118,6 +130,7 @@ struct AuditResult {
   cleaning::CleanedMap cleaned;
   Diagram refined_diagram;   // MWVD of the refined sensors, clipped to the map's frame
   std::optional<Diagram> reported_diagram;  // same for the reported sensors
+  std::optional<ReceptionLimit> reception;  // when the map has range edges
   DiagramAgreement refined_agreement;
   std::optional<DiagramAgreement> reported_agreement;
   double bin_size_m = 0.0;

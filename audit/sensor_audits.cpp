@@ -77,7 +77,7 @@ std::vector<SensorAudit> sensor_audits(const cleaning::CleanedMap& cleaned, cons
   std::vector<SensorAudit> sensors;
   const std::size_t n = setup.n;
   const std::vector<fitting::LocalUncertainty> local =
-      fitting::local_uncertainty(refined.sites, setup.samples, setup.options.loss_scale);
+      fitting::local_uncertainty(refined.sites, setup.samples, setup.options.loss_scale, refined.range);
   for (std::size_t i = 0; i < n; ++i) {
     SensorAudit s;
     s.id = cleaned.sensors[i];

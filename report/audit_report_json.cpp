@@ -93,6 +93,7 @@ json cleaning_json(const cleaning::CleaningReport& r) {
           {"sensors", r.sensors},
           {"chains", r.chains},
           {"frame_chains", r.frame_chains},
+          {"range_edges", r.range_edges},
           {"junctions", r.junctions},
           {"junctions_merged", r.junctions_merged},
           {"gaps_closed", r.gaps_closed},
@@ -128,6 +129,15 @@ json map_json(const AuditReportContext& c) {
   return j;
 }
 
+// The reception limit (issue 12), null when the map has no range edges.
+json reception_json(const std::optional<audit::ReceptionLimit>& limit) {
+  if (!limit) return nullptr;
+  return {{"range_m", number_or_null(limit->range_m)},
+          {"range_sigma_m", number_or_null(limit->range_sigma_m)},
+          {"sensitivity_dbm", limit->sensitivity_dbm ? number_or_null(*limit->sensitivity_dbm) : json()},
+          {"sensors", limit->sensors}};
+}
+
 // Wall-clock times, the one member that differs between runs of the same input (issue 12).
 json timings_json(const audit::AuditResult& r) {
   json stages = json::array();
@@ -155,6 +165,7 @@ void write_audit_json(const AuditReportContext& c, std::ostream& out) {
   j["bin_size_m"] = number_or_null(r.bin_size_m);
   j["boundary_samples"] = r.boundary_samples;
   j["refinement"] = r.refinement_summary;
+  j["reception"] = reception_json(r.reception);
   j["agreement"] = {{"refined", agreement_json(r.refined_agreement)},
                     {"reported", r.reported_agreement ? agreement_json(*r.reported_agreement) : json()}};
   j["thresholds"] = c.options ? thresholds_json(*c.options, r.bin_size_m) : json();
