@@ -8,6 +8,7 @@
 #include <unordered_set>
 
 #include "audit/audit_stages.h"
+#include "audit/model_fit.h"
 #include "audit/start_values.h"
 #include "audit/tolerances.h"
 
@@ -104,6 +105,9 @@ AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSen
   const WeightScale scale = weight_scale(refined, reported_of, options);
   out.reception = reception_limit(out.cleaned, refined, scale, options);
   out.sensors = sensor_audits(cleaned, cells, refined, setup, reported_of, reported, scale, options);
+  const ModelFitResult fit = model_fit(cleaned, setup.samples, refined.sample_residual, cells.area, out.bin_size_m, options);
+  out.model_fit = fit.map;
+  apply_model_fit(fit, options, out.sensors);
 
   // 6. Recompute the diagrams and compare them with the map on a raster.
   recomputed_diagrams(cells, raster, refined, reported_of, reported, scale, options, out);

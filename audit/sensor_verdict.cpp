@@ -9,6 +9,7 @@ std::string_view to_string(SensorVerdict v) {
     case SensorVerdict::kInconsistent: return "inconsistent";
     case SensorVerdict::kUndetermined: return "undetermined";
     case SensorVerdict::kNotInMap: return "not_in_map";
+    case SensorVerdict::kModelMisfit: return "model_misfit";
   }
   return "unreported";  // unreachable: every enumerator is handled above
 }

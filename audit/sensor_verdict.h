@@ -13,14 +13,15 @@ enum class SensorVerdict {
   kInconsistent,  // the map is explained significantly better by the reconstruction (verdict.h)
   kUndetermined,  // reported, but the map does not determine the sensor well enough to judge it
   kNotInMap,      // reported, but no cell of the map names it
+  kModelMisfit,   // reported, but the map around it does not follow the model: not judged (model_fit.h)
 };
 
 inline constexpr SensorVerdict kAllSensorVerdicts[] = {SensorVerdict::kUnreported, SensorVerdict::kConsistent,
                                                        SensorVerdict::kInconsistent, SensorVerdict::kUndetermined,
-                                                       SensorVerdict::kNotInMap};
+                                                       SensorVerdict::kNotInMap, SensorVerdict::kModelMisfit};
 
 // The names used in report.json and sensors.geojson: "unreported", "consistent", "inconsistent",
-// "undetermined", "not_in_map". (The reports write null instead of "unreported".)
+// "undetermined", "not_in_map", "model_misfit". (The reports write null instead of "unreported".)
 std::string_view to_string(SensorVerdict v);
 // The verdict named `name` (as written by to_string); nullopt for any other text.
 std::optional<SensorVerdict> sensor_verdict_from_string(std::string_view name);

@@ -65,4 +65,21 @@ inline constexpr int kRestartRounds = 1;
 // Seconds between progress heartbeats inside a long stage (solver iterations).
 inline constexpr double kHeartbeatSeconds = 5.0;
 
+// Model fit (audit/model_fit.h). The map's own noise is at least this many bins (rms), however
+// well a free curve happens to fit a boundary: a boundary drawn exactly (no staircase) would
+// otherwise make any model residual, even rounding, look like a misfit.
+inline constexpr double kMisfitNoiseFloorBins = 0.1;
+// The map as a whole does not follow the model when more than this share of its area lies in
+// misfit sensors (a few misfit cells are local: terrain, an obstacle; a tenth of the map is not).
+inline constexpr double kMisfitAreaShare = 0.1;
+// A sensor's model-fit ratio is measured only over at least this many boundary samples (about one
+// per bin): a cell a few bins across is below the map's resolution, and a mean square of a handful
+// of staircase steps varies by factors of several by chance (measured on the bundled Switzerland
+// map: cells of 1–25 bins reached ratios of 5–80 under the model itself).
+inline constexpr int kMisfitMinSamples = 20;
+// ... and only for cells of at least this many bins (8 × 8): the resolution condition, bins
+// at most 1/10 of the local spacing, gives cells of ~80 bins; smaller cells' boundaries are a few
+// staircase steps between merged junctions (the same map: cells of 11–44 bins reached 3–50).
+inline constexpr double kMisfitMinCellBins = 64.0;
+
 }  // namespace covmap::audit::tolerance

@@ -71,6 +71,7 @@ json sensor_json(const audit::SensorAudit& s, const io::CoverageMap& map) {
   j["power_error_db"] = compared ? number_or_null(s.power_error_db) : json();
   j["weight_ratio"] = compared ? number_or_null(s.weight_ratio) : json();
   j["chi2"] = compared ? number_or_null(s.chi2) : json();
+  j["model_fit_ratio"] = s.model_fit_ratio ? number_or_null(*s.model_fit_ratio) : json();
   j["verdict"] = detail::verdict_json(s.verdict);
   j["reason"] = s.reason;
   j["iou_refined"] = number_or_null(s.iou_refined);
@@ -138,6 +139,15 @@ json reception_json(const std::optional<audit::ReceptionLimit>& limit) {
           {"sensors", limit->sensors}};
 }
 
+// How well the multiplicative model explains the map (issue 12), null when not measured.
+json model_fit_json(const audit::ModelFit& fit) {
+  if (!fit.known) return nullptr;
+  return {{"ratio", number_or_null(fit.ratio)},
+          {"misfit", fit.misfit},
+          {"misfit_sensors", fit.misfit_sensors},
+          {"misfit_area_share", number_or_null(fit.misfit_area_share)}};
+}
+
 // Wall-clock times, the one member that differs between runs of the same input (issue 12).
 json timings_json(const audit::AuditResult& r) {
   json stages = json::array();
@@ -166,6 +176,7 @@ void write_audit_json(const AuditReportContext& c, std::ostream& out) {
   j["boundary_samples"] = r.boundary_samples;
   j["refinement"] = r.refinement_summary;
   j["reception"] = reception_json(r.reception);
+  j["model_fit"] = model_fit_json(r.model_fit);
   j["agreement"] = {{"refined", agreement_json(r.refined_agreement)},
                     {"reported", r.reported_agreement ? agreement_json(*r.reported_agreement) : json()}};
   j["thresholds"] = c.options ? thresholds_json(*c.options, r.bin_size_m) : json();
