@@ -104,7 +104,7 @@ AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSen
   // 4. Powers and the common factor of weights; 5. per sensor: reconstruction, uncertainty, verdict.
   const WeightScale scale = weight_scale(refined, reported_of, options);
   out.reception = reception_limit(out.cleaned, refined, scale, options);
-  out.sensors = sensor_audits(cleaned, cells, refined, setup, reported_of, reported, scale, options);
+  out.sensors = sensor_audits(cleaned, cells, refined, setup, reported_of, reported, scale, options, raster);
   const ModelFitResult fit = model_fit(cleaned, setup.samples, refined.sample_residual, cells.area, out.bin_size_m, options);
   out.model_fit = fit.map;
   apply_model_fit(fit, options, out.sensors);

@@ -3,11 +3,25 @@
 #include <cmath>
 
 #include "audit/audit_stages.h"
+#include "audit/cell_evidence.h"
+#include "audit/tolerances.h"
+#include "core/readable_numbers.h"
 #include "audit/verdict.h"
 #include "fitting/local_uncertainty.h"
 
 namespace covmap::audit::stages {
 namespace {
+
+// What judging one sensor needs of the audit.
+struct AuditContext {
+  const cleaning::CleanedMap& cleaned;
+  const fitting::RefineResult& refined;
+  const RefinementSetup& setup;
+  const WeightScale& scale;
+  const AuditOptions& options;
+  const MapRaster& raster;
+  double chi2_two_dof;  // the 2-dof threshold of the same tail probability as options.inconsistency_chi2
+};
 
 // The reported weight, or the weight of the reported power (with alpha).
 std::optional<double> reported_weight(const ReportedSensor& r, const AuditOptions& options) {
@@ -16,11 +30,58 @@ std::optional<double> reported_weight(const ReportedSensor& r, const AuditOption
   return w;
 }
 
+// The reported sensor's sites: the refined ones with sensor i at its reported position and (in the
+// refined weights' scale) weight; a sensor without a reported strength keeps its refined weight.
+std::vector<Site> with_reported(const std::vector<Site>& refined, std::size_t i, const ReportedSensor& r,
+                                const WeightScale& scale, const AuditOptions& options) {
+  std::vector<Site> sites = refined;
+  if (i == sites.size()) sites.push_back({r.id, r.position.x, r.position.y, 1.0});
+  sites[i].x = r.position.x, sites[i].y = r.position.y;
+  if (const std::optional<double> w = reported_weight(r, options); w && *w > 0) sites[i].weight = *w / std::exp(scale.log_factor);
+  return sites;
+}
+
+std::string percent(double f) { return fixed(100.0 * f, 0) + " %"; }
+
+// The verdict on a sensor whose boundaries do not pin it down, from its cell (cell_evidence.h).
+void judge_by_cell(const ReportedSensor& r, std::size_t i, const AuditContext& c, SensorAudit& s) {
+  const double allowed = std::sqrt(c.chi2_two_dof) *
+                         std::hypot(r.position_sigma_m.value_or(0.0), c.options.position_floor_bins * c.setup.bin_size_m);
+  const CellDistance where = distance_to_cell(c.raster, static_cast<int>(i), r.position);
+  if (where.host != kNone && where.host != static_cast<int>(i) && where.metres > allowed) {
+    s.verdict = SensorVerdict::kInconsistent;
+    s.reason = "its reported position lies in the cell of " + c.cleaned.sensors[where.host] + ", " + metres(where.metres) +
+               " from its own cell (a sensor always lies in its own cell; allowed " + metres(allowed) + ")";
+    return;
+  }
+  const PredictedCell refined = predicted_cell(c.raster, c.refined.sites, static_cast<int>(i), c.refined.range);
+  const PredictedCell reported =
+      predicted_cell(c.raster, with_reported(c.refined.sites, i, r, c.scale, c.options), static_cast<int>(i), c.refined.range);
+  const std::string overlap = "its predicted cell overlaps the mapped one by " + percent(reported.iou) +
+                              " (the reconstruction's by " + percent(refined.iou) + ")";
+  if (refined.iou < tolerance::kCellModelOverlap) {
+    s.verdict = SensorVerdict::kUndetermined;
+    s.reason = refined.mapped_bins < tolerance::kResolvedCellBins
+                   ? "its cell is only " + plural(refined.mapped_bins, "bin") +
+                         " of the map: too small for the map to tell where it is or how strong; not judged"
+                   : "the map does not pin this sensor down and the model explains its cell poorly (overlap " +
+                         percent(refined.iou) + "): not judged";
+  } else if (reported.iou < tolerance::kPredictedOverlap) {
+    s.verdict = SensorVerdict::kInconsistent;
+    s.reason = "with its reported position and power, " + overlap;
+  } else {
+    s.verdict = SensorVerdict::kConsistent;
+    s.reason = "its boundaries do not pin it down, but its reported position fits its own cell and " + overlap;
+  }
+}
+
 // The verdict on a reported map sensor: its difference from the reconstruction s against the
-// uncertainty u.
-void judge_reported(const ReportedSensor& r, const fitting::LocalUncertainty& u, const WeightScale& scale,
-                    const RefinementSetup& setup, const AuditOptions& options, SensorAudit& s) {
+// uncertainty u; by its cell where u does not pin it down.
+void judge_reported(const ReportedSensor& r, std::size_t i, const fitting::LocalUncertainty& u, const AuditContext& c,
+                    SensorAudit& s) {
   s.reported = r;
+  const WeightScale& scale = c.scale;
+  const AuditOptions& options = c.options;
   const double dx = r.position.x - s.position.x, dy = r.position.y - s.position.y;
   s.position_error_m = std::hypot(dx, dy);
   VerdictInput vi;
@@ -35,17 +96,38 @@ void judge_reported(const ReportedSensor& r, const fitting::LocalUncertainty& u,
   vi.var_logw = u.sigma_log_weight * u.sigma_log_weight;
   vi.reported_position_sigma = r.position_sigma_m.value_or(0.0);
   if (r.power_sigma_db) vi.reported_logw_sigma = *r.power_sigma_db * scale.logw_per_db;
-  vi.position_floor = options.position_floor_bins * setup.bin_size_m;
+  vi.position_floor = options.position_floor_bins * c.setup.bin_size_m;
   vi.logw_floor = options.power_floor_db * scale.logw_per_db;
   vi.alpha = options.alpha;
-  if (!u.available || s.sigma_position_m > 0.5 * setup.prior_position_sigma) {
-    s.verdict = SensorVerdict::kUndetermined;
-    s.reason = "the map does not determine this sensor (too few boundary points); not judged";
+  if (!u.available || s.sigma_position_m > 0.5 * c.setup.prior_position_sigma) {
+    judge_by_cell(r, i, c, s);
+    return;
+  }
+  const Judgement v = judge(vi, options.inconsistency_chi2);
+  s.chi2 = v.chi2;
+  s.verdict = v.inconsistent ? SensorVerdict::kInconsistent : SensorVerdict::kConsistent;
+  s.reason = v.reason;
+}
+
+// A sensor reported but absent from the map: would its reported position and power give it a cell?
+void judge_absent(const ReportedSensor& r, const AuditContext& c, SensorAudit& s) {
+  if (!reported_weight(r, c.options)) {
+    s.verdict = SensorVerdict::kNotInMap;
+    s.reason = "reported, but no cell of the map names it; without a reported power its cell cannot be predicted";
+    return;
+  }
+  const std::size_t k = c.refined.sites.size();
+  const PredictedCell predicted =
+      predicted_cell(c.raster, with_reported(c.refined.sites, k, r, c.scale, c.options), static_cast<int>(k), c.refined.range);
+  const double bin = c.raster.grid.bin, km2 = static_cast<double>(predicted.predicted_bins) * bin * bin / 1e6;
+  if (predicted.predicted_bins >= tolerance::kMinPredictedBins) {
+    s.verdict = SensorVerdict::kInconsistent;
+    s.reason = "no cell of the map names it, but with its reported position and power it would serve " +
+               std::to_string(predicted.predicted_bins) + " bins (" + fixed(km2, 2) + " km²) of the map";
   } else {
-    const Judgement v = judge(vi, options.inconsistency_chi2);
-    s.chi2 = v.chi2;
-    s.verdict = v.inconsistent ? SensorVerdict::kInconsistent : SensorVerdict::kConsistent;
-    s.reason = v.reason;
+    s.verdict = SensorVerdict::kConsistent;
+    s.reason = "no cell of the map names it, and with its reported position and power it would serve " +
+               std::to_string(predicted.predicted_bins) + " bins of the map, as the map shows";
   }
 }
 
@@ -73,8 +155,9 @@ WeightScale weight_scale(const fitting::RefineResult& refined, const ReportedOf&
 std::vector<SensorAudit> sensor_audits(const cleaning::CleanedMap& cleaned, const MapCells& cells,
                                        const fitting::RefineResult& refined, const RefinementSetup& setup,
                                        const ReportedOf& reported_of, std::span<const ReportedSensor> reported,
-                                       const WeightScale& scale, const AuditOptions& options) {
+                                       const WeightScale& scale, const AuditOptions& options, const MapRaster& raster) {
   std::vector<SensorAudit> sensors;
+  const AuditContext context{cleaned, refined, setup, scale, options, raster, chi2_quantile_two_dof(options.inconsistency_chi2)};
   const std::size_t n = setup.n;
   const std::vector<fitting::LocalUncertainty> local =
       fitting::local_uncertainty(refined.sites, setup.samples, setup.options.loss_scale, refined.range);
@@ -92,8 +175,7 @@ std::vector<SensorAudit> sensor_audits(const cleaning::CleanedMap& cleaned, cons
       const double a = u.sigma_x * u.sigma_x, b = u.sigma_y * u.sigma_y, c = u.cov_xy;
       s.sigma_position_m = std::sqrt(0.5 * (a + b) + std::sqrt(0.25 * (a - b) * (a - b) + c * c));
     }
-    if (auto it = reported_of.find(static_cast<int>(i)); it != reported_of.end())
-      judge_reported(*it->second, u, scale, setup, options, s);
+    if (auto it = reported_of.find(static_cast<int>(i)); it != reported_of.end()) judge_reported(*it->second, i, u, context, s);
     sensors.push_back(std::move(s));
   }
   for (const ReportedSensor& r : reported) {
@@ -103,8 +185,7 @@ std::vector<SensorAudit> sensor_audits(const cleaning::CleanedMap& cleaned, cons
     s.in_map = false;
     s.position = r.position;
     s.reported = r;
-    s.verdict = SensorVerdict::kNotInMap;
-    s.reason = "reported, but no cell of the map names it";
+    judge_absent(r, context, s);
     sensors.push_back(std::move(s));
   }
   return sensors;

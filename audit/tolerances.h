@@ -2,6 +2,8 @@
 // user's thresholds live in AuditOptions with their documentation).
 #pragma once
 
+#include <cstddef>
+
 namespace covmap::audit::tolerance {
 
 // Starting values for noisy maps (start_values.h). A junction's solution circle whose curvature
@@ -64,6 +66,23 @@ inline constexpr int kRestartRounds = 1;
 
 // Seconds between progress heartbeats inside a long stage (solver iterations).
 inline constexpr double kHeartbeatSeconds = 5.0;
+
+// Judging by the cell (audit/cell_evidence.h), where the boundaries do not pin a sensor down. The
+// reconstruction's own cell must overlap the mapped one by at least this (intersection over union)
+// for the model to speak for the cell at all: on generated maps under the model, cells of 20 bins
+// and more overlap by 0.9–1.0 (docs/ACCURACY.md), so 0.8 leaves room for small cells' staircases.
+inline constexpr double kCellModelOverlap = 0.8;
+// ... and the reported sensor's predicted cell must overlap it by at least this: a sensor whose
+// report is right differs from the reconstruction by its stated errors (tens of metres, 1 dB),
+// which move a boundary by a bin or two, far from halving the overlap; a gross error of several
+// bins in a cell the map barely pins down does halve it.
+inline constexpr double kPredictedOverlap = 0.5;
+// A cell of fewer bins than this is below the map's resolution (the reasons say so): its boundary
+// is a few staircase steps, too short for three parameters (docs/ACCURACY.md measures from 20).
+inline constexpr std::size_t kResolvedCellBins = 20;
+// A sensor absent from the map contradicts it when its reported values would give it at least this
+// many bins (a cell of a bin or two can vanish in a raster by where its bin centres fall).
+inline constexpr std::size_t kMinPredictedBins = 4;
 
 // Model fit (audit/model_fit.h). The map's own noise is at least this many bins (rms), however
 // well a free curve happens to fit a boundary: a boundary drawn exactly (no staircase) would

@@ -37,8 +37,9 @@ struct AuditRun {
   audit::AuditResult result;
 };
 
-// Generates a map, writes it, reads it back like `covmap audit` does and audits it.
-inline AuditRun run(const mapgen::CoverageMapOptions& options, const std::vector<Site>& sites, double alpha) {
+// Generates a map, writes it and reads it back like `covmap audit` does (r.result left empty).
+inline AuditRun generate_and_read(const mapgen::CoverageMapOptions& options, const std::vector<Site>& sites,
+                                  double alpha, std::vector<ReportedSensor>& reported) {
   AuditRun r;
   r.generated = mapgen::generate_coverage_map(sites, options);
   TempDir dir;
@@ -50,8 +51,14 @@ inline AuditRun run(const mapgen::CoverageMapOptions& options, const std::vector
   so.alpha = alpha;
   so.planar = mo.planar;
   so.projection = r.map.projection ? &*r.map.projection : nullptr;
-  std::vector<ReportedSensor> reported;
   reported = io::read_reported_sensors(dir.path / mapgen::kSensorsFileName, so);
+  return r;
+}
+
+// ... and audits it.
+inline AuditRun run(const mapgen::CoverageMapOptions& options, const std::vector<Site>& sites, double alpha) {
+  std::vector<ReportedSensor> reported;
+  AuditRun r = generate_and_read(options, sites, alpha, reported);
   audit::AuditOptions ao;
   ao.alpha = alpha;
   r.result = audit::audit(r.map.cells, reported, ao);
