@@ -2,11 +2,13 @@
 #include "audit/audit.h"
 
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 #include <string_view>
 #include <unordered_set>
 
 #include "audit/audit_stages.h"
+#include "audit/model_fit.h"
 #include "audit/start_values.h"
 #include "audit/tolerances.h"
 
@@ -40,6 +42,18 @@ void refuse_oversized(std::span<const CoverageCell> map) {
     throw MapTooLarge("the map names " + std::to_string(sensors.size()) + " sensors; one audit takes at most " +
                                 std::to_string(kMaxSensors) +
                                 " (the refinement would run for hours): split the map into regions");
+}
+
+// R of the refinement, with the sensitivity it implies when powers fix the scale.
+std::optional<ReceptionLimit> reception_limit(const cleaning::CleanedMap& cleaned, const fitting::RefineResult& refined,
+                                              const WeightScale& scale, const AuditOptions& options) {
+  if (!refined.range) return std::nullopt;
+  ReceptionLimit limit;
+  limit.range_m = *refined.range;
+  limit.range_sigma_m = refined.range_sigma;
+  limit.sensors = cleaned.range_edges.size();
+  if (scale.p0 && options.alpha) limit.sensitivity_dbm = *scale.p0 - 10.0 * *options.alpha * std::log10(limit.range_m);
+  return limit;
 }
 
 }  // namespace
@@ -89,7 +103,11 @@ AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSen
 
   // 4. Powers and the common factor of weights; 5. per sensor: reconstruction, uncertainty, verdict.
   const WeightScale scale = weight_scale(refined, reported_of, options);
-  out.sensors = sensor_audits(cleaned, cells, refined, setup, reported_of, reported, scale, options);
+  out.reception = reception_limit(out.cleaned, refined, scale, options);
+  out.sensors = sensor_audits(cleaned, cells, refined, setup, reported_of, reported, scale, options, raster);
+  const ModelFitResult fit = model_fit(cleaned, setup.samples, refined.sample_residual, cells.area, out.bin_size_m, options);
+  out.model_fit = fit.map;
+  apply_model_fit(fit, options, out.sensors);
 
   // 6. Recompute the diagrams and compare them with the map on a raster.
   recomputed_diagrams(cells, raster, refined, reported_of, reported, scale, options, out);

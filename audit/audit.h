@@ -52,6 +52,12 @@ struct AuditOptions {
   // false alarms rare without hiding gross errors (≥ 5 bins, ≥ 6 dB).
   double position_floor_bins = 1.0;
   double power_floor_db = 1.0;
+  // A sensor whose boundaries the model fits this many times worse (in mean square) than free
+  // curves fitted to each is in a region the model does not explain: it is reported model_misfit,
+  // not judged. Under the model the ratio is ~1 (both fits see the same staircase noise); measured
+  // on generated maps (docs/ACCURACY.md), it stays below ~2 there, while maps drawn by other models
+  // reach 10–1000.
+  double model_misfit_ratio = 4.0;
   // Called with (stage name, fraction done in [0, 1]) on long runs; may be empty.
   std::function<void(const std::string&, double)> progress;
   // Worker threads of the refinement's covariance. The result is the same whatever the count (the
@@ -93,11 +99,14 @@ struct SensorAudit {
   // (unreported, undetermined, not in the map), so that reports write null, not a made-up 0.
   std::optional<double> chi2;
   SensorVerdict verdict = SensorVerdict::kUnreported;
+  VerdictBasis basis = VerdictBasis::kNone;  // what the verdict rests on; chi2 is set exactly for kBoundaryFit
   std::string reason;                 // one sentence
   // Agreement of this sensor's cell with the map (intersection over union of areas), for the
   // refined and the reported sensors' diagrams (nullopt when not computed).
   std::optional<double> iou_refined;
   std::optional<double> iou_reported;
+  // The model-fit ratio of this sensor's boundaries (ModelFit; nullopt without samples).
+  std::optional<double> model_fit_ratio;
 };
 
 struct DiagramAgreement {
@@ -105,6 +114,31 @@ struct DiagramAgreement {
   double hausdorff_m = 0.0;       // between the map's boundaries and the recomputed diagram's
   std::vector<std::string> vanished;  // sensors with a cell in the map but none recomputed
   std::vector<std::string> appeared;  // sensors with a recomputed cell but none in the map
+};
+
+// The map's reception limit (issue 12): where coverage ends against uncovered area that is not the
+// map's frame (cleaning's range edges), sensor i's coverage ends at R·w_i with one R for the map.
+struct ReceptionLimit {
+  double range_m = 0.0;        // R: the reach of a sensor of weight 1 (the strongest), metres
+  double range_sigma_m = 0.0;  // its 1-σ (0 when not computed)
+  // With reported powers and alpha: the power received at the edge of coverage, p0 − 10·α·log10(R /
+  // 1 m) dBm, where p0 is the transmit power of weight 1 — the receivers' sensitivity up to the
+  // model's constant loss at 1 m (the same for every sensor, so differences between maps are exact).
+  std::optional<double> sensitivity_dbm;
+  std::size_t sensors = 0;     // sensors whose coverage ends at a range edge somewhere
+};
+
+// How well the multiplicative model explains the map (issue 12; audit/model_fit.h has the
+// statistic): the mean square of the model's boundary residuals over that of free curves fitted to
+// each boundary on its own, ~1 where the map follows the model.
+struct ModelFit {
+  bool known = false;             // false: the refinement did not run, nothing was measured
+  double ratio = 0.0;             // over the whole map
+  std::size_t misfit_sensors = 0; // sensors whose own ratio exceeds AuditOptions::model_misfit_ratio
+  double misfit_area_share = 0.0; // their share of the map's covered area
+  // The map as a whole does not follow the model: its ratio, or the share of its area in misfit
+  // sensors, is above the thresholds (AuditOptions::model_misfit_ratio, tolerance::kMisfitAreaShare).
+  bool misfit = false;
 };
 
 // Wall-clock time of one stage of the audit.
@@ -120,6 +154,8 @@ struct AuditResult {
   cleaning::CleanedMap cleaned;
   Diagram refined_diagram;   // MWVD of the refined sensors, clipped to the map's frame
   std::optional<Diagram> reported_diagram;  // same for the reported sensors
+  std::optional<ReceptionLimit> reception;  // when the map has range edges
+  ModelFit model_fit;
   DiagramAgreement refined_agreement;
   std::optional<DiagramAgreement> reported_agreement;
   double bin_size_m = 0.0;

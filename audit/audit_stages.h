@@ -111,7 +111,7 @@ WeightScale weight_scale(const fitting::RefineResult& refined, const ReportedOf&
 std::vector<SensorAudit> sensor_audits(const cleaning::CleanedMap& cleaned, const MapCells& cells,
                                        const fitting::RefineResult& refined, const RefinementSetup& setup,
                                        const ReportedOf& reported_of, std::span<const ReportedSensor> reported,
-                                       const WeightScale& scale, const AuditOptions& options);
+                                       const WeightScale& scale, const AuditOptions& options, const MapRaster& raster);
 
 // ---- Recomputed diagrams and agreement (recomputed_diagrams.cpp) ----
 

@@ -1,5 +1,6 @@
 // Points along a cleaned map's shared boundaries, for least-squares refinement: every chain between
-// two sensors walked at a fixed spacing (one point per raster bin: neighbouring points of a
+// two sensors, and every piece of a range edge (site_b = kNone, fitting/refine.h), walked at a fixed
+// spacing (one point per raster bin: neighbouring points of a
 // staircase are strongly correlated, so denser sampling would only make the reported uncertainty
 // too small, not the fit better).
 #pragma once

@@ -22,6 +22,7 @@ void restart_escaped(const RefinementSetup& setup, const MapCells& cells, const 
     std::vector<Site> repaired = refined.sites;
     std::vector<std::vector<double>> neighbour_logw(n);
     for (const auto& sample : setup.samples) {
+      if (sample.site_b == kNone) continue;  // a range edge: no neighbour
       neighbour_logw[sample.site_a].push_back(std::log(refined.sites[sample.site_b].weight));
       neighbour_logw[sample.site_b].push_back(std::log(refined.sites[sample.site_a].weight));
     }

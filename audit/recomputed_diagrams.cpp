@@ -59,10 +59,12 @@ Diagram recomputed_diagram(const std::vector<Site>& sites, const std::vector<Poi
 }
 
 // Agreement of the diagram of `sites` with the map, and per sensor its intersection over union.
+// With a reception limit (reach R for weight 1), bins beyond every sensor's reach are uncovered.
 std::pair<DiagramAgreement, std::vector<double>> agreement_of(const MapRaster& raster, const cleaning::CleanedMap& cleaned,
-                                                              const std::vector<Site>& sites, int count) {
+                                                              const std::vector<Site>& sites, int count,
+                                                              std::optional<double> reach) {
   const std::size_t n = cleaned.sensors.size();
-  const voronoi::BestServerRaster labels = voronoi::best_server_raster(sites, raster.grid);
+  const voronoi::BestServerRaster labels = voronoi::best_server_raster(sites, raster.grid, reach);
   LabelAgreement a = compare_labels(raster.raster, labels.labels, count);
   DiagramAgreement d;
   d.mean_iou = a.mean_iou;
@@ -107,7 +109,7 @@ void recomputed_diagrams(const MapCells& cells, const MapRaster& raster, const f
   out.refined_diagram = recomputed_diagram(refined_sites, frame, box, out.messages, "refined sensors");
   // The raster of the map (made before the refinement): its own bins where it has them, at most ~4·10⁶.
   {
-    auto [d, iou] = agreement_of(raster, cleaned, refined_sites, static_cast<int>(n));
+    auto [d, iou] = agreement_of(raster, cleaned, refined_sites, static_cast<int>(n), refined.range);
     out.refined_agreement = d;
     for (std::size_t i = 0; i < n; ++i)
       if (std::isfinite(iou[i])) out.sensors[i].iou_refined = iou[i];
@@ -115,7 +117,7 @@ void recomputed_diagrams(const MapCells& cells, const MapRaster& raster, const f
   if (reported.empty()) return;
   const std::vector<Site> rs = reported_sites(cells, refined_sites, reported_of, reported, scale, options);
   out.reported_diagram = recomputed_diagram(rs, frame, box, out.messages, "reported sensors");
-  auto [d, iou] = agreement_of(raster, cleaned, rs, static_cast<int>(rs.size()));
+  auto [d, iou] = agreement_of(raster, cleaned, rs, static_cast<int>(rs.size()), refined.range);
   // Names of appeared reported-only sensors.
   for (auto& name : d.appeared) {
     const int k = std::atoi(name.c_str());

@@ -3,11 +3,26 @@
 #include <cmath>
 
 #include "audit/audit_stages.h"
+#include "audit/cell_evidence.h"
+#include "audit/tolerances.h"
+#include "core/readable_numbers.h"
 #include "audit/verdict.h"
 #include "fitting/local_uncertainty.h"
 
 namespace covmap::audit::stages {
 namespace {
+
+// What judging one sensor needs of the audit.
+struct AuditContext {
+  const cleaning::CleanedMap& cleaned;
+  const fitting::RefineResult& refined;
+  const RefinementSetup& setup;
+  const WeightScale& scale;
+  const AuditOptions& options;
+  const MapRaster& raster;
+  const MapCells& cells;
+  double chi2_two_dof;  // the 2-dof threshold of the same tail probability as options.inconsistency_chi2
+};
 
 // The reported weight, or the weight of the reported power (with alpha).
 std::optional<double> reported_weight(const ReportedSensor& r, const AuditOptions& options) {
@@ -16,11 +31,86 @@ std::optional<double> reported_weight(const ReportedSensor& r, const AuditOption
   return w;
 }
 
+// The reported sensor's sites: the refined ones with sensor i at its reported position and (in the
+// refined weights' scale) weight; a sensor without a reported strength keeps its refined weight.
+std::vector<Site> with_reported(const std::vector<Site>& refined, std::size_t i, const ReportedSensor& r,
+                                const WeightScale& scale, const AuditOptions& options) {
+  std::vector<Site> sites = refined;
+  if (i == sites.size()) sites.push_back({r.id, r.position.x, r.position.y, 1.0});
+  sites[i].x = r.position.x, sites[i].y = r.position.y;
+  if (const std::optional<double> w = reported_weight(r, options); w && *w > 0) sites[i].weight = *w / std::exp(scale.log_factor);
+  return sites;
+}
+
+std::string percent(double f) { return fixed(100.0 * f, 0) + " %"; }
+
+// The reported values moved toward the reconstruction by `t` of the way (t = 0: as reported).
+std::vector<Site> toward_refined(std::vector<Site> sites, std::size_t i, const Site& refined, double t) {
+  Site& s = sites[i];
+  s.x += t * (refined.x - s.x), s.y += t * (refined.y - s.y);
+  s.weight = std::exp(std::log(s.weight) + t * (std::log(refined.weight) - std::log(s.weight)));
+  return sites;
+}
+
+// The verdict on a sensor whose boundaries do not pin it down, from its cell (cell_evidence.h):
+// is its reported position outside its own cell, and can any values within the report's own
+// uncertainty (its stated σ and the floors, to the χ² threshold) draw the mapped cell? The values
+// tried are those nearest the reconstruction, which draws it (overlap ≥ kCellModelOverlap).
+void judge_by_cell(const ReportedSensor& r, std::size_t i, const VerdictInput& vi, const AuditContext& c, SensorAudit& s) {
+  s.basis = VerdictBasis::kCell;
+  const double sigma_p = std::hypot(vi.reported_position_sigma, vi.position_floor);
+  const double allowed_distance = std::sqrt(c.chi2_two_dof) * sigma_p;
+  const CellDistance where = distance_to_cell(c.raster, static_cast<int>(i), r.position);
+  if (where.host != kNone && where.host != static_cast<int>(i) && where.metres > allowed_distance) {
+    s.verdict = SensorVerdict::kInconsistent;
+    s.reason = "its reported position lies in the cell of " + c.cleaned.sensors[where.host] + ", " + metres(where.metres) +
+               " from its own cell (a sensor always lies in its own cell; allowed " + metres(allowed_distance) + ")";
+    return;
+  }
+  const PredictedCell refined = predicted_cell(c.raster, c.refined.sites, static_cast<int>(i), c.refined.range);
+  if (refined.iou < tolerance::kCellModelOverlap) {
+    s.basis = VerdictBasis::kNone;
+    s.verdict = SensorVerdict::kUndetermined;
+    s.reason = refined.mapped_bins < tolerance::kResolvedCellBins
+                   ? "its cell is only " + plural(refined.mapped_bins, "bin") +
+                         " of the map: too small for the map to tell where it is or how strong; not judged"
+                   : "the map does not pin this sensor down and the model explains its cell poorly (overlap " +
+                         percent(refined.iou) + "): not judged";
+    return;
+  }
+  // How far the report lies from the reconstruction in its own uncertainty (Mahalanobis).
+  double m2 = (vi.dx * vi.dx + vi.dy * vi.dy) / (sigma_p * sigma_p);
+  double limit2 = c.chi2_two_dof;
+  if (vi.dlogw) {
+    const double sigma_w = std::hypot(vi.reported_logw_sigma.value_or(0.0), vi.logw_floor);
+    m2 += *vi.dlogw * *vi.dlogw / (sigma_w * sigma_w);
+    limit2 = c.options.inconsistency_chi2;
+  }
+  const std::vector<Site> as_reported = with_reported(c.refined.sites, i, r, c.scale, c.options);
+  const PredictedCell reported = predicted_cell(c.raster, as_reported, static_cast<int>(i), c.refined.range);
+  const double t = m2 > limit2 ? 1.0 - std::sqrt(limit2 / m2) : 1.0;
+  const PredictedCell nearest =
+      t >= 1.0 ? refined
+               : predicted_cell(c.raster, toward_refined(as_reported, i, c.refined.sites[i], t), static_cast<int>(i), c.refined.range);
+  const std::string overlaps = "overlaps the mapped cell by " + percent(reported.iou) + " as reported, by " +
+                               percent(nearest.iou) + " at the nearest values its stated uncertainty allows (the reconstruction's by " +
+                               percent(refined.iou) + ")";
+  if (nearest.iou < tolerance::kPredictedOverlap) {
+    s.verdict = SensorVerdict::kInconsistent;
+    s.reason = "its boundaries do not pin it down, but its predicted cell " + overlaps;
+  } else {
+    s.verdict = SensorVerdict::kConsistent;
+    s.reason = "its boundaries do not pin it down; its reported position fits its own cell and its predicted cell " + overlaps;
+  }
+}
+
 // The verdict on a reported map sensor: its difference from the reconstruction s against the
-// uncertainty u.
-void judge_reported(const ReportedSensor& r, const fitting::LocalUncertainty& u, const WeightScale& scale,
-                    const RefinementSetup& setup, const AuditOptions& options, SensorAudit& s) {
+// uncertainty u; by its cell where u does not pin it down.
+void judge_reported(const ReportedSensor& r, std::size_t i, const fitting::LocalUncertainty& u, const AuditContext& c,
+                    SensorAudit& s) {
   s.reported = r;
+  const WeightScale& scale = c.scale;
+  const AuditOptions& options = c.options;
   const double dx = r.position.x - s.position.x, dy = r.position.y - s.position.y;
   s.position_error_m = std::hypot(dx, dy);
   VerdictInput vi;
@@ -35,17 +125,43 @@ void judge_reported(const ReportedSensor& r, const fitting::LocalUncertainty& u,
   vi.var_logw = u.sigma_log_weight * u.sigma_log_weight;
   vi.reported_position_sigma = r.position_sigma_m.value_or(0.0);
   if (r.power_sigma_db) vi.reported_logw_sigma = *r.power_sigma_db * scale.logw_per_db;
-  vi.position_floor = options.position_floor_bins * setup.bin_size_m;
+  vi.position_floor = options.position_floor_bins * c.setup.bin_size_m;
   vi.logw_floor = options.power_floor_db * scale.logw_per_db;
   vi.alpha = options.alpha;
-  if (!u.available || s.sigma_position_m > 0.5 * setup.prior_position_sigma) {
-    s.verdict = SensorVerdict::kUndetermined;
-    s.reason = "the map does not determine this sensor (too few boundary points); not judged";
+  // The χ² test takes the boundary samples' errors as independent; along the few staircase steps
+  // of a cell below the map's resolution they are not, and the local σ is too small.
+  const double cell_bins = std::abs(c.cells.area[i]) / (c.setup.bin_size_m * c.setup.bin_size_m);
+  if (!u.available || s.sigma_position_m > 0.5 * c.setup.prior_position_sigma || cell_bins < tolerance::kResolvedCellBins) {
+    judge_by_cell(r, i, vi, c, s);
+    return;
+  }
+  const Judgement v = judge(vi, options.inconsistency_chi2);
+  s.basis = VerdictBasis::kBoundaryFit;
+  s.chi2 = v.chi2;
+  s.verdict = v.inconsistent ? SensorVerdict::kInconsistent : SensorVerdict::kConsistent;
+  s.reason = v.reason;
+}
+
+// A sensor reported but absent from the map: would its reported position and power give it a cell?
+void judge_absent(const ReportedSensor& r, const AuditContext& c, SensorAudit& s) {
+  if (!reported_weight(r, c.options)) {
+    s.verdict = SensorVerdict::kNotInMap;
+    s.reason = "reported, but no cell of the map names it; without a reported power its cell cannot be predicted";
+    return;
+  }
+  s.basis = VerdictBasis::kPrediction;
+  const std::size_t k = c.refined.sites.size();
+  const PredictedCell predicted =
+      predicted_cell(c.raster, with_reported(c.refined.sites, k, r, c.scale, c.options), static_cast<int>(k), c.refined.range);
+  const double bin = c.raster.grid.bin, km2 = static_cast<double>(predicted.predicted_bins) * bin * bin / 1e6;
+  if (predicted.predicted_bins >= tolerance::kMinPredictedBins) {
+    s.verdict = SensorVerdict::kInconsistent;
+    s.reason = "no cell of the map names it, but with its reported position and power it would serve " +
+               std::to_string(predicted.predicted_bins) + " bins (" + fixed(km2, 2) + " km²) of the map";
   } else {
-    const Judgement v = judge(vi, options.inconsistency_chi2);
-    s.chi2 = v.chi2;
-    s.verdict = v.inconsistent ? SensorVerdict::kInconsistent : SensorVerdict::kConsistent;
-    s.reason = v.reason;
+    s.verdict = SensorVerdict::kConsistent;
+    s.reason = "no cell of the map names it, and with its reported position and power it would serve " +
+               std::to_string(predicted.predicted_bins) + " bins of the map, as the map shows";
   }
 }
 
@@ -73,11 +189,12 @@ WeightScale weight_scale(const fitting::RefineResult& refined, const ReportedOf&
 std::vector<SensorAudit> sensor_audits(const cleaning::CleanedMap& cleaned, const MapCells& cells,
                                        const fitting::RefineResult& refined, const RefinementSetup& setup,
                                        const ReportedOf& reported_of, std::span<const ReportedSensor> reported,
-                                       const WeightScale& scale, const AuditOptions& options) {
+                                       const WeightScale& scale, const AuditOptions& options, const MapRaster& raster) {
   std::vector<SensorAudit> sensors;
+  const AuditContext context{cleaned, refined, setup, scale, options, raster, cells, chi2_quantile_two_dof(options.inconsistency_chi2)};
   const std::size_t n = setup.n;
   const std::vector<fitting::LocalUncertainty> local =
-      fitting::local_uncertainty(refined.sites, setup.samples, setup.options.loss_scale);
+      fitting::local_uncertainty(refined.sites, setup.samples, setup.options.loss_scale, refined.range);
   for (std::size_t i = 0; i < n; ++i) {
     SensorAudit s;
     s.id = cleaned.sensors[i];
@@ -92,8 +209,7 @@ std::vector<SensorAudit> sensor_audits(const cleaning::CleanedMap& cleaned, cons
       const double a = u.sigma_x * u.sigma_x, b = u.sigma_y * u.sigma_y, c = u.cov_xy;
       s.sigma_position_m = std::sqrt(0.5 * (a + b) + std::sqrt(0.25 * (a - b) * (a - b) + c * c));
     }
-    if (auto it = reported_of.find(static_cast<int>(i)); it != reported_of.end())
-      judge_reported(*it->second, u, scale, setup, options, s);
+    if (auto it = reported_of.find(static_cast<int>(i)); it != reported_of.end()) judge_reported(*it->second, i, u, context, s);
     sensors.push_back(std::move(s));
   }
   for (const ReportedSensor& r : reported) {
@@ -103,8 +219,7 @@ std::vector<SensorAudit> sensor_audits(const cleaning::CleanedMap& cleaned, cons
     s.in_map = false;
     s.position = r.position;
     s.reported = r;
-    s.verdict = SensorVerdict::kNotInMap;
-    s.reason = "reported, but no cell of the map names it";
+    judge_absent(r, context, s);
     sensors.push_back(std::move(s));
   }
   return sensors;

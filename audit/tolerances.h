@@ -2,6 +2,8 @@
 // user's thresholds live in AuditOptions with their documentation).
 #pragma once
 
+#include <cstddef>
+
 namespace covmap::audit::tolerance {
 
 // Starting values for noisy maps (start_values.h). A junction's solution circle whose curvature
@@ -64,5 +66,42 @@ inline constexpr int kRestartRounds = 1;
 
 // Seconds between progress heartbeats inside a long stage (solver iterations).
 inline constexpr double kHeartbeatSeconds = 5.0;
+
+// Judging by the cell (audit/cell_evidence.h), where the boundaries do not pin a sensor down. The
+// reconstruction's own cell must overlap the mapped one by at least this (intersection over union)
+// for the model to speak for the cell at all: on generated maps under the model, cells of 20 bins
+// and more overlap by 0.9–1.0 (docs/ACCURACY.md), so 0.8 leaves room for small cells' staircases.
+inline constexpr double kCellModelOverlap = 0.8;
+// ... and the predicted cell of the values nearest the reconstruction that the report's stated
+// uncertainty allows (to the χ² threshold) must overlap it by at least this. Those values differ
+// from a right report's by its stated errors, which near equal weights can still move a small
+// cell's boundary by a bin or two; a gross error of several bins, or of several dB, beyond them
+// halves the overlap.
+inline constexpr double kPredictedOverlap = 0.5;
+// A cell of fewer bins than this (8 × 8) is below the map's resolution. The resolution
+// condition, bins at most 1/10 of the local spacing, gives cells of ~80 bins; a smaller cell's
+// boundaries are a few staircase steps between merged junctions, whose errors are correlated, so
+// neither the χ² test of the boundary fit (it takes them as independent) nor the model-fit ratio
+// applies. Measured on the bundled Switzerland map (1 km bins): cells of 11–44 bins reached
+// model-fit ratios of 3–50 under the model itself, and two of them failed the χ² test by 4–5σ in
+// weight without any error. Such cells are judged by their cell (cell_evidence.h).
+inline constexpr double kResolvedCellBins = 64.0;
+// A sensor absent from the map contradicts it when its reported values would give it at least this
+// many bins (a cell of a bin or two can vanish in a raster by where its bin centres fall).
+inline constexpr std::size_t kMinPredictedBins = 4;
+
+// Model fit (audit/model_fit.h). The map's own noise is at least this many bins (rms), however
+// well a free curve happens to fit a boundary: a boundary drawn exactly (no staircase) would
+// otherwise make any model residual, even rounding, look like a misfit.
+inline constexpr double kMisfitNoiseFloorBins = 0.1;
+// The map as a whole does not follow the model when more than this share of its area lies in
+// misfit sensors (a few misfit cells are local: terrain, an obstacle; a tenth of the map is not).
+inline constexpr double kMisfitAreaShare = 0.1;
+// A sensor's model-fit ratio is measured only over at least this many boundary samples (about one
+// per bin): a cell a few bins across is below the map's resolution, and a mean square of a handful
+// of staircase steps varies by factors of several by chance (measured on the bundled Switzerland
+// map: cells of 1–25 bins reached ratios of 5–80 under the model itself).
+inline constexpr int kMisfitMinSamples = 20;
+// ... and only for cells of at least kResolvedCellBins.
 
 }  // namespace covmap::audit::tolerance

@@ -39,7 +39,7 @@ Judgement judge(const VerdictInput& in, double threshold3) {
   // is judged inconsistent below; LDLT alone may return a finite number past a NaN pivot.
   v.chi2 = cov.topLeftCorner(n, n).allFinite() && dd.allFinite() ? dd.dot(c.ldlt().solve(dd))
                                                                    : std::numeric_limits<double>::quiet_NaN();
-  const double threshold = with_weight ? threshold3 : -2.0 * std::log(chi2_3_tail(threshold3));
+  const double threshold = with_weight ? threshold3 : chi2_quantile_two_dof(threshold3);
   v.inconsistent = !(v.chi2 <= threshold);  // NaN counts as inconsistent: say so rather than pass
   // The reason: each component in metres / dB and in its own σ.
   // Fixed notation throughout (core/readable_numbers.h): people read these sentences.
@@ -58,5 +58,8 @@ Judgement judge(const VerdictInput& in, double threshold3) {
   v.reason = r.str();
   return v;
 }
+
+// χ²₂'s tail is exp(−t/2): the quantile of χ²₃'s tail probability at threshold3.
+double chi2_quantile_two_dof(double threshold3) { return -2.0 * std::log(chi2_3_tail(threshold3)); }
 
 }  // namespace covmap::audit

@@ -36,4 +36,7 @@ struct Judgement {
 // probability's quantile (computed from it).
 Judgement judge(const VerdictInput& in, double threshold3);
 
+// The 2-degree-of-freedom threshold with the same tail probability as threshold3 for 3.
+double chi2_quantile_two_dof(double threshold3);
+
 }  // namespace covmap::audit

@@ -9,6 +9,7 @@
 #include "cleaning/curve_fit.h"
 #include "core/readable_numbers.h"
 #include "cleaning/arc_graph.h"
+#include "cleaning/range_edges.h"
 #include "cleaning/ring_labels.h"
 #include "cleaning/rings.h"
 #include "cleaning/topology.h"
@@ -138,6 +139,8 @@ CleanedMap clean_coverage_map(std::span<const CoverageCell> cells, const Cleanin
   report.nodes_snapped = cleaning::refine_junctions(out.junctions, out.chains, snap);
 
   report.frame_chains = cleaning::finish_chains(out, topology.junctions, snap);
+  cleaning::find_range_edges(out, rings, snap, huber, options.line_preference);
+  report.range_edges = out.range_edges.size();
   report.chains = out.chains.size();
   report.junctions = out.junctions.size();
   cleaning::build_graph(out, snap, huber);

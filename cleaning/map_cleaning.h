@@ -32,6 +32,8 @@
 //     one placeholder site per sensor (its id at the area centroid of its cells, weight 1:
 //     recognition estimates the real ones); graph.faces is left empty (recognition traces faces
 //     by geometry).
+//   - range_edges: the parts of frame chains where a sensor's coverage ends at a reception limit
+//     (a circle about the sensor) rather than at the map's frame, per sensor with its circle.
 //   - report: what was repaired and how often (every repair counted), and the bin size estimate.
 //   Guaranteed: deterministic; O(V log V + L / s) for V polygon vertices, boundary length L and
 //   snap distance s (the boundaries are sampled every s).
@@ -98,6 +100,14 @@ struct BoundaryChain {
   FittedCurve fit;
 };
 
+// Where a sensor's coverage ends at a reception limit (range_edges.h says how these are told from
+// the map's frame): pieces of its frame chains and the circle fitted to all of them.
+struct RangeEdge {
+  int sensor = kNone;
+  std::vector<std::vector<Point>> pieces;  // polylines, the sensor on the left
+  FittedCurve fit;                         // a circle about (near) the sensor
+};
+
 struct CleaningReport {
   double snap_distance = 0.0;      // used (given or estimated)
   double bin_size_estimate = 0.0;  // typical staircase step of the boundaries (0 if not a raster)
@@ -106,6 +116,7 @@ struct CleaningReport {
   std::size_t sensors = 0;
   std::size_t chains = 0;
   std::size_t frame_chains = 0;
+  std::size_t range_edges = 0;     // sensors whose coverage ends at a reception limit somewhere
   std::size_t junctions = 0;
   std::size_t junctions_merged = 0;     // junction candidates merged into a neighbour
   std::size_t gaps_closed = 0;          // boundary stretches where the two cells did not touch
@@ -122,6 +133,7 @@ struct CleanedMap {
   std::vector<Point> junctions;
   Diagram graph;
   std::vector<int> arc_chain;  // per arc of graph: the chain it came from
+  std::vector<RangeEdge> range_edges;  // at most one per sensor, in sensor order
   CleaningReport report;
 };
 

@@ -120,4 +120,17 @@ inline constexpr double kRmsFloor = 1e-9;
 // Chains with fewer points than this are fitted by the line through their ends.
 inline constexpr std::size_t kMinFitPoints = 3;
 
+// --- range edges (range_edges.h) ---------------------------------------------------------------
+
+// A frame vertex within this many snap distances (half a bin at the default snap) of a side of the
+// map's bounding box lies on the raster's own frame, not on a reception limit.
+inline constexpr double kFrameBoxReach = 1.0;
+// A sensor's outside boundary is a range edge when one circle fits all its pieces off the box with
+// an rms of at most this many snap distances. The simplified frame's vertices are a staircase's
+// corners, within ~0.7 bins (1.4 s) of the true circle; their rms about it is ~0.4 bins (0.8 s).
+inline constexpr double kRangeEdgeRms = 1.5;
+// ...and the sensor's whole region lies within the circle, but for this many snap distances (the
+// staircase's corners stick out of the true disc by up to ~0.7 bins).
+inline constexpr double kRangeDiscSlack = 3.0;
+
 }  // namespace covmap::cleaning::tolerance

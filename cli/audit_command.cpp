@@ -70,7 +70,8 @@ bool listed_by_name(audit::SensorVerdict verdict) {
   switch (verdict) {
     case audit::SensorVerdict::kInconsistent:
     case audit::SensorVerdict::kUndetermined:
-    case audit::SensorVerdict::kNotInMap: return true;
+    case audit::SensorVerdict::kNotInMap:
+    case audit::SensorVerdict::kModelMisfit: return true;
     case audit::SensorVerdict::kConsistent:
     case audit::SensorVerdict::kUnreported: return false;
   }
@@ -81,6 +82,8 @@ bool listed_by_name(audit::SensorVerdict verdict) {
 // agreement of the diagrams, then the sensors worth a look, by name under their verdict.
 void print_summary(const AuditCommandOptions& options, const audit::AuditResult& result,
                    const report::AuditVerdictCounts& counts) {
+  // A map the model does not explain is said first: the verdicts below are read in its light.
+  if (result.model_fit.misfit) std::cout << options.map_path << ": " << report::model_fit_text(result) << "\n";
   std::cout << options.map_path << ": " << counts.sensors << " sensors (" << counts.in_map << " with a cell in the map, "
             << counts.sensors - counts.in_map << " reported without one; " << counts.reported << " reported): "
             << report::verdict_counts_text(counts) << "; refined diagram agrees with the map on "
@@ -88,6 +91,8 @@ void print_summary(const AuditCommandOptions& options, const audit::AuditResult&
   if (result.reported_agreement)
     std::cout << " (reported sensors: " << fixed(100.0 * result.reported_agreement->mean_iou, 1) << " %)";
   std::cout << " -> " << options.output_dir << "\n";
+  if (!result.model_fit.misfit && result.model_fit.known) std::cout << "  " << report::model_fit_text(result) << "\n";
+  if (const std::string reach = report::reception_text(result); !reach.empty()) std::cout << "  " << reach << "\n";
   for (const audit::SensorVerdict verdict : audit::kAllSensorVerdicts) {
     if (!listed_by_name(verdict) || counts.of(verdict) == 0) continue;
     std::cout << "  " << report::verdict_words(verdict) << ":\n";

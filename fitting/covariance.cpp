@@ -26,14 +26,21 @@ std::vector<int> observed_sites(const Layout& layout) {
 }
 
 // Computes the diagonal blocks of `sites`; false when Ceres reports a rank-deficient Jacobian.
+// With log_range (not null): its variance too, into *log_range_sigma.
 bool compute_blocks(ceres::Problem& problem, std::vector<SiteBlock>& blocks, const std::vector<int>& sites,
-                    int threads, std::vector<SiteUncertainty>& out) {
+                    int threads, std::vector<SiteUncertainty>& out, double* log_range = nullptr,
+                    double* log_range_sigma = nullptr) {
   ceres::Covariance::Options covariance_options;
   covariance_options.num_threads = threads;
   ceres::Covariance covariance(covariance_options);
   std::vector<std::pair<const double*, const double*>> wanted;
   for (int i : sites) wanted.emplace_back(blocks[i].data(), blocks[i].data());
+  if (log_range) wanted.emplace_back(log_range, log_range);
   if (!covariance.Compute(wanted, &problem)) return false;
+  if (log_range) {
+    double v = 0.0;
+    if (covariance.GetCovarianceBlock(log_range, log_range, &v)) *log_range_sigma = std::sqrt(v);
+  }
   for (int i : sites) {
     double c[kSiteBlockSize * kSiteBlockSize];
     if (!covariance.GetCovarianceBlock(blocks[i].data(), blocks[i].data(), c)) return false;
@@ -148,7 +155,7 @@ void mark_undetermined(SiteUncertainty& u) {
 
 }  // namespace
 
-CovarianceOutcome site_covariance(std::vector<SiteBlock>& blocks, const Layout& layout,
+CovarianceOutcome site_covariance(std::vector<SiteBlock>& blocks, double* log_range, const Layout& layout,
                                   std::span<const BoundarySample> samples, std::span<const SitePrior> priors,
                                   const ceres::LossFunction* loss, std::span<const double> r,
                                   const RefineOptions& options) {
@@ -176,13 +183,15 @@ CovarianceOutcome site_covariance(std::vector<SiteBlock>& blocks, const Layout& 
   for (std::size_t i = 0; i < samples.size(); ++i) {
     factor[i] = std::sqrt(loss_at(loss, r[i]).weight / outcome.variance_factor);
   }
-  BuiltProblem built = build_problem(blocks, layout, samples, priors, nullptr, factor);
+  BuiltProblem built = build_problem(blocks, log_range, layout, samples, priors, nullptr, factor);
+  double* range = layout.range ? log_range : nullptr;
 
   // Full rank: done. Otherwise find the undetermined sites (cheap local test first, then the
   // dense one), hold them, and try again with the rest.
   std::size_t undetermined = 0;
   for (Diagnosis diagnosis : {Diagnosis::kLocal, Diagnosis::kDense}) {
-    if (compute_blocks(*built.problem, blocks, sites, options.threads, outcome.uncertainty)) {
+    if (compute_blocks(*built.problem, blocks, sites, options.threads, outcome.uncertainty, range,
+                       &outcome.log_range_sigma)) {
       if (undetermined > 0) {
         outcome.remark = "covariance: " + std::to_string(undetermined) + " site(s) undetermined by the data";
       }
@@ -200,7 +209,8 @@ CovarianceOutcome site_covariance(std::vector<SiteBlock>& blocks, const Layout& 
       return outcome;
     }
   }
-  if (compute_blocks(*built.problem, blocks, sites, options.threads, outcome.uncertainty)) {
+  if (compute_blocks(*built.problem, blocks, sites, options.threads, outcome.uncertainty, range,
+                     &outcome.log_range_sigma)) {
     outcome.remark = "covariance: " + std::to_string(undetermined) + " site(s) undetermined by the data";
     return outcome;
   }

@@ -30,10 +30,12 @@ struct CovarianceOutcome {
   std::vector<SiteUncertainty> uncertainty;  // per site; sites without samples are left default
   double variance_factor = 1.0;              // κ
   std::string remark;                        // empty, or why some or all are unavailable
+  double log_range_sigma = 0.0;              // 1-σ of ρ = log R (layout.range), 0 if not computed
 };
 
-// `blocks` holds the solution; `r` the sample residuals in σ units there.
-CovarianceOutcome site_covariance(std::vector<SiteBlock>& blocks, const Layout& layout,
+// `blocks` (and `log_range`, when layout.range) hold the solution; `r` the sample residuals in σ
+// units there.
+CovarianceOutcome site_covariance(std::vector<SiteBlock>& blocks, double* log_range, const Layout& layout,
                                   std::span<const BoundarySample> samples, std::span<const SitePrior> priors,
                                   const ceres::LossFunction* loss, std::span<const double> r,
                                   const RefineOptions& options);

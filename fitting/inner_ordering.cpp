@@ -10,7 +10,7 @@ std::vector<std::vector<int>> independent_rounds(std::size_t site_count, std::sp
                                                  std::span<const int> sample_count) {
   std::vector<std::set<int>> neighbours(site_count);
   for (const BoundarySample& s : samples) {
-    if (s.site_a == s.site_b) continue;
+    if (s.site_a == s.site_b || s.site_b == kNone) continue;
     neighbours[s.site_a].insert(s.site_b);
     neighbours[s.site_b].insert(s.site_a);
   }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <ceres/jet.h>
 #include <cmath>
+#include <stdexcept>
 
 #include "fitting/residuals.h"
 #include "fitting/tolerances.h"
@@ -12,7 +13,7 @@ namespace covmap::fitting {
 
 std::vector<LocalUncertainty> local_uncertainty(std::span<const Site> sites,
                                                 std::span<const fitting::BoundarySample> samples,
-                                                double loss_scale) {
+                                                double loss_scale, std::optional<double> range) {
   using Jet = ceres::Jet<double, 6>;
   const std::size_t n = sites.size();
   std::vector<double> residual(samples.size(), 0.0);
@@ -20,11 +21,17 @@ std::vector<LocalUncertainty> local_uncertainty(std::span<const Site> sites,
   for (std::size_t k = 0; k < samples.size(); ++k) {
     const auto& s = samples[k];
     const auto& a = sites[s.site_a];
-    const auto& b = sites[s.site_b];
     Jet pa[3] = {Jet(a.x, 0), Jet(a.y, 1), Jet(std::log(a.weight), 2)};
-    Jet pb[3] = {Jet(b.x, 3), Jet(b.y, 4), Jet(std::log(b.weight), 5)};
     Jet r;
-    fitting::BoundaryResidual(s.p.x, s.p.y, 1.0)(pa, pb, &r);
+    if (s.site_b == kNone) {
+      if (!range) throw std::invalid_argument("local_uncertainty: range-edge samples need the range R");
+      const Jet log_range(std::log(*range));
+      fitting::RangeResidual(s.p.x, s.p.y, 1.0)(pa, &log_range, &r);
+    } else {
+      const auto& b = sites[s.site_b];
+      Jet pb[3] = {Jet(b.x, 3), Jet(b.y, 4), Jet(std::log(b.weight), 5)};
+      fitting::BoundaryResidual(s.p.x, s.p.y, 1.0)(pa, pb, &r);
+    }
     residual[k] = r.a;
     gradient[k] = r.v.transpose();
   }
@@ -40,13 +47,23 @@ std::vector<LocalUncertainty> local_uncertainty(std::span<const Site> sites,
   // Boundaries with at least two different neighbours: along a single boundary the site can slide
   // with its weight (Lemma 1 fixes only its mirror relation to that one neighbour), and the 3×3
   // block is then nearly singular however many samples it holds.
-  std::vector<int> first_neighbour(n, -1);
+  // A range edge (site_b = kNone) is enough alone: its circle about the site fixes all three of
+  // the site's parameters (R held), unless the arc is too short (the conditioning test below).
+  constexpr int kUnset = -2;
+  std::vector<int> first_neighbour(n, kUnset);
   std::vector<char> two_neighbours(n, 0);
-  for (const auto& s : samples)
-    for (auto [me, other] : {std::pair{s.site_a, s.site_b}, std::pair{s.site_b, s.site_a}}) {
-      if (first_neighbour[me] < 0) first_neighbour[me] = other;
-      else if (first_neighbour[me] != other) two_neighbours[me] = 1;
+  auto meet = [&](int me, int other) {
+    if (first_neighbour[me] == kUnset) first_neighbour[me] = other;
+    else if (first_neighbour[me] != other) two_neighbours[me] = 1;
+  };
+  for (const auto& s : samples) {
+    if (s.site_b == kNone) {
+      two_neighbours[s.site_a] = 1;
+      continue;
     }
+    meet(s.site_a, s.site_b);
+    meet(s.site_b, s.site_a);
+  }
   const double c = loss_scale * noise;
   for (std::size_t k = 0; k < samples.size(); ++k) {
     if (!gradient[k].allFinite() || !std::isfinite(residual[k])) continue;
@@ -54,7 +71,7 @@ std::vector<LocalUncertainty> local_uncertainty(std::span<const Site> sites,
     const double w = 1.0 / (1.0 + u * u);
     const Eigen::Vector3d ga = gradient[k].head<3>().transpose(), gb = gradient[k].tail<3>().transpose();
     info[samples[k].site_a] += w * ga * ga.transpose();
-    info[samples[k].site_b] += w * gb * gb.transpose();
+    if (samples[k].site_b != kNone) info[samples[k].site_b] += w * gb * gb.transpose();
   }
   std::vector<LocalUncertainty> out(n);
   for (std::size_t i = 0; i < n; ++i) {

@@ -11,6 +11,7 @@
 // loss of the same scale, so a few bad chains do not shrink or inflate anyone's σ.
 #pragma once
 
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -24,9 +25,12 @@ struct LocalUncertainty {
   bool available = false;  // false: fewer than two neighbours' boundaries, or too few samples
 };
 
-// loss_scale: where the Cauchy down-weighting starts, in units of the noise level.
+// loss_scale: where the Cauchy down-weighting starts, in units of the noise level. range: R of
+// refine_sites (RefineResult::range), needed when some samples are range edges (held, like the
+// neighbours: a range edge then fixes its site's position and weight relative to R); a range edge
+// counts as one more neighbour.
 std::vector<LocalUncertainty> local_uncertainty(std::span<const Site> sites,
                                                 std::span<const fitting::BoundarySample> samples,
-                                                double loss_scale);
+                                                double loss_scale, std::optional<double> range = std::nullopt);
 
 }  // namespace covmap::fitting

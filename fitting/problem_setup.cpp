@@ -1,6 +1,7 @@
 #include "fitting/problem_setup.h"
 
 #include <cmath>
+#include <algorithm>
 #include <numeric>
 
 #include <ceres/manifold.h>
@@ -31,8 +32,15 @@ Layout make_layout(std::span<const Site> initial, std::span<const BoundarySample
   layout.sample_count.assign(n, 0);
   layout.group.assign(n, kNone);
   Groups groups(n);
+  int first_range_site = kNone;  // the common R joins every site with a range edge into one group
   for (const BoundarySample& s : samples) {
     ++layout.sample_count[s.site_a];
+    if (s.site_b == kNone) {
+      layout.range = true;
+      if (first_range_site == kNone) first_range_site = s.site_a;
+      groups.join(s.site_a, first_range_site);
+      continue;
+    }
     ++layout.sample_count[s.site_b];
     groups.join(s.site_a, s.site_b);
   }
@@ -54,7 +62,7 @@ Layout make_layout(std::span<const Site> initial, std::span<const BoundarySample
   }
   std::size_t observed = 0;
   for (std::size_t i = 0; i < n; ++i) observed += layout.sample_count[i] > 0 ? 1 : 0;
-  layout.free_parameters = kSiteBlockSize * observed;
+  layout.free_parameters = kSiteBlockSize * observed + (layout.range ? 1 : 0);
   for (std::size_t g = 0; g < weight_prior.size(); ++g) {
     if (weight_prior[g]) {
       layout.group_reference[g] = kNone;
@@ -72,9 +80,9 @@ std::vector<SiteBlock> initial_blocks(std::span<const Site> initial) {
   return blocks;
 }
 
-BuiltProblem build_problem(std::vector<SiteBlock>& blocks, const Layout& layout, std::span<const BoundarySample> samples,
-                           std::span<const SitePrior> priors, ceres::LossFunction* loss,
-                           std::span<const double> sample_factor) {
+BuiltProblem build_problem(std::vector<SiteBlock>& blocks, double* log_range, const Layout& layout,
+                           std::span<const BoundarySample> samples, std::span<const SitePrior> priors,
+                           ceres::LossFunction* loss, std::span<const double> sample_factor) {
   ceres::Problem::Options problem_options;
   problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
   BuiltProblem built{std::make_unique<ceres::Problem>(problem_options), {}};
@@ -83,10 +91,16 @@ BuiltProblem build_problem(std::vector<SiteBlock>& blocks, const Layout& layout,
   for (std::size_t i = 0; i < blocks.size(); ++i) {
     if (layout.sample_count[i] > 0) problem.AddParameterBlock(blocks[i].data(), kSiteBlockSize);
   }
+  if (layout.range) problem.AddParameterBlock(log_range, 1);
   built.sample_blocks.reserve(samples.size());
   for (std::size_t i = 0; i < samples.size(); ++i) {
     const BoundarySample& s = samples[i];
     const double factor = sample_factor.empty() ? 1.0 : sample_factor[i];
+    if (s.site_b == kNone) {
+      built.sample_blocks.push_back(problem.AddResidualBlock(RangeResidual::Create(s.p.x, s.p.y, factor / s.sigma), loss,
+                                                             blocks[s.site_a].data(), log_range));
+      continue;
+    }
     built.sample_blocks.push_back(problem.AddResidualBlock(BoundaryResidual::Create(s.p.x, s.p.y, factor / s.sigma),
                                                            loss, blocks[s.site_a].data(), blocks[s.site_b].data()));
   }
@@ -117,11 +131,27 @@ BuiltProblem build_problem(std::vector<SiteBlock>& blocks, const Layout& layout,
   return built;
 }
 
-double geometric_residual(const std::vector<SiteBlock>& blocks, const BoundarySample& sample) {
-  const BoundaryResidual residual(sample.p.x, sample.p.y, 1.0);
+double geometric_residual(const std::vector<SiteBlock>& blocks, double log_range, const BoundarySample& sample) {
   double r = 0.0;
-  residual(blocks[sample.site_a].data(), blocks[sample.site_b].data(), &r);
+  if (sample.site_b == kNone) {
+    RangeResidual(sample.p.x, sample.p.y, 1.0)(blocks[sample.site_a].data(), &log_range, &r);
+  } else {
+    BoundaryResidual(sample.p.x, sample.p.y, 1.0)(blocks[sample.site_a].data(), blocks[sample.site_b].data(), &r);
+  }
   return r;
+}
+
+double initial_log_range(const std::vector<SiteBlock>& blocks, std::span<const BoundarySample> samples) {
+  std::vector<double> logs;
+  for (const BoundarySample& s : samples) {
+    if (s.site_b != kNone) continue;
+    const SiteBlock& a = blocks[s.site_a];
+    const double d = std::hypot(s.p.x - a[0], s.p.y - a[1]);
+    if (d > 0) logs.push_back(std::log(d) - a[kLogWeightIndex]);
+  }
+  if (logs.empty()) return 0.0;
+  std::nth_element(logs.begin(), logs.begin() + logs.size() / 2, logs.end());
+  return logs[logs.size() / 2];
 }
 
 }  // namespace covmap::fitting::detail

@@ -26,6 +26,7 @@ struct Layout {
   std::vector<int> sample_count;     // per site
   std::vector<int> group;            // per site: its connected group, kNone for a site without samples
   std::vector<int> group_reference;  // per group: the site whose u is held, kNone if weight priors fix the scale
+  bool range = false;                // some sample is a range edge: ρ = log R is a parameter
   std::size_t free_parameters = 0;   // tangent dimension of the problem
 };
 
@@ -39,14 +40,19 @@ struct BuiltProblem {
   std::vector<ceres::ResidualBlockId> sample_blocks;  // per sample, in order
 };
 
-// Blocks of the sites with samples, one residual per sample (its 1/σ times sample_factor[i], or
-// times 1 when sample_factor is empty) under `loss` (not owned; may be nullptr), their priors, and
-// the gauge (a SubsetManifold holding u of each group_reference). `blocks` must outlive the problem.
-BuiltProblem build_problem(std::vector<SiteBlock>& blocks, const Layout& layout, std::span<const BoundarySample> samples,
-                           std::span<const SitePrior> priors, ceres::LossFunction* loss,
-                           std::span<const double> sample_factor = {});
+// Blocks of the sites with samples (and `log_range`, ρ = log R, when layout.range), one residual
+// per sample (its 1/σ times sample_factor[i], or times 1 when sample_factor is empty) under `loss`
+// (not owned; may be nullptr), their priors, and the gauge (a SubsetManifold holding u of each
+// group_reference). `blocks` and `log_range` must outlive the problem.
+BuiltProblem build_problem(std::vector<SiteBlock>& blocks, double* log_range, const Layout& layout,
+                           std::span<const BoundarySample> samples, std::span<const SitePrior> priors,
+                           ceres::LossFunction* loss, std::span<const double> sample_factor = {});
 
-// Signed first-order distance of sample p from the bisector of its sites at `blocks` (units of p).
-double geometric_residual(const std::vector<SiteBlock>& blocks, const BoundarySample& sample);
+// Signed first-order distance of sample p from the bisector of its sites at `blocks`, or from the
+// range circle of its site for a range edge (units of p).
+double geometric_residual(const std::vector<SiteBlock>& blocks, double log_range, const BoundarySample& sample);
+
+// A start for ρ = log R: the median over the range samples of log |p − a| − u_a (0 without any).
+double initial_log_range(const std::vector<SiteBlock>& blocks, std::span<const BoundarySample> samples);
 
 }  // namespace covmap::fitting::detail

@@ -135,6 +135,7 @@ RefineResult refine_sites(std::span<const Site> initial, std::span<const Boundar
 
   const detail::Layout layout = detail::make_layout(initial, samples, priors);
   std::vector<SiteBlock> blocks = detail::initial_blocks(initial);
+  double log_range = detail::initial_log_range(blocks, samples);
   const std::unique_ptr<ceres::LossFunction> loss = detail::make_loss(options.loss, options.loss_scale);
 
   RefineResult result;
@@ -148,7 +149,7 @@ RefineResult refine_sites(std::span<const Site> initial, std::span<const Boundar
     summary.termination = "NO_SAMPLES";
     summary.message = "no boundary samples: nothing to refine";
   } else {
-    detail::BuiltProblem built = detail::build_problem(blocks, layout, samples, priors, loss.get());
+    detail::BuiltProblem built = detail::build_problem(blocks, &log_range, layout, samples, priors, loss.get());
     ceres::Solver::Summary solved;
     ceres::Solver::Options solver = solver_options(options);
     if (solver.use_inner_iterations) solver.inner_iteration_ordering = inner_ordering(blocks, layout, samples);
@@ -168,7 +169,7 @@ RefineResult refine_sites(std::span<const Site> initial, std::span<const Boundar
   r_sigma.reserve(samples.size());
   double sum_squares = 0.0;
   for (const BoundarySample& s : samples) {
-    const double r = detail::geometric_residual(blocks, s);
+    const double r = detail::geometric_residual(blocks, log_range, s);
     result.sample_residual.push_back(r);
     r_sigma.push_back(r / s.sigma);
     sum_squares += r * r;
@@ -177,7 +178,8 @@ RefineResult refine_sites(std::span<const Site> initial, std::span<const Boundar
 
   if (options.compute_covariance && !samples.empty()) {
     detail::CovarianceOutcome covariance =
-        detail::site_covariance(blocks, layout, samples, priors, loss.get(), r_sigma, options);
+        detail::site_covariance(blocks, &log_range, layout, samples, priors, loss.get(), r_sigma, options);
+    result.range_sigma = covariance.log_range_sigma;  // of log R: relative, scaled below
     result.uncertainty = std::move(covariance.uncertainty);
     summary.noise_variance_factor = covariance.variance_factor;
     if (!covariance.remark.empty()) summary.message += (summary.message.empty() ? "" : "; ") + covariance.remark;
@@ -190,6 +192,11 @@ RefineResult refine_sites(std::span<const Site> initial, std::span<const Boundar
   result.sites.reserve(initial.size());
   for (std::size_t i = 0; i < initial.size(); ++i) {
     result.sites.push_back({initial[i].id, blocks[i][0], blocks[i][1], std::exp(blocks[i][kLogWeightIndex] - largest)});
+  }
+  // R·w is invariant: dividing the weights by the largest multiplies R by it.
+  if (layout.range) {
+    result.range = std::exp(log_range + largest);
+    result.range_sigma *= *result.range;
   }
   summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

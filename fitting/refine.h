@@ -4,13 +4,15 @@
 // Contract
 //  - Input: initial sites (finite coordinates, finite positive weights); boundary samples, each a
 //    finite point p with the indices of the two sites whose cells it separates (in range, a ≠ b,
+//    or b = kNone for a point of a's range edge,
 //    p not exactly at either initial site, the two not starting at one position) and a finite
 //    positive σ; optional priors (site in range, finite values; a σ ≤ 0 switches that part of the
 //    prior off, a NaN or infinite σ is an error). Anything else throws std::invalid_argument that
 //    lists every problem, each naming the sample/prior/site and what is wrong; invalid
 //    RefineOptions throw std::invalid_argument with IsValid's message.
-//  - Model: parameters x, y, u = log(weight) per site; one residual per sample, its first-order
-//    geometric distance from the bisector divided by σ (fitting/residuals.h), under a robust loss;
+//  - Model: parameters x, y, u = log(weight) per site, and ρ = log R when any sample is a range
+//    edge; one residual per sample, its first-order geometric distance from the bisector (or its
+//    distance from the range circle) divided by σ (fitting/residuals.h), under a robust loss;
 //    priors as independent Gaussian residuals.
 //  - Gauge: the boundaries fix positions absolutely but weights only up to one common factor per
 //    connected group of sites (sites linked by samples). In a group without weight priors the log
@@ -33,6 +35,7 @@
 #include <cstddef>
 #include <span>
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -42,11 +45,14 @@
 
 namespace covmap::fitting {
 
-// A point observed on the boundary between the cells of sites a and b (indices into the sites).
+// A point observed on the boundary between the cells of sites a and b (indices into the sites), or,
+// with site_b = kNone, on the range edge of site a: where its coverage ends at the reception limit.
+// In the path-loss model a range edge is the circle about the site of radius R·w_a, with one R for
+// the whole map (it encodes the receivers' sensitivity); R is estimated with the sites.
 struct BoundarySample {
   Point p;
   int site_a = 0;
-  int site_b = 0;
+  int site_b = 0;     // kNone: a range-edge sample of site_a
   double sigma = 1.0;  // 1-σ of p's distance from the boundary, in the units of p
   int chain = 0;       // which boundary chain p came from; carried through for reports only
 };
@@ -155,7 +161,12 @@ struct RefineResult {
   std::vector<SiteUncertainty> uncertainty;     // per site
   std::vector<SiteStatus> status;               // per site
   std::vector<double> sample_residual;          // signed geometric distance per sample, units of p;
-                                                // positive on site_b's side of the bisector
+                                                // positive on site_b's side of the bisector (for a
+                                                // range edge: outside the range circle)
+  // The reach R of a site of weight 1 (the largest refined weight), units of p, when any sample
+  // is a range edge: site i's coverage ends at R·weight_i. With its 1-σ (0 when not computed).
+  std::optional<double> range;
+  double range_sigma = 0.0;
   RefineSummary summary;
 };
 

@@ -26,6 +26,14 @@
 // The gradient norm is floored (tolerance::kGradientFloor) so the residual stays finite at the only
 // points where ∇f = 0: off the bisector, on the line through equal-weight sites, outside them.
 //
+// RangeResidual — a point p observed on the range edge of site a, the circle of radius R·w_a about
+// it (R common to the map, parameter ρ = log R):
+//
+//     r = (|p − a| − exp(ρ + u_a)) / σ
+//
+// the exact signed distance from the circle (positive outside the reach). A range edge never
+// passes through its own site (the site is covered: distance 0 < R·w), so |p − a| > 0 there.
+//
 // PositionPriorResidual / LogWeightPriorResidual — independent Gaussian priors on a site's
 // position (isotropic, σ in length units) and on its log weight.
 #pragma once
@@ -66,6 +74,27 @@ class BoundaryResidual {
   static ceres::CostFunction* Create(double px, double py, double scale) {
     return new ceres::AutoDiffCostFunction<BoundaryResidual, 1, kSiteBlockSize, kSiteBlockSize>(
         new BoundaryResidual(px, py, scale));
+  }
+
+ private:
+  double px_, py_, scale_;
+};
+
+class RangeResidual {
+ public:
+  RangeResidual(double px, double py, double scale) : px_(px), py_(py), scale_(scale) {}
+
+  template <typename T>
+  bool operator()(const T* a, const T* log_range, T* residual) const {
+    using std::exp;
+    using std::sqrt;
+    const T ax = T(px_) - a[0], ay = T(py_) - a[1];
+    residual[0] = T(scale_) * (sqrt(ax * ax + ay * ay) - exp(log_range[0] + a[kLogWeightIndex]));
+    return true;
+  }
+
+  static ceres::CostFunction* Create(double px, double py, double scale) {
+    return new ceres::AutoDiffCostFunction<RangeResidual, 1, kSiteBlockSize, 1>(new RangeResidual(px, py, scale));
   }
 
  private:

@@ -69,6 +69,12 @@ void check_samples(std::span<const Site> sites, std::span<const BoundarySample> 
       problems.add(item, "sigma must be finite and positive (got " + number(s.sigma) + ")");
     }
     const bool a_ok = check_index(s.site_a, sites.size(), item, "site_a", problems);
+    if (s.site_b == kNone) {  // a range edge of site_a
+      if (a_ok && finite && s.p.x == sites[s.site_a].x &&
+          s.p.y == sites[s.site_a].y)
+        problems.add(item, "range-edge point is exactly at site " + std::to_string(s.site_a));
+      continue;
+    }
     const bool b_ok = check_index(s.site_b, sites.size(), item, "site_b", problems);
     if (s.site_a == s.site_b) {
       problems.add(item, "site_a and site_b are the same site (" + std::to_string(s.site_a) + ")");

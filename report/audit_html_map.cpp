@@ -226,6 +226,7 @@ std::string verdict_colour(audit::SensorVerdict verdict) {
     case audit::SensorVerdict::kNotInMap: return "#e08000";
     case audit::SensorVerdict::kUnreported: return "#2b6cb0";
     case audit::SensorVerdict::kUndetermined: return "#7a7a7a";
+    case audit::SensorVerdict::kModelMisfit: return "#8e44ad";
   }
   throw std::logic_error("verdict_colour: a verdict outside the enumeration");
 }

@@ -114,6 +114,13 @@ std::string_view verdict_words(audit::SensorVerdict verdict);
 // judged), 0 reported but not in the map".
 std::string verdict_counts_text(const AuditVerdictCounts& counts);
 
+// The model fit (issue 12) in one sentence for people; empty when it was not measured. When the
+// map does not follow the model it starts "The map does not follow the path-loss model", and every
+// report puts it first.
+std::string model_fit_text(const audit::AuditResult& result);
+// The reception limit in one sentence; empty when the map has none.
+std::string reception_text(const audit::AuditResult& result);
+
 // Every repair the cleaning made: merged junctions, closed gaps, resolved overlaps, dropped short
 // chains and snapped nodes.
 std::size_t cleaning_repairs(const cleaning::CleaningReport& report);

@@ -8,6 +8,8 @@
 
 #include "report/audit_report.h"
 
+#include "core/readable_numbers.h"
+
 namespace covmap::report {
 
 bool AuditRenderOptions::is_valid(std::string* why) const {
@@ -57,6 +59,7 @@ std::string_view verdict_words(audit::SensorVerdict verdict) {
     case audit::SensorVerdict::kInconsistent: return "inconsistent";
     case audit::SensorVerdict::kUndetermined: return "undetermined (not judged)";
     case audit::SensorVerdict::kNotInMap: return "reported but not in the map";
+    case audit::SensorVerdict::kModelMisfit: return "model misfit (not judged: the map does not follow the model there)";
   }
   throw std::logic_error("verdict_words: a verdict outside the enumeration");
 }
@@ -74,6 +77,35 @@ std::string verdict_counts_text(const AuditVerdictCounts& counts) {
 
 std::size_t cleaning_repairs(const cleaning::CleaningReport& r) {
   return r.junctions_merged + r.gaps_closed + r.overlaps_resolved + r.short_chains_dropped + r.nodes_snapped;
+}
+
+std::string model_fit_text(const audit::AuditResult& result) {
+  const audit::ModelFit& f = result.model_fit;
+  if (!f.known) return "";
+  const std::string ratio = fixed(f.ratio, f.ratio < 10 ? 2 : 0);
+  const std::string misfits = f.misfit_sensors == 0
+                                  ? "no sensor lies in a region it does not explain"
+                                  : plural(f.misfit_sensors, "sensor") + " (" + fixed(100.0 * f.misfit_area_share, 1) +
+                                        " % of the covered area) lie in regions it does not explain and are not judged (model misfit)";
+  if (f.misfit)
+    return "The map does not follow the path-loss model: the model draws its boundaries " + ratio +
+           " times worse (mean square) than free curves fitted to each; " + misfits +
+           ". Verdicts elsewhere rest on a model the map only partly follows.";
+  return "The map follows the path-loss model: the model draws its boundaries " + ratio +
+         " times the mean square of free curves fitted to each (1 = as well as they do); " + misfits + ".";
+}
+
+std::string reception_text(const audit::AuditResult& result) {
+  if (!result.reception) return "";
+  const audit::ReceptionLimit& r = *result.reception;
+  std::string text = "Coverage ends at a reception limit (" + plural(r.sensors, "sensor") +
+                     "): the strongest sensor reaches " + metres(r.range_m);
+  if (r.range_sigma_m > 0) text += " ± " + metres(r.range_sigma_m);
+  text += ", every other its weight times that";
+  if (r.sensitivity_dbm)
+    text += "; implied receiver sensitivity " + fixed(*r.sensitivity_dbm, 1) +
+            " dBm relative to the transmit powers (up to the model's loss at 1 m)";
+  return text + ".";
 }
 
 }  // namespace covmap::report

@@ -24,6 +24,7 @@ h1{font-size:1.5em;margin:0 0 .2em}h2{font-size:1.15em;margin:1.6em 0 .5em;borde
 h3{font-size:1em;margin:1em 0 .3em}
 code{font-size:.92em;background:#f3f3f3;padding:0 .25em;word-break:break-all}
 .meta{color:#555;margin:.2em 0}
+.misfit{color:#fff;background:#8e44ad;padding:.5em .8em;border-radius:4px;font-weight:bold}
 .cards{display:flex;flex-wrap:wrap;gap:.6em;margin:.6em 0}
 .card{border:1px solid #ddd;border-left-width:5px;border-radius:5px;padding:.4em .9em;min-width:7.5em}
 .card b{display:block;font-size:1.7em;font-variant-numeric:tabular-nums}
@@ -292,6 +293,13 @@ void write_audit_html(const AuditReportContext& c, std::ostream& out) {
   if (!c.command_line.empty())
     out << "<p class=\"meta\" id=\"run-command\">Command: <code>" << html_escape(c.command_line) << "</code></p>\n";
   run_timings(out, c.result);
+  // The model fit first: when the map does not follow the model, every verdict below is read in
+  // that light.
+  if (const std::string fit = model_fit_text(c.result); !fit.empty())
+    out << "<p id=\"model-fit\" class=\"" << (c.result.model_fit.misfit ? "misfit" : "meta") << "\">" << html_escape(fit)
+        << "</p>\n";
+  if (const std::string reach = reception_text(c.result); !reach.empty())
+    out << "<p id=\"reception\" class=\"meta\">" << html_escape(reach) << "</p>\n";
   summary(out, c);
   map_section(out, c);
   sensor_table(out, c);

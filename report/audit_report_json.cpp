@@ -71,6 +71,8 @@ json sensor_json(const audit::SensorAudit& s, const io::CoverageMap& map) {
   j["power_error_db"] = compared ? number_or_null(s.power_error_db) : json();
   j["weight_ratio"] = compared ? number_or_null(s.weight_ratio) : json();
   j["chi2"] = number_or_null(s.chi2);  // null unless the verdict was reached by the χ² test
+  j["verdict_basis"] = s.basis == audit::VerdictBasis::kNone ? json() : json(std::string(audit::to_string(s.basis)));
+  j["model_fit_ratio"] = s.model_fit_ratio ? number_or_null(*s.model_fit_ratio) : json();
   j["verdict"] = detail::verdict_json(s.verdict);
   j["reason"] = s.reason;
   j["iou_refined"] = number_or_null(s.iou_refined);
@@ -93,6 +95,7 @@ json cleaning_json(const cleaning::CleaningReport& r) {
           {"sensors", r.sensors},
           {"chains", r.chains},
           {"frame_chains", r.frame_chains},
+          {"range_edges", r.range_edges},
           {"junctions", r.junctions},
           {"junctions_merged", r.junctions_merged},
           {"gaps_closed", r.gaps_closed},
@@ -137,6 +140,24 @@ json summary_json(const AuditVerdictCounts& counts) {
   return j;
 }
 
+// The reception limit (issue 12), null when the map has no range edges.
+json reception_json(const std::optional<audit::ReceptionLimit>& limit) {
+  if (!limit) return nullptr;
+  return {{"range_m", number_or_null(limit->range_m)},
+          {"range_sigma_m", number_or_null(limit->range_sigma_m)},
+          {"sensitivity_dbm", limit->sensitivity_dbm ? number_or_null(*limit->sensitivity_dbm) : json()},
+          {"sensors", limit->sensors}};
+}
+
+// How well the multiplicative model explains the map (issue 12), null when not measured.
+json model_fit_json(const audit::ModelFit& fit) {
+  if (!fit.known) return nullptr;
+  return {{"ratio", number_or_null(fit.ratio)},
+          {"misfit", fit.misfit},
+          {"misfit_sensors", fit.misfit_sensors},
+          {"misfit_area_share", number_or_null(fit.misfit_area_share)}};
+}
+
 // Wall-clock times, the one member that differs between runs of the same input (issue 12).
 json timings_json(const audit::AuditResult& r) {
   json stages = json::array();
@@ -160,6 +181,8 @@ void write_audit_json(const AuditReportContext& c, std::ostream& out) {
   j["bin_size_m"] = number_or_null(r.bin_size_m);
   j["boundary_samples"] = r.boundary_samples;
   j["refinement"] = r.refinement_summary;
+  j["reception"] = reception_json(r.reception);
+  j["model_fit"] = model_fit_json(r.model_fit);
   j["agreement"] = {{"refined", agreement_json(r.refined_agreement)},
                     {"reported", r.reported_agreement ? agreement_json(*r.reported_agreement) : json()}};
   j["thresholds"] = c.options ? thresholds_json(*c.options, r.bin_size_m) : json();

@@ -17,7 +17,7 @@ TEST(SensorVerdict, NamesAreDistinctAndReadBack) {
     ASSERT_TRUE(sensor_verdict_from_string(name).has_value()) << name;
     EXPECT_EQ(*sensor_verdict_from_string(name), v) << name;
   }
-  EXPECT_EQ(names.size(), 5u);
+  EXPECT_EQ(names.size(), std::size(kAllSensorVerdicts));
 }
 
 TEST(SensorVerdict, TheReportsNamesAreTheDocumentedOnes) {

@@ -99,12 +99,14 @@ def accounting_failures(name, truth, report, stdout):
     if sorted(ids) != truth_ids:
         failures.append(f"{name}: sensors listed {len(ids)} (distinct {len(set(ids))}) are not the "
                         f"{len(truth_ids)} true sensors")
-    # A χ² exists only where the χ² test judged the sensor; elsewhere it was never computed: null.
+    # A χ² exists only where the χ² test of the boundary fit judged the sensor (verdict_basis
+    # "boundary_fit"); elsewhere it was never computed: null. Every judged sensor names its basis.
     for s in listed:
-        judged = s["verdict"] in ("consistent", "inconsistent")
-        if judged != (s["chi2"] is not None) and s["verdict"] in ("consistent", "inconsistent", "undetermined",
-                                                                   "not_in_map", None):
-            failures.append(f"{name}: sensor {s['id']} ({s['verdict']}) has chi2 {s['chi2']}")
+        judged = s["verdict_basis"] == "boundary_fit"
+        if judged != (s["chi2"] is not None):
+            failures.append(f"{name}: sensor {s['id']} ({s['verdict']}, basis {s['verdict_basis']}) has chi2 {s['chi2']}")
+        if s["verdict"] in ("consistent", "inconsistent") and s["verdict_basis"] is None:
+            failures.append(f"{name}: sensor {s['id']} is {s['verdict']} on no basis")
     # stdout: "MAP: N sensors (...): n1 words, n2 words, ...; refined diagram ..."
     first = stdout.splitlines()[0] if stdout else ""
     match = re.match(r".*?: (\d+) sensors \((\d+) with a cell in the map, (\d+) reported without one; "

@@ -1,0 +1,111 @@
+#include "cleaning/range_edges.h"
+
+#include <algorithm>
+#include <cmath>
+#include <variant>
+
+#include "cleaning/curve_fit.h"
+#include "cleaning/tolerances.h"
+
+namespace covmap::cleaning {
+namespace {
+
+struct Bounds {
+  double xmin = INFINITY, ymin = INFINITY, xmax = -INFINITY, ymax = -INFINITY;
+  void add(Point p) {
+    xmin = std::min(xmin, p.x), ymin = std::min(ymin, p.y);
+    xmax = std::max(xmax, p.x), ymax = std::max(ymax, p.y);
+  }
+  bool near_side(Point p, double reach) const {
+    return p.x - xmin <= reach || xmax - p.x <= reach || p.y - ymin <= reach || ymax - p.y <= reach;
+  }
+};
+
+// Winding number of the sensor's rings about p (outer rings counter-clockwise, holes clockwise):
+// positive inside its region.
+int winding(const std::vector<const BoundaryRing*>& rings, Point p) {
+  int w = 0;
+  for (const BoundaryRing* ring : rings) {
+    const auto& q = ring->points;
+    for (std::size_t i = 0; i < q.size(); ++i) {
+      const Point a = q[i], b = q[(i + 1) % q.size()];
+      const double side = (b.x - a.x) * (p.y - a.y) - (p.x - a.x) * (b.y - a.y);
+      if (a.y <= p.y && b.y > p.y && side > 0) ++w;
+      if (a.y > p.y && b.y <= p.y && side < 0) --w;
+    }
+  }
+  return w;
+}
+
+// Pieces of a frame chain off the bounding box's sides: maximal runs of vertices not within
+// `reach` of a side (each run keeps the last box vertex before it and the first after, so a piece
+// ends where the range edge meets the frame).
+void pieces_off_box(const std::vector<Point>& points, const Bounds& box, double reach,
+                    std::vector<std::vector<Point>>& out) {
+  std::vector<Point> run;
+  for (const Point& p : points) {
+    if (box.near_side(p, reach)) {
+      if (run.size() >= tolerance::kMinFitPoints) out.push_back(std::move(run));
+      run.clear();
+      continue;
+    }
+    run.push_back(p);
+  }
+  if (run.size() >= tolerance::kMinFitPoints) out.push_back(std::move(run));
+}
+
+// Is `fit` the range circle of a sensor whose region is `rings`?
+bool is_reach_of(const FittedCurve& fit, const std::vector<const BoundaryRing*>& rings, double snap) {
+  const Circle* c = std::get_if<Circle>(&fit.curve);
+  if (!c || !(fit.rms <= tolerance::kRangeEdgeRms * snap)) return false;
+  const Point centre{c->cx, c->cy};
+  if (winding(rings, centre) <= 0) return false;
+  const double limit = c->r + tolerance::kRangeDiscSlack * snap;
+  for (const BoundaryRing* ring : rings)
+    for (const Point& p : ring->points)
+      if (std::hypot(p.x - centre.x, p.y - centre.y) > limit) return false;
+  return true;
+}
+
+FittedCurve fit_circle(const std::vector<std::vector<Point>>& pieces, double huber, double line_preference) {
+  std::vector<Point> all;
+  for (const auto& piece : pieces) all.insert(all.end(), piece.begin(), piece.end());
+  return fit_curve(all, huber, line_preference, false);
+}
+
+}  // namespace
+
+void find_range_edges(CleanedMap& map, const MapRings& rings, double snap, double huber, double line_preference) {
+  Bounds box;
+  for (const BoundaryRing& ring : rings.rings)
+    for (const Point& p : ring.points) box.add(p);
+  const std::size_t n = map.sensors.size();
+  std::vector<std::vector<const BoundaryRing*>> rings_of(n);
+  for (const BoundaryRing& ring : rings.rings) rings_of[static_cast<std::size_t>(ring.sensor)].push_back(&ring);
+  std::vector<std::vector<std::vector<Point>>> candidates(n);
+  for (const BoundaryChain& chain : map.chains)
+    if (chain.sensor_b == kNone && chain.sensor_a != kNone)
+      pieces_off_box(chain.points, box, tolerance::kFrameBoxReach * snap, candidates[static_cast<std::size_t>(chain.sensor_a)]);
+  for (std::size_t s = 0; s < n; ++s) {
+    if (candidates[s].empty()) continue;
+    RangeEdge edge;
+    edge.sensor = static_cast<int>(s);
+    edge.fit = fit_circle(candidates[s], huber, line_preference);
+    if (is_reach_of(edge.fit, rings_of[s], snap)) {
+      edge.pieces = std::move(candidates[s]);
+    } else if (candidates[s].size() > 1) {
+      // Pieces that do not fit one circle together (a frame that is not the box's among them):
+      // the pieces that are a reach on their own, then one circle through those.
+      for (auto& piece : candidates[s])
+        if (is_reach_of(fit_circle({piece}, huber, line_preference), rings_of[s], snap)) edge.pieces.push_back(std::move(piece));
+      if (edge.pieces.empty()) continue;
+      edge.fit = fit_circle(edge.pieces, huber, line_preference);
+      if (!is_reach_of(edge.fit, rings_of[s], snap)) continue;
+    } else {
+      continue;
+    }
+    map.range_edges.push_back(std::move(edge));
+  }
+}
+
+}  // namespace covmap::cleaning

@@ -1,0 +1,108 @@
+// Reception limits (issue 12): maps whose coverage ends where every sensor's reach R·w ends. The
+// oracle is the generator's truth: the true sensors, their weights and the reach R it drew the map
+// with (tools/mapgen, max_range_m). Asserted: cleaning finds the range edges (circles about the
+// true sensors with radius R·w) and only where coverage ends at the reach, never along the
+// raster's frame; the audit estimates R and determines sensors that are isolated discs or cut by
+// their reach, with their gross errors flagged.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <set>
+#include <variant>
+
+#include "cleaning/map_cleaning.h"
+#include "generated_map_audit.h"
+
+namespace covmap {
+namespace {
+
+using namespace covmap::testing;
+
+constexpr double kBin = 100.0;
+constexpr double kReach = 2000.0;  // of the strongest sensor; spacing ~3 km, weights 1/3..1
+
+mapgen::CoverageMapOptions reach_options(std::uint64_t seed) {
+  mapgen::CoverageMapOptions o = base_options(seed);
+  o.bin_size_m = kBin;
+  o.max_range_m = kReach;
+  return o;
+}
+
+// Sensors sharing no boundary with any other in the generated raster (isolated discs).
+std::set<int> isolated_sensors(const mapgen::CoverageMap& g) {
+  std::set<int> touching;
+  const auto& grid = g.raster.grid;
+  for (int j = 0; j < grid.ny; ++j)
+    for (int i = 0; i < grid.nx; ++i) {
+      const int a = g.raster.labels[grid.index(i, j)];
+      for (auto [di, dj] : {std::pair{1, 0}, std::pair{0, 1}}) {
+        if (i + di >= grid.nx || j + dj >= grid.ny) continue;
+        const int b = g.raster.labels[grid.index(i + di, j + dj)];
+        if (a != kNone && b != kNone && a != b) touching.insert(a), touching.insert(b);
+      }
+    }
+  std::set<int> out;
+  for (std::size_t s = 0; s < g.truth.size(); ++s)
+    if (g.truth[s].bins > 0 && !touching.count(static_cast<int>(s))) out.insert(static_cast<int>(s));
+  return out;
+}
+
+TEST(ReceptionLimit, RangeEdgesAreCirclesAboutTheTrueSensors) {
+  const AuditRun r = run(reach_options(5), sensors(40, 5), 3.5);
+  std::map<std::string, const mapgen::TrueSensor*> truth;
+  for (const auto& t : r.generated.truth) truth[t.id] = &t;
+  const auto& cleaned = r.result.cleaned;
+  ASSERT_GE(cleaned.range_edges.size(), 20u);
+  for (const cleaning::RangeEdge& e : cleaned.range_edges) {
+    const mapgen::TrueSensor& t = *truth.at(cleaned.sensors[e.sensor]);
+    const Circle* c = std::get_if<Circle>(&e.fit.curve);
+    ASSERT_NE(c, nullptr) << t.id;
+    // Pieces of a circle a few dozen bins across, of bins' staircases: within 2 bins.
+    EXPECT_LT(std::hypot(c->cx - t.position.x, c->cy - t.position.y), 2.0 * kBin) << t.id;
+    EXPECT_NEAR(c->r, kReach * t.weight, 2.0 * kBin) << t.id;
+  }
+}
+
+TEST(ReceptionLimit, TheRasterFrameIsNotARangeEdge) {
+  // Unlimited reach: every outside boundary is the raster's frame.
+  const AuditRun r = run(base_options(5), sensors(40, 5), 3.5);
+  EXPECT_GT(r.result.cleaned.report.frame_chains, 0u);
+  EXPECT_EQ(r.result.cleaned.range_edges.size(), 0u);
+  EXPECT_FALSE(r.result.reception.has_value());
+}
+
+TEST(ReceptionLimit, AuditEstimatesTheReachAndJudgesIsolatedSensors) {
+  const AuditRun r = run(reach_options(8), sensors(40, 8), 3.5);
+  ASSERT_TRUE(r.result.reception.has_value());
+  EXPECT_NEAR(r.result.reception->range_m, kReach, kBin);
+  // Powers reported and alpha given: the sensitivity is the power received at the reach.
+  ASSERT_TRUE(r.result.reception->sensitivity_dbm.has_value());
+  EXPECT_NEAR(*r.result.reception->sensitivity_dbm, 43.0 - 35.0 * std::log10(kReach), 1.0);
+
+  const std::set<int> isolated = isolated_sensors(r.generated);
+  ASSERT_GE(isolated.size(), 3u) << "the layout should have isolated discs";
+  std::map<std::string, const audit::SensorAudit*> audited;
+  for (const auto& s : r.result.sensors) audited[s.id] = &s;
+  int gross_isolated = 0;
+  for (int k : isolated) {
+    const mapgen::TrueSensor& t = r.generated.truth[k];
+    if (t.bins < 20) continue;  // a disc of a few bins fixes little
+    const audit::SensorAudit& s = *audited.at(t.id);
+    EXPECT_NE(s.verdict, audit::SensorVerdict::kUndetermined) << t.id << ": " << s.reason;
+    EXPECT_LT(std::hypot(s.position.x - t.position.x, s.position.y - t.position.y), 1.5 * kBin) << t.id;
+    const bool gross = r.generated.reported[k].error.gross != mapgen::GrossErrorKind::kNone;
+    gross_isolated += gross;
+    if (gross) EXPECT_EQ(s.verdict, audit::SensorVerdict::kInconsistent) << t.id << ": " << s.reason;
+  }
+  // Every gross error of the map with a cell of 20 bins or more is flagged.
+  for (std::size_t k = 0; k < r.generated.truth.size(); ++k) {
+    if (r.generated.truth[k].bins < 20 || r.generated.reported[k].error.gross == mapgen::GrossErrorKind::kNone) continue;
+    EXPECT_EQ(audited.at(r.generated.truth[k].id)->verdict, audit::SensorVerdict::kInconsistent)
+        << r.generated.truth[k].id << ": " << audited.at(r.generated.truth[k].id)->reason;
+  }
+  RecordProperty("isolated_with_gross_errors", gross_isolated);
+}
+
+}  // namespace
+}  // namespace covmap
