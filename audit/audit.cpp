@@ -11,6 +11,7 @@
 #include "audit/model_fit.h"
 #include "audit/start_values.h"
 #include "audit/tolerances.h"
+#include "fitting/local_uncertainty.h"
 
 namespace covmap::audit {
 namespace {
@@ -46,11 +47,13 @@ void refuse_oversized(std::span<const CoverageCell> map) {
 
 // R of the refinement, with the sensitivity it implies when powers fix the scale.
 std::optional<ReceptionLimit> reception_limit(const cleaning::CleanedMap& cleaned, const fitting::RefineResult& refined,
+                                              std::span<const fitting::BoundarySample> samples,
                                               const WeightScale& scale, const AuditOptions& options) {
   if (!refined.range) return std::nullopt;
   ReceptionLimit limit;
   limit.range_m = *refined.range;
-  limit.range_sigma_m = refined.range_sigma;
+  limit.range_sigma_m = refined.range_sigma > 0 ? refined.range_sigma
+                                                : fitting::range_sigma(refined.sites, samples);
   limit.sensors = cleaned.range_edges.size();
   if (scale.p0 && options.alpha) limit.sensitivity_dbm = *scale.p0 - 10.0 * *options.alpha * std::log10(limit.range_m);
   return limit;
@@ -103,7 +106,7 @@ AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSen
 
   // 4. Powers and the common factor of weights; 5. per sensor: reconstruction, uncertainty, verdict.
   const WeightScale scale = weight_scale(refined, reported_of, options);
-  out.reception = reception_limit(out.cleaned, refined, scale, options);
+  out.reception = reception_limit(out.cleaned, refined, setup.samples, scale, options);
   out.sensors = sensor_audits(cleaned, cells, refined, setup, reported_of, reported, scale, options, raster);
   const ModelFitResult fit = model_fit(cleaned, setup.samples, refined.sample_residual, cells.area, out.bin_size_m, options);
   out.model_fit = fit.map;

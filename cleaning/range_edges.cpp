@@ -67,6 +67,42 @@ bool is_reach_of(const FittedCurve& fit, const std::vector<const BoundaryRing*>&
   return true;
 }
 
+// The sensor's own ring vertices along `circle` (within kRangeEdgeBand snaps, off the box): runs of
+// consecutive staircase corners. The frame chains' points are simplified (Douglas–Peucker keeps a
+// convex outline's outer corners), which would put a range edge ~0.4 bins outside its circle; the
+// raw staircase alternates outer and inner corners about it.
+std::vector<std::vector<Point>> raw_pieces(const std::vector<const BoundaryRing*>& rings, const Circle& circle,
+                                           const Bounds& box, double snap) {
+  std::vector<std::vector<Point>> out;
+  const double band = tolerance::kRangeEdgeBand * snap, reach = tolerance::kFrameBoxReach * snap;
+  for (const BoundaryRing* ring : rings) {
+    const auto& q = ring->points;
+    auto on_edge = [&](const Point& p) {
+      return std::abs(std::hypot(p.x - circle.cx, p.y - circle.cy) - circle.r) <= band && !box.near_side(p, reach);
+    };
+    // Start the walk after a vertex off the edge, so that no run is split at the ring's seam.
+    std::size_t start = 0;
+    while (start < q.size() && on_edge(q[start])) ++start;
+    if (start == q.size()) {  // the whole ring is the edge: an isolated disc
+      std::vector<Point> loop(q.begin(), q.end());
+      loop.push_back(q.front());
+      out.push_back(std::move(loop));
+      continue;
+    }
+    std::vector<Point> run;
+    for (std::size_t k = 1; k <= q.size(); ++k) {
+      const Point& p = q[(start + k) % q.size()];
+      if (on_edge(p)) {
+        run.push_back(p);
+        continue;
+      }
+      if (run.size() >= tolerance::kMinFitPoints) out.push_back(std::move(run));
+      run.clear();
+    }
+  }
+  return out;
+}
+
 FittedCurve fit_circle(const std::vector<std::vector<Point>>& pieces, double huber, double line_preference) {
   std::vector<Point> all;
   for (const auto& piece : pieces) all.insert(all.end(), piece.begin(), piece.end());
@@ -103,6 +139,14 @@ void find_range_edges(CleanedMap& map, const MapRings& rings, double snap, doubl
       if (!is_reach_of(edge.fit, rings_of[s], snap)) continue;
     } else {
       continue;
+    }
+    // The raw staircase along the circle found, and the circle refitted to it.
+    if (const Circle* c = std::get_if<Circle>(&edge.fit.curve)) {
+      std::vector<std::vector<Point>> raw = raw_pieces(rings_of[s], *c, box, snap);
+      if (!raw.empty()) {
+        const FittedCurve refit = fit_circle(raw, huber, line_preference);
+        if (is_reach_of(refit, rings_of[s], snap)) edge.pieces = std::move(raw), edge.fit = refit;
+      }
     }
     map.range_edges.push_back(std::move(edge));
   }

@@ -132,5 +132,8 @@ inline constexpr double kRangeEdgeRms = 1.5;
 // ...and the sensor's whole region lies within the circle, but for this many snap distances (the
 // staircase's corners stick out of the true disc by up to ~0.7 bins).
 inline constexpr double kRangeDiscSlack = 3.0;
+// The raw staircase of a range edge: the sensor's ring vertices within this many snap distances of
+// the circle found (its corners lie within ~0.7 bins, 1.4 s, of it; 2 s leaves room for jitter).
+inline constexpr double kRangeEdgeBand = 2.0;
 
 }  // namespace covmap::cleaning::tolerance

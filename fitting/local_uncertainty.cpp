@@ -10,6 +10,18 @@
 #include "fitting/tolerances.h"
 
 namespace covmap::fitting {
+namespace {
+
+// Robust noise level: 1.4826 × the median absolute residual.
+double robust_noise(std::span<const double> residual) {
+  std::vector<double> absolute(residual.size());
+  for (std::size_t k = 0; k < residual.size(); ++k) absolute[k] = std::abs(residual[k]);
+  if (absolute.empty()) return 0.0;
+  std::nth_element(absolute.begin(), absolute.begin() + absolute.size() / 2, absolute.end());
+  return 1.4826 * absolute[absolute.size() / 2];
+}
+
+}  // namespace
 
 std::vector<LocalUncertainty> local_uncertainty(std::span<const Site> sites,
                                                 std::span<const fitting::BoundarySample> samples,
@@ -35,14 +47,7 @@ std::vector<LocalUncertainty> local_uncertainty(std::span<const Site> sites,
     residual[k] = r.a;
     gradient[k] = r.v.transpose();
   }
-  // Robust noise level: 1.4826 × the median absolute residual.
-  std::vector<double> absolute(residual.size());
-  for (std::size_t k = 0; k < residual.size(); ++k) absolute[k] = std::abs(residual[k]);
-  double noise = 0.0;
-  if (!absolute.empty()) {
-    std::nth_element(absolute.begin(), absolute.begin() + absolute.size() / 2, absolute.end());
-    noise = 1.4826 * absolute[absolute.size() / 2];
-  }
+  const double noise = robust_noise(residual);
   std::vector<Eigen::Matrix3d> info(n, Eigen::Matrix3d::Zero());
   // Boundaries with at least two different neighbours: along a single boundary the site can slide
   // with its weight (Lemma 1 fixes only its mirror relation to that one neighbour), and the 3×3
@@ -83,6 +88,26 @@ std::vector<LocalUncertainty> local_uncertainty(std::span<const Site> sites,
     out[i] = {std::sqrt(cov(0, 0)), std::sqrt(cov(1, 1)), cov(0, 1), std::sqrt(cov(2, 2)), true};
   }
   return out;
+}
+
+double range_sigma(std::span<const Site> sites, std::span<const fitting::BoundarySample> samples) {
+  std::vector<std::vector<double>> reach(sites.size());
+  for (const auto& s : samples) {
+    if (s.site_b != kNone) continue;
+    const Site& a = sites[s.site_a];
+    reach[s.site_a].push_back(std::hypot(s.p.x - a.x, s.p.y - a.y) / a.weight);
+  }
+  std::vector<double> per_site;
+  for (auto& r : reach) {
+    if (r.empty()) continue;
+    std::nth_element(r.begin(), r.begin() + r.size() / 2, r.end());
+    per_site.push_back(r[r.size() / 2]);
+  }
+  if (per_site.size() < 3) return 0.0;
+  std::nth_element(per_site.begin(), per_site.begin() + per_site.size() / 2, per_site.end());
+  const double centre = per_site[per_site.size() / 2];
+  for (double& r : per_site) r -= centre;
+  return robust_noise(per_site) / std::sqrt(static_cast<double>(per_site.size()));
 }
 
 }  // namespace covmap::fitting

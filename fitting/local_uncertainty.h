@@ -33,4 +33,10 @@ std::vector<LocalUncertainty> local_uncertainty(std::span<const Site> sites,
                                                 std::span<const fitting::BoundarySample> samples,
                                                 double loss_scale, std::optional<double> range = std::nullopt);
 
+// The 1-σ of the reach R of refine_sites (RefineResult::range) from its spread between sites: each
+// site with a range edge implies its own R_i (the median of |p − a| / w_a over its range samples);
+// σ = 1.4826 · MAD(R_i) / √n. Unlike a σ with the sites held, it carries the weights' errors and
+// the staircase's correlated noise along each edge. 0 with fewer than three such sites.
+double range_sigma(std::span<const Site> sites, std::span<const fitting::BoundarySample> samples);
+
 }  // namespace covmap::fitting

@@ -108,6 +108,13 @@ TEST(RangeEdges, NoisySamplesStayWithinTheirUncertainty) {
   }
   // The isolated disc is determined by its range edge alone.
   EXPECT_LT(local[2].sigma_x, 0.01);
+  // R's spread between the three sites: their range arcs carry independent noise 0.02 over 60–100
+  // samples each, so each implies R to ~0.02 / w / √60 ≈ 3e-3..5e-3, and the spread of three is of
+  // that order; the truth lies within a few of it.
+  const double spread = range_sigma(got.sites, scene.samples);
+  EXPECT_GT(spread, 1e-4);
+  EXPECT_LT(spread, 3e-2);
+  EXPECT_LT(std::abs(*got.range - scene.range), 5.0 * spread);
 }
 
 TEST(RangeEdges, WithoutRangeTheIsolatedSensorIsUnobserved) {
