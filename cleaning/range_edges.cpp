@@ -68,9 +68,11 @@ bool is_reach_of(const FittedCurve& fit, const std::vector<const BoundaryRing*>&
 }
 
 // The sensor's own ring vertices along `circle` (within kRangeEdgeBand snaps, off the box): runs of
-// consecutive staircase corners. The frame chains' points are simplified (Douglas–Peucker keeps a
-// convex outline's outer corners), which would put a range edge ~0.4 bins outside its circle; the
-// raw staircase alternates outer and inner corners about it.
+// consecutive staircase corners whose edges run along it too (an edge's middle within the band: a
+// long straight edge between two points of the circle is a chord, e.g. another boundary). The
+// frame chains' points are simplified (Douglas–Peucker keeps a convex outline's outer corners),
+// which would put a range edge ~0.4 bins outside its circle; the raw staircase alternates outer and
+// inner corners about it.
 std::vector<std::vector<Point>> raw_pieces(const std::vector<const BoundaryRing*>& rings, const Circle& circle,
                                            const Bounds& box, double snap) {
   std::vector<std::vector<Point>> out;
@@ -80,25 +82,32 @@ std::vector<std::vector<Point>> raw_pieces(const std::vector<const BoundaryRing*
     auto on_edge = [&](const Point& p) {
       return std::abs(std::hypot(p.x - circle.cx, p.y - circle.cy) - circle.r) <= band && !box.near_side(p, reach);
     };
-    // Start the walk after a vertex off the edge, so that no run is split at the ring's seam.
+    // Vertex k continues the run of k − 1 when it and the middle of their edge lie along the circle.
+    const std::size_t n = q.size();
+    auto continues = [&](std::size_t k) {
+      const Point& a = q[(k + n - 1) % n];
+      const Point& b = q[k];
+      return on_edge(a) && on_edge(b) && on_edge({0.5 * (a.x + b.x), 0.5 * (a.y + b.y)});
+    };
+    // Start the walk at a break, so that no run is split at the ring's seam.
     std::size_t start = 0;
-    while (start < q.size() && on_edge(q[start])) ++start;
-    if (start == q.size()) {  // the whole ring is the edge: an isolated disc
+    while (start < n && continues(start)) ++start;
+    if (start == n) {  // the whole ring is the edge: an isolated disc
       std::vector<Point> loop(q.begin(), q.end());
       loop.push_back(q.front());
       out.push_back(std::move(loop));
       continue;
     }
     std::vector<Point> run;
-    for (std::size_t k = 1; k <= q.size(); ++k) {
-      const Point& p = q[(start + k) % q.size()];
-      if (on_edge(p)) {
-        run.push_back(p);
-        continue;
+    for (std::size_t step = 0; step < n; ++step) {
+      const std::size_t k = (start + step) % n;
+      if (!continues(k)) {
+        if (run.size() >= tolerance::kMinFitPoints) out.push_back(std::move(run));
+        run.clear();
       }
-      if (run.size() >= tolerance::kMinFitPoints) out.push_back(std::move(run));
-      run.clear();
+      if (on_edge(q[k])) run.push_back(q[k]);
     }
+    if (run.size() >= tolerance::kMinFitPoints) out.push_back(std::move(run));
   }
   return out;
 }

@@ -38,8 +38,10 @@ struct AuditRun {
 };
 
 // Generates a map, writes it and reads it back like `covmap audit` does (r.result left empty).
-inline AuditRun generate_and_read(const mapgen::CoverageMapOptions& options, const std::vector<Site>& sites,
-                                  double alpha, std::vector<ReportedSensor>& reported) {
+// Sites: std::vector<Site> (planar) or std::vector<mapgen::LonLatSite>.
+template <class Sites>
+AuditRun generate_and_read(const mapgen::CoverageMapOptions& options, const Sites& sites, double alpha,
+                           std::vector<ReportedSensor>& reported) {
   AuditRun r;
   r.generated = mapgen::generate_coverage_map(sites, options);
   TempDir dir;
@@ -56,7 +58,8 @@ inline AuditRun generate_and_read(const mapgen::CoverageMapOptions& options, con
 }
 
 // ... and audits it.
-inline AuditRun run(const mapgen::CoverageMapOptions& options, const std::vector<Site>& sites, double alpha) {
+template <class Sites>
+AuditRun run(const mapgen::CoverageMapOptions& options, const Sites& sites, double alpha) {
   std::vector<ReportedSensor> reported;
   AuditRun r = generate_and_read(options, sites, alpha, reported);
   audit::AuditOptions ao;

@@ -12,6 +12,7 @@
 #include <variant>
 
 #include "cleaning/map_cleaning.h"
+#include "tools/mapgen/lonlat_sites_csv.h"
 #include "generated_map_audit.h"
 
 namespace covmap {
@@ -102,6 +103,28 @@ TEST(ReceptionLimit, AuditEstimatesTheReachAndJudgesIsolatedSensors) {
         << r.generated.truth[k].id << ": " << audited.at(r.generated.truth[k].id)->reason;
   }
   RecordProperty("isolated_with_gross_errors", gross_isolated);
+}
+
+TEST(ReceptionLimit, TownsWithAReachFollowTheModel) {
+  // Real town layout (58 towns of the canton of Bern, population weights) with a reach that leaves
+  // discs, cut cells and chords: the model drew it, so nothing is a model misfit. Regression: a
+  // range edge once took a chord of its circle (a long straight edge between two of its points)
+  // for part of the edge, and two sensors came out model_misfit with ratios 9 and 13.
+  const auto towns = mapgen::read_lonlat_sites_csv(std::string(COVMAP_SOURCE_DIR) + "/datasets/maps/bern_towns.csv");
+  mapgen::CoverageMapOptions o = base_options(7);
+  o.frame = mapgen::OutputFrame::kLonLat;
+  o.coordinate_digits.reset();
+  o.bin_size_m = 100.0;
+  o.vertex_jitter_m = 2.0;
+  o.max_range_m = 12000.0;
+  o.errors.gross_fraction = 0.2;
+  const AuditRun r = run(o, towns.sites, 3.5);
+  ASSERT_TRUE(r.result.model_fit.known);
+  EXPECT_FALSE(r.result.model_fit.misfit);
+  EXPECT_LT(r.result.model_fit.ratio, 2.0);
+  for (const auto& s : r.result.sensors) EXPECT_NE(s.verdict, audit::SensorVerdict::kModelMisfit) << s.id << ": " << s.reason;
+  ASSERT_TRUE(r.result.reception.has_value());
+  EXPECT_NEAR(r.result.reception->range_m, 12000.0, 100.0);
 }
 
 }  // namespace
