@@ -9,25 +9,8 @@
 namespace covmap::audit::stages {
 namespace {
 
-struct BinWindow {
-  int i0 = 0, j0 = 0, i1 = -1, j1 = -1;  // inclusive
-  void add(int i, int j) {
-    if (i1 < i0) {
-      i0 = i1 = i, j0 = j1 = j;
-      return;
-    }
-    i0 = std::min(i0, i), i1 = std::max(i1, i), j0 = std::min(j0, j), j1 = std::max(j1, j);
-  }
-  bool empty() const { return i1 < i0; }
-};
-
-// The bins of `sensor` in the map, as a window grown by `margin` bins on each side (clamped).
-BinWindow cell_window(const MapRaster& raster, int sensor, int margin) {
-  const auto& g = raster.grid;
-  BinWindow w;
-  for (int j = 0; j < g.ny; ++j)
-    for (int i = 0; i < g.nx; ++i)
-      if (raster.raster.labels[g.index(i, j)] == sensor) w.add(i, j);
+// The window grown by `margin` bins, or by the cell's own extent if larger, clamped to the raster.
+BinWindow grown(const voronoi::RasterGrid& g, BinWindow w, int margin) {
   if (w.empty()) return w;
   const int grow = std::max(margin, std::max(w.i1 - w.i0, w.j1 - w.j0));
   w.i0 = std::max(0, w.i0 - grow), w.j0 = std::max(0, w.j0 - grow);
@@ -37,18 +20,43 @@ BinWindow cell_window(const MapRaster& raster, int sensor, int margin) {
 
 }  // namespace
 
-PredictedCell predicted_cell(const MapRaster& raster, const std::vector<Site>& sites, int sensor,
-                             std::optional<double> reach) {
+void BinWindow::add(int i, int j) {
+  if (empty()) {
+    i0 = i1 = i, j0 = j1 = j;
+    return;
+  }
+  i0 = std::min(i0, i), i1 = std::max(i1, i), j0 = std::min(j0, j), j1 = std::max(j1, j);
+}
+
+std::vector<BinWindow> cell_windows(const MapRaster& raster, std::size_t sensors) {
+  const auto& g = raster.grid;
+  std::vector<BinWindow> out(sensors);
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i) {
+      const int label = raster.raster.labels[g.index(i, j)];
+      if (label >= 0 && static_cast<std::size_t>(label) < sensors) out[static_cast<std::size_t>(label)].add(i, j);
+    }
+  return out;
+}
+
+PredictedCell predicted_cell(const MapRaster& raster, const BinWindow& cell, const std::vector<Site>& sites, int sensor,
+                             std::optional<double> reach, double search_radius) {
   const auto& g = raster.grid;
   // Where to look: the mapped cell and the sensor's own position, with a margin as wide as the cell
   // (a cell moved by its own size still lies inside); the whole map for a sensor without a cell.
-  BinWindow w = cell_window(raster, sensor, 2);
+  BinWindow w = grown(g, cell, 2);
   const Site& s = sites[static_cast<std::size_t>(sensor)];
-  if (w.empty()) {
+  const double fi = std::floor((s.x - g.x0) / g.bin), fj = std::floor((s.y - g.y0) / g.bin);
+  const bool inside = fi >= 0 && fj >= 0 && fi < g.nx && fj < g.ny;
+  if (w.empty() && inside) {
+    // A sensor without a cell that would serve bins serves those around its own position (it
+    // always lies in its own cell): look within search_radius of it.
+    w.add(static_cast<int>(fi), static_cast<int>(fj));
+    w = grown(g, w, static_cast<int>(std::ceil(search_radius / g.bin)));
+  } else if (w.empty()) {
     w = {0, 0, g.nx - 1, g.ny - 1};
-  } else {
-    const int si = static_cast<int>(std::floor((s.x - g.x0) / g.bin)), sj = static_cast<int>(std::floor((s.y - g.y0) / g.bin));
-    if (si >= 0 && sj >= 0 && si < g.nx && sj < g.ny) w.add(si, sj);
+  } else if (inside) {
+    w.add(static_cast<int>(fi), static_cast<int>(fj));
   }
   const voronoi::RasterGrid sub{g.corner_x(w.i0), g.corner_y(w.j0), g.bin, w.i1 - w.i0 + 1, w.j1 - w.j0 + 1};
   const voronoi::BestServerRaster labels = voronoi::best_server_raster(sites, sub, reach);
@@ -69,14 +77,14 @@ PredictedCell predicted_cell(const MapRaster& raster, const std::vector<Site>& s
   return out;
 }
 
-CellDistance distance_to_cell(const MapRaster& raster, int sensor, Point p) {
+CellDistance distance_to_cell(const MapRaster& raster, const BinWindow& cell, int sensor, Point p) {
   const auto& g = raster.grid;
   CellDistance out;
   out.host = raster.label_at(p.x, p.y);
   if (out.host == sensor) return out;
   double best = std::numeric_limits<double>::infinity();
-  for (int j = 0; j < g.ny; ++j)
-    for (int i = 0; i < g.nx; ++i) {
+  for (int j = cell.j0; j <= cell.j1; ++j)
+    for (int i = cell.i0; i <= cell.i1; ++i) {
       if (raster.raster.labels[g.index(i, j)] != sensor) continue;
       // Distance to the bin's square.
       const double dx = std::max({g.corner_x(i) - p.x, 0.0, p.x - g.corner_x(i + 1)});

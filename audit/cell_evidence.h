@@ -19,6 +19,15 @@
 
 namespace covmap::audit::stages {
 
+// The bins of each map sensor's cell in the comparison raster, as an inclusive window of bin
+// indices (empty when the sensor has no bin): one pass over the raster for every later question.
+struct BinWindow {
+  int i0 = 0, j0 = 0, i1 = -1, j1 = -1;
+  void add(int i, int j);
+  bool empty() const { return i1 < i0; }
+};
+std::vector<BinWindow> cell_windows(const MapRaster& raster, std::size_t sensors);
+
 // Bins are the comparison raster's (MapRaster); counts are of bins inside the map.
 struct PredictedCell {
   std::size_t mapped_bins = 0;     // the sensor's bins in the map
@@ -30,8 +39,10 @@ struct PredictedCell {
 // the map) at its values in `sites`, the others as they are; reach: the reception limit R for
 // weight 1, when the map has one (then uncovered bins inside the map's box count as the map's
 // "nobody", which a predicted cell must not cover either).
-PredictedCell predicted_cell(const MapRaster& raster, const std::vector<Site>& sites, int sensor,
-                             std::optional<double> reach);
+// `cell`: the sensor's window (cell_windows; empty for a sensor without a cell, which is then looked
+// for within `search_radius` of its position, or over the whole map when it lies outside it).
+PredictedCell predicted_cell(const MapRaster& raster, const BinWindow& cell, const std::vector<Site>& sites, int sensor,
+                             std::optional<double> reach, double search_radius = 0.0);
 
 // Distance from p to the nearest bin of `sensor` in the map (0 when p lies in one; +inf when the
 // sensor has no bin), and the sensor whose cell holds p (kNone: uncovered or outside the map).
@@ -39,6 +50,6 @@ struct CellDistance {
   double metres = 0.0;
   int host = kNone;
 };
-CellDistance distance_to_cell(const MapRaster& raster, int sensor, Point p);
+CellDistance distance_to_cell(const MapRaster& raster, const BinWindow& cell, int sensor, Point p);
 
 }  // namespace covmap::audit::stages

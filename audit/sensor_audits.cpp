@@ -21,6 +21,7 @@ struct AuditContext {
   const AuditOptions& options;
   const MapRaster& raster;
   const MapCells& cells;
+  std::vector<BinWindow> windows;  // per map sensor: its cell's bins (cell_evidence.h)
   double chi2_two_dof;  // the 2-dof threshold of the same tail probability as options.inconsistency_chi2
 };
 
@@ -60,14 +61,14 @@ void judge_by_cell(const ReportedSensor& r, std::size_t i, const VerdictInput& v
   s.basis = VerdictBasis::kCell;
   const double sigma_p = std::hypot(vi.reported_position_sigma, vi.position_floor);
   const double allowed_distance = std::sqrt(c.chi2_two_dof) * sigma_p;
-  const CellDistance where = distance_to_cell(c.raster, static_cast<int>(i), r.position);
+  const CellDistance where = distance_to_cell(c.raster, c.windows[i], static_cast<int>(i), r.position);
   if (where.host != kNone && where.host != static_cast<int>(i) && where.metres > allowed_distance) {
     s.verdict = SensorVerdict::kInconsistent;
     s.reason = "its reported position lies in the cell of " + c.cleaned.sensors[where.host] + ", " + metres(where.metres) +
                " from its own cell (a sensor always lies in its own cell; allowed " + metres(allowed_distance) + ")";
     return;
   }
-  const PredictedCell refined = predicted_cell(c.raster, c.refined.sites, static_cast<int>(i), c.refined.range);
+  const PredictedCell refined = predicted_cell(c.raster, c.windows[i], c.refined.sites, static_cast<int>(i), c.refined.range);
   if (refined.iou < tolerance::kCellModelOverlap) {
     s.basis = VerdictBasis::kNone;
     s.verdict = SensorVerdict::kUndetermined;
@@ -87,11 +88,12 @@ void judge_by_cell(const ReportedSensor& r, std::size_t i, const VerdictInput& v
     limit2 = c.options.inconsistency_chi2;
   }
   const std::vector<Site> as_reported = with_reported(c.refined.sites, i, r, c.scale, c.options);
-  const PredictedCell reported = predicted_cell(c.raster, as_reported, static_cast<int>(i), c.refined.range);
+  const PredictedCell reported = predicted_cell(c.raster, c.windows[i], as_reported, static_cast<int>(i), c.refined.range);
   const double t = m2 > limit2 ? 1.0 - std::sqrt(limit2 / m2) : 1.0;
   const PredictedCell nearest =
       t >= 1.0 ? refined
-               : predicted_cell(c.raster, toward_refined(as_reported, i, c.refined.sites[i], t), static_cast<int>(i), c.refined.range);
+               : predicted_cell(c.raster, c.windows[i], toward_refined(as_reported, i, c.refined.sites[i], t), static_cast<int>(i),
+                                c.refined.range);
   const std::string overlaps = "overlaps the mapped cell by " + percent(reported.iou) + " as reported, by " +
                                percent(nearest.iou) + " at the nearest values its stated uncertainty allows (the reconstruction's by " +
                                percent(refined.iou) + ")";
@@ -152,7 +154,8 @@ void judge_absent(const ReportedSensor& r, const AuditContext& c, SensorAudit& s
   s.basis = VerdictBasis::kPrediction;
   const std::size_t k = c.refined.sites.size();
   const PredictedCell predicted =
-      predicted_cell(c.raster, with_reported(c.refined.sites, k, r, c.scale, c.options), static_cast<int>(k), c.refined.range);
+      predicted_cell(c.raster, BinWindow{}, with_reported(c.refined.sites, k, r, c.scale, c.options), static_cast<int>(k),
+                     c.refined.range, tolerance::kPredictionSearchSpacings * c.setup.spacing);
   const double bin = c.raster.grid.bin, km2 = static_cast<double>(predicted.predicted_bins) * bin * bin / 1e6;
   if (predicted.predicted_bins >= tolerance::kMinPredictedBins) {
     s.verdict = SensorVerdict::kInconsistent;
@@ -191,7 +194,9 @@ std::vector<SensorAudit> sensor_audits(const cleaning::CleanedMap& cleaned, cons
                                        const ReportedOf& reported_of, std::span<const ReportedSensor> reported,
                                        const WeightScale& scale, const AuditOptions& options, const MapRaster& raster) {
   std::vector<SensorAudit> sensors;
-  const AuditContext context{cleaned, refined, setup, scale, options, raster, cells, chi2_quantile_two_dof(options.inconsistency_chi2)};
+  const AuditContext context{cleaned, refined, setup,          scale,
+                             options, raster,  cells,          cell_windows(raster, setup.n),
+                             chi2_quantile_two_dof(options.inconsistency_chi2)};
   const std::size_t n = setup.n;
   const std::vector<fitting::LocalUncertainty> local =
       fitting::local_uncertainty(refined.sites, setup.samples, setup.options.loss_scale, refined.range);

@@ -89,6 +89,9 @@ inline constexpr double kResolvedCellBins = 64.0;
 // A sensor absent from the map contradicts it when its reported values would give it at least this
 // many bins (a cell of a bin or two can vanish in a raster by where its bin centres fall).
 inline constexpr std::size_t kMinPredictedBins = 4;
+// ... and its predicted cell is looked for within this many mean sensor spacings of its reported
+// position: a cell reaching farther still covers bins within it, which is all the test needs.
+inline constexpr double kPredictionSearchSpacings = 4.0;
 
 // Model fit (audit/model_fit.h). The map's own noise is at least this many bins (rms), however
 // well a free curve happens to fit a boundary: a boundary drawn exactly (no staircase) would
