@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "tools/mapgen/coverage_map_files.h"
+#include "make_map_run.h"
 #include "mapgen_test_util.h"
 
 namespace covmap::mapgen {
@@ -15,28 +16,7 @@ using nlohmann::json;
 using testing::read_text;
 using testing::TempDir;
 
-// Parses the arguments as the program does and runs the command; stderr goes to *error.
-int run(std::vector<std::string> args, std::string* error = nullptr) {
-  CLI::App app;
-  MakeMapOptions options;
-  setup_make_map(app, options);
-  args.insert(args.begin(), "covmap-make-map");
-  std::vector<const char*> argv;
-  for (const auto& a : args) argv.push_back(a.c_str());
-  try {
-    app.parse(static_cast<int>(argv.size()), argv.data());
-  } catch (const CLI::ParseError& e) {
-    if (error) *error = e.what();
-    return -1;
-  }
-  ::testing::internal::CaptureStderr();
-  ::testing::internal::CaptureStdout();
-  const int status = run_make_map(options);
-  const std::string err = ::testing::internal::GetCapturedStderr();
-  (void)::testing::internal::GetCapturedStdout();
-  if (error) *error = err;
-  return status;
-}
+int run(std::vector<std::string> args, std::string* error = nullptr) { return testing::run_make_map_args(std::move(args), error); }
 
 TEST(MakeMapCommand, SwissTownsInKilometresToLonLat) {
   TempDir dir;
