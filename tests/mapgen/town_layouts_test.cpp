@@ -149,6 +149,39 @@ TEST(TownLayouts, RejectsImpossibleWindows) {
   EXPECT_THROW(clustered_town_sites(list, o), std::invalid_argument);
 }
 
+// Pruning on a clustered layout (cells from a few hundred metres to kilometres wide, one bin size):
+// every model's labels equal the brute-force argmax of received power at sampled bins, with and
+// without a reception limit.
+TEST(TownLayouts, ClusteredWindowsAreLabelledAsBruteForceUnderEveryModel) {
+  TownLayoutOptions t;
+  t.count = 80;
+  t.seed = 3;
+  const TownWindow window = clustered_town_sites(towns("netherlands.csv"), t);
+  for (const PropagationModel model : kAllPropagationModels) {
+    if (model == PropagationModel::kMultiplicative) continue;  // voronoi's raster, tested there
+    for (const std::optional<double> range : {std::optional<double>{}, std::optional<double>{5000.0}}) {
+      CoverageMapOptions o;
+      o.propagation.model = model;
+      o.max_range_m = range;
+      o.seed = 4;
+      const CoverageMap map = generate_coverage_map(std::span<const LonLatSite>(window.sites), o);
+      const RasterGrid& g = map.raster.grid;
+      for (std::size_t b = 0; b < g.bins(); b += 53) {
+        const Point p{g.center_x(static_cast<int>(b % static_cast<std::size_t>(g.nx))),
+                      g.center_y(static_cast<int>(b / static_cast<std::size_t>(g.nx)))};
+        int best = kNone;
+        double best_power = -INFINITY;
+        for (std::size_t k = 0; k < map.truth.size(); ++k) {
+          const double power = received_power_dbm(map.propagation, k, p);
+          if (power > best_power) best_power = power, best = static_cast<int>(k);
+        }
+        if (range && best_power < *map.sensitivity_dbm) best = kNone;
+        ASSERT_EQ(map.raster.labels[b], best) << to_string(model) << " bin " << b;
+      }
+    }
+  }
+}
+
 // The command end to end, for each model, in lon/lat with a reception limit: the true positions are
 // the towns projected about the map's centre, truth.json records layout and model, and the map
 // reads back as a valid lon/lat coverage map with one cell per polygon.

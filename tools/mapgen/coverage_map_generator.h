@@ -18,7 +18,8 @@
 //     rings of one sensor moves as one), projected to lon/lat when asked, and rounded to
 //     coordinate_digits decimals.
 //  4. Reported sensors: the true ones with the errors of reported_sensors.h, rounded the same way
-//     (powers to power_digits); their weights follow from the reported powers.
+//     (powers to power_digits); their weights follow from the reported powers. The propagation
+//     model changes only the raster: reports are as correct under every model.
 // Same input, options and seed → identical result and identical files, on every platform.
 //
 // Accepted: at least one sensor (two without an explicit extent or bin size, which are derived
