@@ -93,5 +93,24 @@ TEST(MakeMapCommand, BadInputNamesTheProblemAndWritesNothing) {
   EXPECT_EQ(run({"--sites", good.string(), "--unit", "m", "--bin", "1", "-o", (dir.path() / "file").string()}, &error), 3);
 }
 
+TEST(MakeMapCommand, RefusesBadModelsAndTownWindows) {
+  TempDir dir;
+  const std::string out = (dir.path() / "out").string();
+  const std::string iowa = std::string(COVMAP_SOURCE_DIR) + "/datasets/towns/iowa.csv";
+  std::string error;
+  EXPECT_EQ(run({"--random", "20", "--model", "Shadowing", "-o", out}, &error), -1);
+  EXPECT_EQ(run({"--random", "20", "--model", "exponents", "--alpha-spread", "2", "-o", out}, &error), 2);
+  EXPECT_NE(error.find("alpha spread"), std::string::npos) << error;
+  EXPECT_EQ(run({"--towns", iowa, "--count", "100000", "-o", out}, &error), 2);
+  EXPECT_NE(error.find("larger than the list"), std::string::npos) << error;
+  EXPECT_EQ(run({"--towns", iowa, "--town-weights", "random", "-o", out}, &error), -1);
+  EXPECT_FALSE(std::filesystem::exists(out));
+  EXPECT_EQ(run({"--towns", iowa, "--count", "30", "--town-weights", "power-classes", "--planar", "-o", out}, &error), 0)
+      << error;
+  const json truth = json::parse(read_text(std::filesystem::path(out) / kTruthFileName));
+  EXPECT_EQ(truth["generator"]["frame"], "planar");
+  EXPECT_EQ(truth["layout"]["power_classes_dbm"], json::array({43.0, 37.0, 31.0}));
+}
+
 }  // namespace
 }  // namespace covmap::mapgen

@@ -98,7 +98,9 @@ CoverageMap make(const MakeMapOptions& o) {
     m.centre = io::LonLat{o.lonlat_centre[0], o.lonlat_centre[1]};
     m.frame = OutputFrame::kLonLat;
   }
-  m.propagation.model = *propagation_model_from_string(o.model);  // CLI11 checked the name
+  const auto model = propagation_model_from_string(o.model);
+  if (!model) throw std::invalid_argument("unknown propagation model '" + o.model + "'");
+  m.propagation.model = *model;
   if (!o.lonlat_sites_path.empty()) {
     m.frame = o.planar ? OutputFrame::kPlanar : OutputFrame::kLonLat;
     const LonLatSiteTable table = read_lonlat_sites_csv(o.lonlat_sites_path);
@@ -109,7 +111,9 @@ CoverageMap make(const MakeMapOptions& o) {
     const LonLatSiteTable table = read_lonlat_sites_csv(o.towns_path);
     TownLayoutOptions t;
     t.count = o.town_count;
-    t.weights = *town_weights_from_string(o.town_weights);
+    const auto weights = town_weights_from_string(o.town_weights);
+    if (!weights) throw std::invalid_argument("unknown town weights '" + o.town_weights + "'");
+    t.weights = *weights;
     t.power_classes_dbm = o.power_classes_dbm;
     t.alpha = m.alpha;
     t.seed = m.seed;
@@ -146,6 +150,8 @@ std::string summary(const CoverageMap& map, const std::string& dir, double secon
       << c.sensors_without_bins << " serving no bin), " << map.raster.grid.nx << " x " << map.raster.grid.ny
       << " bins of " << map.raster.grid.bin << " m (" << c.covered_bins << " covered), " << c.cells << " cells, "
       << c.holes << " holes, " << c.vertices << " vertices, ";
+  if (map.propagation.model != PropagationModel::kMultiplicative)
+    out << to_string(map.propagation.model) << " model, ";
   if (map.options.frame == OutputFrame::kLonLat) out << "lon/lat (" << map.projection->description() << ")";
   else out << "plane metres";
   out << " -> " << dir << " in " << seconds << " s (raster " << map.timings.raster_seconds << " s, polygons "
