@@ -68,7 +68,9 @@ struct Rectangle {
 struct CoverageMapOptions {
   // --- raster ---
   // Side of a square bin, metres. Unset: 1/20 of the mean nearest-neighbour spacing of the sensors,
-  // rounded down to 1, 2 or 5 × 10^k (a planner's choice: a cell is then ~20 bins across).
+  // rounded down to 1, 2 or 5 × 10^k (a planner's choice: a cell is then ~20 bins across). In a
+  // clustered layout the densest sensors can then be fewer than 10 bins from their nearest
+  // neighbour (datasets/towns/README.md says how to choose the bin by local spacing).
   std::optional<double> bin_size_m;
   // The area rasterized, plane metres; its edges are moved outwards to multiples of the bin size
   // (as tools align bins to a grid). Unset: the sensors' bounding box grown on each side by
