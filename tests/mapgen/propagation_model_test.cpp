@@ -111,6 +111,30 @@ TEST(ReceivedPowerRaster, EqualsBruteForceArgmaxForEveryModel) {
   }
 }
 
+// Long thin rasters (one bin wide, two bins high, ...) split only along their long side and still
+// cover every bin exactly once with the brute-force owner.
+TEST(ReceivedPowerRaster, ThinRastersEqualBruteForce) {
+  const CoverageMap map = make_map(PropagationModel::kShadowing, 2500.0);
+  for (const auto& [nx, ny] : {std::pair{1, 300}, std::pair{300, 1}, std::pair{2, 157}, std::pair{133, 3}, std::pair{1, 1}}) {
+    RasterGrid g = map.raster.grid;
+    g.nx = nx, g.ny = ny;
+    const auto raster = received_power_raster(map.propagation, g, map.sensitivity_dbm);
+    ASSERT_EQ(raster.labels.size(), g.bins());
+    for (int j = 0; j < ny; ++j) {
+      for (int i = 0; i < nx; ++i) {
+        int best = kNone;
+        double best_power = -std::numeric_limits<double>::infinity();
+        for (std::size_t k = 0; k < map.truth.size(); ++k) {
+          const double power = received_power_dbm(map.propagation, k, {g.center_x(i), g.center_y(j)});
+          if (power > best_power) best_power = power, best = static_cast<int>(k);
+        }
+        if (best_power < *map.sensitivity_dbm) best = kNone;
+        ASSERT_EQ(raster.labels[g.index(i, j)], best) << nx << " x " << ny << " bin (" << i << ", " << j << ")";
+      }
+    }
+  }
+}
+
 // Labels against powers recomputed from truth.json's recorded per-sensor parameters by the
 // documented formulas, at sampled bins; bins whose two best powers are within 1e-9 dB (where two
 // implementations may round differently) are skipped.

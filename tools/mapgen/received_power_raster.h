@@ -5,7 +5,7 @@
 //
 // Contract: the labels equal brute force over all sensors, bit for bit (the same
 // received_power_dbm is evaluated for every sensor that is not provably beaten). Cost: the raster is
-// split recursively into blocks; in each block every remaining sensor gets bounds on its received
+// split recursively into quarters; in each block every remaining sensor gets bounds on its received
 // power over the block's bin centres —
 //   path loss: P_i − 10·α_i·log10 d − γ_i·d decreases with d (α_i, γ_i ≥ 0), so it lies between its
 //              values at the block's farthest and nearest distance from the sensor;
@@ -16,7 +16,7 @@
 // tolerance::kPruneSlackDb are dropped: they cannot own a bin of the block. Bins are evaluated one
 // by one only over the survivors of small blocks; a block with one survivor and no sensitivity is
 // filled at once. About O(bins · c + n log bins), c the survivors per small block (a few): 10^6
-// bins and 10^4 sensors take 0.3 s for the path-loss models and ~11 s with shadowing (16 sines
+// bins and 10^4 sensors take 0.2–0.3 s for the path-loss models and ~6 s with shadowing (16 sines
 // and cosines per bound and per evaluation), against hours by brute force.
 // Throws std::invalid_argument for an empty grid or a non-positive bin.
 #pragma once
