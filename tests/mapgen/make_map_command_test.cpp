@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "tools/mapgen/coverage_map_files.h"
+#include "make_map_run.h"
 #include "mapgen_test_util.h"
 
 namespace covmap::mapgen {
@@ -15,28 +16,7 @@ using nlohmann::json;
 using testing::read_text;
 using testing::TempDir;
 
-// Parses the arguments as the program does and runs the command; stderr goes to *error.
-int run(std::vector<std::string> args, std::string* error = nullptr) {
-  CLI::App app;
-  MakeMapOptions options;
-  setup_make_map(app, options);
-  args.insert(args.begin(), "covmap-make-map");
-  std::vector<const char*> argv;
-  for (const auto& a : args) argv.push_back(a.c_str());
-  try {
-    app.parse(static_cast<int>(argv.size()), argv.data());
-  } catch (const CLI::ParseError& e) {
-    if (error) *error = e.what();
-    return -1;
-  }
-  ::testing::internal::CaptureStderr();
-  ::testing::internal::CaptureStdout();
-  const int status = run_make_map(options);
-  const std::string err = ::testing::internal::GetCapturedStderr();
-  (void)::testing::internal::GetCapturedStdout();
-  if (error) *error = err;
-  return status;
-}
+int run(std::vector<std::string> args, std::string* error = nullptr) { return testing::run_make_map_args(std::move(args), error); }
 
 TEST(MakeMapCommand, SwissTownsInKilometresToLonLat) {
   TempDir dir;
@@ -111,6 +91,25 @@ TEST(MakeMapCommand, BadInputNamesTheProblemAndWritesNothing) {
 
   std::ofstream(dir.path() / "file") << "x";
   EXPECT_EQ(run({"--sites", good.string(), "--unit", "m", "--bin", "1", "-o", (dir.path() / "file").string()}, &error), 3);
+}
+
+TEST(MakeMapCommand, RefusesBadModelsAndTownWindows) {
+  TempDir dir;
+  const std::string out = (dir.path() / "out").string();
+  const std::string iowa = std::string(COVMAP_SOURCE_DIR) + "/datasets/towns/iowa.csv";
+  std::string error;
+  EXPECT_EQ(run({"--random", "20", "--model", "Shadowing", "-o", out}, &error), -1);
+  EXPECT_EQ(run({"--random", "20", "--model", "exponents", "--alpha-spread", "2", "-o", out}, &error), 2);
+  EXPECT_NE(error.find("alpha spread"), std::string::npos) << error;
+  EXPECT_EQ(run({"--towns", iowa, "--count", "100000", "-o", out}, &error), 2);
+  EXPECT_NE(error.find("larger than the list"), std::string::npos) << error;
+  EXPECT_EQ(run({"--towns", iowa, "--town-weights", "random", "-o", out}, &error), -1);
+  EXPECT_FALSE(std::filesystem::exists(out));
+  EXPECT_EQ(run({"--towns", iowa, "--count", "30", "--town-weights", "power-classes", "--planar", "-o", out}, &error), 0)
+      << error;
+  const json truth = json::parse(read_text(std::filesystem::path(out) / kTruthFileName));
+  EXPECT_EQ(truth["generator"]["frame"], "planar");
+  EXPECT_EQ(truth["layout"]["power_classes_dbm"], json::array({43.0, 37.0, 31.0}));
 }
 
 }  // namespace

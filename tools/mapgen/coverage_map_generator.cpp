@@ -11,6 +11,7 @@
 
 #include "tools/mapgen/random_stream.h"
 #include "tools/mapgen/raster_polygons.h"
+#include "tools/mapgen/received_power_raster.h"
 #include "tools/mapgen/site_layouts.h"
 
 namespace covmap::mapgen {
@@ -116,7 +117,7 @@ class Generator {
     resolve_options();
     make_truth();
     const auto raster_start = Clock::now();
-    out_.raster = best_server_raster(scaled_, make_grid(*opt().extent, *opt().bin_size_m, opt().max_bins), opt().max_range_m);
+    make_raster(make_grid(*opt().extent, *opt().bin_size_m, opt().max_bins));
     out_.timings.raster_seconds = seconds_since(raster_start);
     const auto polygons_start = Clock::now();
     make_features();
@@ -160,6 +161,26 @@ class Generator {
       out_.truth.push_back(t);
       scaled_.push_back(Site{s.id, s.x, s.y, t.weight});
     }
+  }
+
+  // Multiplicative: by distance / weight, exactly as the audit's own raster. Other models: by
+  // received power, with per-sensor parameters drawn from the seed.
+  void make_raster(const RasterGrid& grid) {
+    const CoverageMapOptions& o = opt();
+    if (o.propagation.model == PropagationModel::kMultiplicative) {
+      out_.raster = best_server_raster(scaled_, grid, o.max_range_m);
+      return;
+    }
+    std::vector<Point> positions;
+    std::vector<double> powers;
+    for (const auto& t : out_.truth) {
+      positions.push_back(t.position);
+      powers.push_back(t.tx_power_dbm);
+    }
+    const double spacing = sites_.size() >= 2 ? mean_nearest_neighbour_distance(sites_) : 0.0;
+    out_.propagation = draw_propagation(positions, powers, o.alpha, o.propagation, spacing, o.seed);
+    if (o.max_range_m) out_.sensitivity_dbm = sensitivity_for_range(o.reference_power_dbm, o.alpha, *o.max_range_m);
+    out_.raster = received_power_raster(out_.propagation, grid, out_.sensitivity_dbm);
   }
 
   double power_of(double weight) const { return 10.0 * out_.options.alpha * std::log10(weight) + out_.options.reference_power_dbm; }
@@ -294,6 +315,7 @@ bool CoverageMapOptions::is_valid(std::string* why) const {
   if (!std::isfinite(reference_power_dbm)) return fail(why, "reference power must be finite");
   std::string error_why;
   if (!errors.is_valid(&error_why)) return fail(why, error_why);
+  if (!propagation.is_valid(alpha, &error_why)) return fail(why, error_why);
   return true;
 }
 

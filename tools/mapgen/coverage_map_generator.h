@@ -7,7 +7,10 @@
 //     so the largest is 1, and tx_power_dbm = 10 · alpha · log10(weight) + reference_power_dbm.
 //  2. A best-server raster of square bins (voronoi/best_server_raster.h): each bin centre belongs to the
 //     sensor minimizing distance / weight, ties to the lowest index; with max_range_m, bins whose
-//     smallest distance / weight exceeds it are not covered.
+//     smallest distance / weight exceeds it are not covered. With another propagation model
+//     (options.propagation, propagation_model.h) each bin centre belongs to the sensor of largest
+//     received power instead (received_power_raster.h), and max_range_m becomes the sensitivity
+//     P0 − 10·α·log10(max_range_m): the same limit for the multiplicative model.
 //  3. The cells: each 4-connected component of a sensor's bins becomes a polygon with its holes
 //     (raster_polygons.h), optionally without the vertices inside straight runs, then every vertex
 //     jittered by N(0, vertex_jitter_m²) per coordinate, independently per sensor (neighbouring
@@ -15,7 +18,8 @@
 //     rings of one sensor moves as one), projected to lon/lat when asked, and rounded to
 //     coordinate_digits decimals.
 //  4. Reported sensors: the true ones with the errors of reported_sensors.h, rounded the same way
-//     (powers to power_digits); their weights follow from the reported powers.
+//     (powers to power_digits); their weights follow from the reported powers. The propagation
+//     model changes only the raster: reports are as correct under every model.
 // Same input, options and seed → identical result and identical files, on every platform.
 //
 // Accepted: at least one sensor (two without an explicit extent or bin size, which are derived
@@ -37,7 +41,10 @@
 
 #include "voronoi/best_server_raster.h"
 #include "io/local_projection.h"
+#include "tools/mapgen/lonlat_site.h"
+#include "tools/mapgen/propagation_model.h"
 #include "tools/mapgen/reported_sensors.h"
+#include "tools/mapgen/town_layouts.h"
 #include "core/diagram.h"
 
 namespace covmap::mapgen {
@@ -61,7 +68,9 @@ struct Rectangle {
 struct CoverageMapOptions {
   // --- raster ---
   // Side of a square bin, metres. Unset: 1/20 of the mean nearest-neighbour spacing of the sensors,
-  // rounded down to 1, 2 or 5 × 10^k (a planner's choice: a cell is then ~20 bins across).
+  // rounded down to 1, 2 or 5 × 10^k (a planner's choice: a cell is then ~20 bins across). In a
+  // clustered layout the densest sensors can then be fewer than 10 bins from their nearest
+  // neighbour (datasets/towns/README.md says how to choose the bin by local spacing).
   std::optional<double> bin_size_m;
   // The area rasterized, plane metres; its edges are moved outwards to multiples of the bin size
   // (as tools align bins to a grid). Unset: the sensors' bounding box grown on each side by
@@ -92,21 +101,19 @@ struct CoverageMapOptions {
   double alpha = 3.5;                  // path-loss exponent
   double reference_power_dbm = 43.0;   // power of the strongest (weight 1) sensor: 20 W, a macro cell
 
+  // --- propagation: the default is the multiplicative model (the MWVD) ---
+  PropagationOptions propagation;
+
   // --- reported sensors ---
   ReportErrorOptions errors;
+
+  // Where the sensors came from, written to truth.json ("layout") when set; no effect on the map.
+  std::optional<TownLayoutRecord> town_layout;
 
   std::uint64_t seed = 1;  // all randomness (errors, jitter) derives from it
 
   // False, with the reason in *why (when given), for any out-of-range field.
   bool is_valid(std::string* why) const;
-};
-
-// A true sensor given in lon/lat (degrees) with its weight.
-struct LonLatSite {
-  std::string id;
-  double lon = 0.0;
-  double lat = 0.0;
-  double weight = 1.0;
 };
 
 struct TrueSensor {
@@ -167,6 +174,10 @@ struct CoverageMap {
   std::vector<TrueSensor> truth;            // input order
   std::vector<ReportedSensor> reported;     // same order as truth
   std::vector<MapFeature> features;         // sensors with at least one bin, in sensor order
+  // The propagation model as applied: per-sensor parameters (sensors empty for the multiplicative
+  // model, which is labelled by distance / weight) and the sensitivity used with max_range_m.
+  Propagation propagation;
+  std::optional<double> sensitivity_dbm;
   CoverageMapCounts counts;
   CoverageMapTimings timings;
 };

@@ -55,6 +55,56 @@ OrderedJson gross_json(const SensorError& e) {
   return out;
 }
 
+// The model's settings, added to "generator" for models other than the multiplicative one (whose
+// truth.json keeps its original shape).
+void add_model_settings(const CoverageMap& map, OrderedJson& generator) {
+  const Propagation& p = map.propagation;
+  if (p.model == PropagationModel::kMultiplicative) return;
+  const PropagationOptions& o = map.options.propagation;
+  generator["model"] = std::string(to_string(p.model));
+  switch (p.model) {
+    case PropagationModel::kMultiplicative: break;
+    case PropagationModel::kExponents: generator["alpha_spread"] = o.alpha_spread; break;
+    case PropagationModel::kExcessLoss: generator["excess_loss_max_db_per_km"] = o.excess_loss_max_db_per_km; break;
+    case PropagationModel::kShadowing:
+      generator["shadowing_sigma_db"] = o.shadowing_sigma_db;
+      generator["shadowing_correlation_m"] = p.shadowing_correlation_m;
+      generator["shadowing_amplitude_db"] = p.shadowing_amplitude_db;
+      generator["shadowing_limit_db"] = p.shadowing_limit_db;
+      generator["shadowing_terms"] = kShadowingTerms;
+      break;
+  }
+  generator["sensitivity_dbm"] = optional_number(map.sensitivity_dbm);
+}
+
+// Sensor k's own propagation parameters (models other than the multiplicative one).
+void add_sensor_model(const CoverageMap& map, std::size_t k, OrderedJson& sensor) {
+  const Propagation& p = map.propagation;
+  if (p.model == PropagationModel::kMultiplicative) return;
+  const SensorPropagation& s = p.sensors[k];
+  switch (p.model) {
+    case PropagationModel::kMultiplicative: break;
+    case PropagationModel::kExponents: sensor["alpha"] = s.alpha; break;
+    case PropagationModel::kExcessLoss: sensor["excess_loss_db_per_km"] = s.excess_db_per_m * 1000.0; break;
+    case PropagationModel::kShadowing: {
+      OrderedJson terms = OrderedJson::array();
+      for (const auto& t : s.shadowing) terms.push_back({t.kx, t.ky, t.phase});
+      sensor["shadowing"] = std::move(terms);
+      break;
+    }
+  }
+}
+
+OrderedJson layout_json(const TownLayoutRecord& r) {
+  OrderedJson out = {{"kind", "towns"},
+                     {"towns_file", r.towns_file},
+                     {"towns_in_file", r.towns_in_file},
+                     {"centre_town", r.centre_town},
+                     {"weights", std::string(to_string(r.weights))}};
+  if (r.weights == TownWeights::kPowerClasses) out["power_classes_dbm"] = r.power_classes_dbm;
+  return out;
+}
+
 }  // namespace
 
 OrderedJson map_geojson(const CoverageMap& map) {
@@ -115,6 +165,8 @@ OrderedJson truth_json(const CoverageMap& map) {
                       {"gross_fraction", e.gross_fraction},
                       {"gross_position_range_m", {e.gross_position_min_m, e.gross_position_max_m}},
                       {"gross_power_range_db", {e.gross_power_min_db, e.gross_power_max_db}}};
+  add_model_settings(map, out["generator"]);
+  if (o.town_layout) out["layout"] = layout_json(*o.town_layout);
   out["projection"] = projection_json(map);
   const RasterGrid& g = map.raster.grid;
   out["raster"] = {{"x0", g.x0}, {"y0", g.y0}, {"bin_size_m", g.bin}, {"nx", g.nx}, {"ny", g.ny}};
@@ -138,6 +190,7 @@ OrderedJson truth_json(const CoverageMap& map) {
     s["tx_power_dbm"] = t.tx_power_dbm;
     s["bins"] = t.bins;
     s["cells"] = t.cells;
+    add_sensor_model(map, k, s);
     OrderedJson reported = {{"x", r.position.x}, {"y", r.position.y}};
     if (lonlat(map)) {
       reported["lon"] = r.output.x;

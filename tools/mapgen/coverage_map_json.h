@@ -11,7 +11,10 @@
 //                   stated one-sigma accuracy; gross errors are not flagged, as in real lists).
 //  truth.json       {"format":"covmap.mapgen-truth/1", ...}: generator settings, projection,
 //                   raster, counts, and per sensor the true and the reported values and any gross
-//                   error (docs in datasets/maps/README.md).
+//                   error; for a model other than the multiplicative one also the model, its
+//                   settings and each sensor's parameters, and for a town window its "layout"
+//                   (docs in datasets/maps/README.md). Multiplicative maps of given sensors keep
+//                   exactly the original fields.
 // Numbers are written as the shortest text that reads back to the same double, so rounded
 // coordinates appear with at most coordinate_digits decimals.
 #pragma once

@@ -8,6 +8,7 @@
 #include "tools/mapgen/coverage_map_files.h"
 #include "tools/mapgen/lonlat_sites_csv.h"
 #include "tools/mapgen/site_layouts.h"
+#include "tools/mapgen/town_layouts.h"
 #include "io/input_error.h"
 #include "io/sites_io.h"
 
@@ -23,7 +24,30 @@ void setup_make_map(CLI::App& app, MakeMapOptions& o) {
       ->check(CLI::ExistingFile);
   input->add_option("--random", o.random_count, "N sensors uniform in --area, log-uniform weights")
       ->check(CLI::PositiveNumber);
+  input->add_option("--towns", o.towns_path, "lon/lat town list (id,lon,lat,weight): a window of --count towns")
+      ->check(CLI::ExistingFile);
   input->require_option(1);
+  app.add_option("--count", o.town_count, "towns in the --towns window")->check(CLI::Range(2, 1'000'000))
+      ->capture_default_str();
+  app.add_option("--town-weights", o.town_weights, "weights of --towns: from population or from power classes")
+      ->check(CLI::IsMember({std::string(to_string(TownWeights::kPopulation)),
+                             std::string(to_string(TownWeights::kPowerClasses))}))
+      ->capture_default_str();
+  app.add_option("--power-classes", o.power_classes_dbm,
+                 "tx powers (dBm) of --town-weights power-classes, most isolated towns get the highest")
+      ->delimiter(',')->capture_default_str();
+  std::vector<std::string> models;
+  for (const PropagationModel model : kAllPropagationModels) models.emplace_back(to_string(model));
+  app.add_option("--model", o.model, "propagation model")->check(CLI::IsMember(models))->capture_default_str();
+  PropagationOptions& p = m.propagation;
+  app.add_option("--alpha-spread", p.alpha_spread, "exponents model: std. deviation of each sensor's exponent")
+      ->capture_default_str();
+  app.add_option("--excess-loss-max", p.excess_loss_max_db_per_km,
+                 "excess-loss model: each sensor's extra loss is uniform in [0, this] dB/km")->capture_default_str();
+  app.add_option("--shadowing-sigma", p.shadowing_sigma_db, "shadowing model: std. deviation of each field, dB")
+      ->capture_default_str();
+  app.add_option("--shadowing-correlation", p.shadowing_correlation_m,
+                 "shadowing model: correlation length, metres (default: mean sensor spacing)");
   app.add_option("--unit", o.unit, "unit of --sites coordinates")->check(CLI::IsMember({"km", "m"}))->capture_default_str();
   app.add_option("--area", o.random_area_km, "W,H of the --random area, km")->delimiter(',')->expected(2)
       ->capture_default_str();
@@ -74,10 +98,29 @@ CoverageMap make(const MakeMapOptions& o) {
     m.centre = io::LonLat{o.lonlat_centre[0], o.lonlat_centre[1]};
     m.frame = OutputFrame::kLonLat;
   }
+  const auto model = propagation_model_from_string(o.model);
+  if (!model) throw std::invalid_argument("unknown propagation model '" + o.model + "'");
+  m.propagation.model = *model;
   if (!o.lonlat_sites_path.empty()) {
     m.frame = o.planar ? OutputFrame::kPlanar : OutputFrame::kLonLat;
     const LonLatSiteTable table = read_lonlat_sites_csv(o.lonlat_sites_path);
     return generate_coverage_map(std::span<const LonLatSite>(table.sites), m);
+  }
+  if (!o.towns_path.empty()) {
+    m.frame = o.planar ? OutputFrame::kPlanar : OutputFrame::kLonLat;
+    const LonLatSiteTable table = read_lonlat_sites_csv(o.towns_path);
+    TownLayoutOptions t;
+    t.count = o.town_count;
+    const auto weights = town_weights_from_string(o.town_weights);
+    if (!weights) throw std::invalid_argument("unknown town weights '" + o.town_weights + "'");
+    t.weights = *weights;
+    t.power_classes_dbm = o.power_classes_dbm;
+    t.alpha = m.alpha;
+    t.seed = m.seed;
+    const TownWindow window = clustered_town_sites(table.sites, t);
+    m.town_layout = TownLayoutRecord{o.towns_path, table.sites.size(), table.sites[window.centre].id, t.weights,
+                                     t.weights == TownWeights::kPowerClasses ? t.power_classes_dbm : std::vector<double>{}};
+    return generate_coverage_map(std::span<const LonLatSite>(window.sites), m);
   }
   if (o.planar) m.frame = OutputFrame::kPlanar;
   std::vector<Site> sites;
@@ -107,6 +150,8 @@ std::string summary(const CoverageMap& map, const std::string& dir, double secon
       << c.sensors_without_bins << " serving no bin), " << map.raster.grid.nx << " x " << map.raster.grid.ny
       << " bins of " << map.raster.grid.bin << " m (" << c.covered_bins << " covered), " << c.cells << " cells, "
       << c.holes << " holes, " << c.vertices << " vertices, ";
+  if (map.propagation.model != PropagationModel::kMultiplicative)
+    out << to_string(map.propagation.model) << " model, ";
   if (map.options.frame == OutputFrame::kLonLat) out << "lon/lat (" << map.projection->description() << ")";
   else out << "plane metres";
   out << " -> " << dir << " in " << seconds << " s (raster " << map.timings.raster_seconds << " s, polygons "

@@ -3,11 +3,16 @@
 //   covmap-make-map --sites datasets/swiss_towns.csv --bin 500 --lonlat 8.0084,47.1044 --jitter 2
 //                   --gross-fraction 0.1 --seed 1 -o outdir/
 //
+//   covmap-make-map --towns datasets/towns/nordrhein_westfalen.csv --count 150 --model shadowing
+//                   --max-range 8000 --seed 3 -o outdir/
+//
 // Input, exactly one of: --sites FILE (covmap sites CSV/JSON, coordinates in --unit km|m, default
 // km as in datasets/swiss_towns.csv), --lonlat-sites FILE (CSV id,lon,lat,weight, e.g. from
 // cities_sites.js --lonlat), --random N (uniform in --area W,H km, log-uniform weights within
-// --weight-ratio). Output in lon/lat about --lonlat LON,LAT (lon/lat input: by default, about the
-// centre of its bounding box; --planar keeps metres). The files are written atomically (temporary
+// --weight-ratio), --towns FILE (a window of --count real towns from a lon/lat town list, chosen by
+// --seed, weights from population or --town-weights power-classes; town_layouts.h). Output in
+// lon/lat about --lonlat LON,LAT (lon/lat input: by default, about the centre of its bounding box;
+// --planar keeps metres). --model picks the propagation model (propagation_model.h). The files are written atomically (temporary
 // directory, then renames); a one-line summary goes to stdout.
 // Exit status: 0 done; 2 bad input or options (the message names file, line and problem); 3 the
 // output could not be written (nothing half-written is left); 4 an internal error.
@@ -29,6 +34,11 @@ struct MakeMapOptions {
   int random_count = 0;                                // --random: number of random sensors (0: off)
   std::vector<double> random_area_km = {50.0, 50.0};   // --area: W,H of the random layout, km
   double random_weight_ratio = 4.0;                    // --weight-ratio: largest/smallest random weight
+  std::string towns_path;                              // --towns: lon/lat town list (CSV id,lon,lat,weight)
+  int town_count = 100;                                // --count: towns in the window
+  std::string town_weights = "population";             // --town-weights: population | power-classes
+  std::vector<double> power_classes_dbm = {43.0, 37.0, 31.0};  // --power-classes: dBm, for power-classes
+  std::string model = "multiplicative";                // --model: propagation model name
   std::vector<double> lonlat_centre;                   // --lonlat: LON,LAT (empty: not given)
   bool planar = false;                                 // --planar: metres even for lon/lat input
   std::vector<double> extent;                          // --extent: xmin,ymin,xmax,ymax metres (empty: auto)

@@ -16,7 +16,13 @@
 namespace covmap::mapgen {
 
 // The purposes that draw random numbers; each gets its own stream for a given seed.
-enum class RandomPurpose : std::uint64_t { kSensorErrors = 1, kVertexJitter = 2, kRandomLayout = 3 };
+enum class RandomPurpose : std::uint64_t {
+  kSensorErrors = 1,
+  kVertexJitter = 2,
+  kRandomLayout = 3,
+  kTownLayout = 4,   // which window of a town list
+  kPropagation = 5,  // per-sensor parameters of a non-multiplicative propagation model
+};
 
 class RandomStream {
  public:

@@ -25,6 +25,15 @@ if [[ ${2:-} == --towns ]]; then
     > datasets/maps/bern_towns.csv
   node tools/mapgen/cities_sites.js --country CH --admin TI --min-population 2000 \
     > datasets/maps/ticino_towns.csv
+  # Town lists for clustered layouts (covmap-make-map --towns; datasets/towns/README.md).
+  node tools/mapgen/cities_sites.js --country FR --admin 11 --min-population 10000 --lonlat \
+    > datasets/towns/ile_de_france.csv
+  node tools/mapgen/cities_sites.js --country NL --min-population 5000 --lonlat > datasets/towns/netherlands.csv
+  node tools/mapgen/cities_sites.js --country DE --admin 07 --min-population 10000 --lonlat \
+    > datasets/towns/nordrhein_westfalen.csv
+  node tools/mapgen/cities_sites.js --country GB --admin SCT --min-population 2000 --lonlat \
+    > datasets/towns/scotland.csv
+  node tools/mapgen/cities_sites.js --country US --admin IA --min-population 2000 --lonlat > datasets/towns/iowa.csv
 fi
 
 # Canton of Bern, lon/lat: 58 towns, coverage limited to 16 km for the strongest sensor (an
