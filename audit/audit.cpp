@@ -111,6 +111,7 @@ AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSen
   const ModelFitResult fit = model_fit(cleaned, setup.samples, refined.sample_residual, cells.area, out.bin_size_m, options);
   out.model_fit = fit.map;
   apply_model_fit(fit, options, out.sensors);
+  apply_report_fit(setup.samples, cells.area, options, out.model_fit, out.sensors);
 
   // 6. Recompute the diagrams and compare them with the map on a raster.
   recomputed_diagrams(cells, raster, refined, reported_of, reported, scale, options, out);

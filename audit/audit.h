@@ -128,16 +128,24 @@ struct ReceptionLimit {
   std::size_t sensors = 0;     // sensors whose coverage ends at a range edge somewhere
 };
 
-// How well the multiplicative model explains the map (issue 12; audit/model_fit.h has the
-// statistic): the mean square of the model's boundary residuals over that of free curves fitted to
-// each boundary on its own, ~1 where the map follows the model.
+// How well the multiplicative model explains the map (issue 12; audit/model_fit.h has both
+// statistics): (1) the mean square of the model's boundary residuals over that of free curves
+// fitted to each boundary on its own, ~1 where the map follows the model; (2) the reported sensors
+// against the map: where the model holds and the reports are right but for a few gross errors, most
+// sensors' χ² tail probabilities are large; a region (or map) where most are small is not drawn by
+// the model the reports describe (e.g. every sensor its own path-loss exponent: the boundaries are
+// still circles, of other sensors).
 struct ModelFit {
   bool known = false;             // false: the refinement did not run, nothing was measured
-  double ratio = 0.0;             // over the whole map
-  std::size_t misfit_sensors = 0; // sensors whose own ratio exceeds AuditOptions::model_misfit_ratio
+  double ratio = 0.0;             // (1) over the whole map
+  // (2) the median χ² tail probability over the sensors the boundary fit judged (nullopt with
+  // fewer than tolerance::kMisfitMinJudged of them).
+  std::optional<double> reports_median_p;
+  std::size_t misfit_sensors = 0; // sensors marked model_misfit (either statistic)
   double misfit_area_share = 0.0; // their share of the map's covered area
-  // The map as a whole does not follow the model: its ratio, or the share of its area in misfit
-  // sensors, is above the thresholds (AuditOptions::model_misfit_ratio, tolerance::kMisfitAreaShare).
+  // The map as a whole does not follow the model: its ratio above AuditOptions::model_misfit_ratio,
+  // the reports' median p below tolerance::kMisfitPValue, or more than tolerance::kMisfitAreaShare
+  // of its area in sensors whose boundaries the model does not draw (statistic 1).
   bool misfit = false;
 };
 

@@ -1,11 +1,14 @@
 #include "audit/model_fit.h"
 
+#include <algorithm>
 #include <cmath>
+#include <set>
 #include <cstdio>
 #include <string>
 #include <limits>
 
 #include "audit/tolerances.h"
+#include "audit/verdict.h"
 
 namespace covmap::audit::stages {
 namespace {
@@ -18,6 +21,13 @@ std::vector<double> free_mean_squares(const cleaning::CleanedMap& cleaned, doubl
   for (const cleaning::RangeEdge& edge : cleaned.range_edges)
     for (std::size_t k = 0; k < edge.pieces.size(); ++k) ms.push_back(std::max(edge.fit.rms * edge.fit.rms, floor_ms));
   return ms;
+}
+
+std::string readable_probability(double p) {
+  char buffer[32];
+  if (p < 0.001) return "below 0.001";
+  std::snprintf(buffer, sizeof buffer, "%.3f", p);
+  return buffer;
 }
 
 std::string readable_ratio(double r) {
@@ -84,6 +94,78 @@ void apply_model_fit(const ModelFitResult& fit, const AuditOptions& options, std
     s.reason = "the map around this sensor does not follow the path-loss model: the model draws its boundaries " +
                readable_ratio(ratio) + " times worse (mean square) than free curves do, above the threshold " +
                readable_ratio(options.model_misfit_ratio) + "; not judged";
+  }
+}
+
+namespace {
+
+// The χ² tail probability of a sensor the boundary fit judged (NaN otherwise).
+double tail_probability(const SensorAudit& s) {
+  if (s.basis != VerdictBasis::kBoundaryFit || !s.chi2) return std::numeric_limits<double>::quiet_NaN();
+  return chi2_tail(*s.chi2, s.weight_ratio ? 3 : 2);
+}
+
+double median_of(std::vector<double> v) {
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  return v[v.size() / 2];
+}
+
+}  // namespace
+
+void apply_report_fit(std::span<const fitting::BoundarySample> samples, std::span<const double> sensor_area,
+                      const AuditOptions& options, ModelFit& fit, std::vector<SensorAudit>& sensors) {
+  const std::size_t n = sensor_area.size();
+  std::vector<double> p(n);
+  std::vector<double> judged;
+  for (std::size_t i = 0; i < n && i < sensors.size(); ++i) {
+    p[i] = tail_probability(sensors[i]);
+    if (std::isfinite(p[i])) judged.push_back(p[i]);
+  }
+  if (judged.size() >= tolerance::kMisfitMinJudged) fit.reports_median_p = median_of(judged);
+  std::vector<std::set<int>> neighbours(n);
+  for (const fitting::BoundarySample& s : samples)
+    if (s.site_b != kNone) neighbours[s.site_a].insert(s.site_b), neighbours[s.site_b].insert(s.site_a);
+  std::vector<std::pair<std::size_t, double>> misfits;  // decided on the verdicts before any change
+  for (std::size_t i = 0; i < n && i < sensors.size(); ++i) {
+    if (!std::isfinite(p[i])) continue;
+    std::vector<double> around;
+    for (int k : neighbours[i])
+      if (std::isfinite(p[k])) around.push_back(p[k]);
+    if (around.size() < tolerance::kMisfitMinNeighbours) continue;
+    if (const double m = median_of(around); m < tolerance::kMisfitPValue) misfits.push_back({i, m});
+  }
+  for (auto [i, m] : misfits) {
+    SensorAudit& s = sensors[i];
+    s.verdict = SensorVerdict::kModelMisfit;
+    s.basis = VerdictBasis::kModelFit;
+    s.reason = "the reports around this sensor do not follow the path-loss model: its neighbours' reports " +
+               std::string("disagree with the map (median χ² tail probability ") + readable_probability(m) +
+               ", below " + readable_probability(tolerance::kMisfitPValue) + "), so its own disagreement (" +
+               s.reason + ") is not blamed on it; not judged";
+  }
+  // The map-level decision rests on the boundaries' share (apply_model_fit) and the map-wide median;
+  // the neighbourhood markings above are local by design (on a small map with many gross errors a
+  // few neighbourhoods are mostly wrong by chance) and only add to the counts shown.
+  const bool boundary_share_off = fit.misfit_area_share > tolerance::kMisfitAreaShare;
+  double area = 0.0, misfit_area = 0.0;
+  fit.misfit_sensors = 0;
+  for (std::size_t i = 0; i < n && i < sensors.size(); ++i) {
+    area += std::abs(sensor_area[i]);
+    const bool boundaries_off = sensors[i].model_fit_ratio && *sensors[i].model_fit_ratio > options.model_misfit_ratio;
+    if (boundaries_off || sensors[i].verdict == SensorVerdict::kModelMisfit)
+      ++fit.misfit_sensors, misfit_area += std::abs(sensor_area[i]);
+  }
+  fit.misfit_area_share = area > 0 ? misfit_area / area : 0.0;
+  fit.misfit = fit.known && (fit.ratio > options.model_misfit_ratio || boundary_share_off ||
+                             (fit.reports_median_p && *fit.reports_median_p < tolerance::kMisfitPValue));
+  if (!fit.misfit) return;
+  // A map the model does not explain as a whole: no verdict of the model stands, in either direction.
+  for (SensorAudit& s : sensors) {
+    if (s.verdict != SensorVerdict::kConsistent && s.verdict != SensorVerdict::kInconsistent) continue;
+    s.reason = "the map as a whole does not follow the path-loss model, so the model's verdict (" + s.reason +
+               ") does not stand; not judged";
+    s.verdict = SensorVerdict::kModelMisfit;
+    s.basis = VerdictBasis::kModelFit;
   }
 }
 

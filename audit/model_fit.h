@@ -37,4 +37,12 @@ ModelFitResult model_fit(const cleaning::CleanedMap& cleaned, std::span<const fi
 // hold, its consistent and inconsistent are both unfounded).
 void apply_model_fit(const ModelFitResult& fit, const AuditOptions& options, std::vector<SensorAudit>& sensors);
 
+// The reports against the map (ModelFit (2)): the median χ² tail probability over all sensors the
+// boundary fit judged, and per such sensor over its neighbours (sensors sharing a boundary, itself
+// excluded: a gross error is a lone outlier among right neighbours, a region the model does not
+// draw has most of them off). A sensor whose neighbours' median is below kMisfitPValue becomes
+// model_misfit. Then sets fit.misfit_sensors, misfit_area_share and misfit over both statistics.
+void apply_report_fit(std::span<const fitting::BoundarySample> samples, std::span<const double> sensor_area,
+                      const AuditOptions& options, ModelFit& fit, std::vector<SensorAudit>& sensors);
+
 }  // namespace covmap::audit::stages

@@ -106,5 +106,16 @@ inline constexpr double kMisfitAreaShare = 0.1;
 // map: cells of 1–25 bins reached ratios of 5–80 under the model itself).
 inline constexpr int kMisfitMinSamples = 20;
 // ... and only for cells of at least kResolvedCellBins.
+// The reports against the map (audit/model_fit.h, ModelFit (2)). Where the model holds and the
+// reports are right, a sensor's χ² tail probability is uniform or larger (the floors only shrink
+// χ²): the median over its neighbours is below 0.1 only when more than half of them carry gross
+// errors (with 10 % of sensors wrong and six neighbours, P ≈ 1.6 %). On maps drawn with a
+// path-loss exponent per sensor the median χ² was 19–41 (tail ~10⁻⁴), under the model 0.5–0.8 even
+// with 30 % gross errors (docs/ACCURACY.md).
+inline constexpr double kMisfitPValue = 0.1;
+// ... over at least this many judged neighbours (a sensor with fewer is judged alone).
+inline constexpr std::size_t kMisfitMinNeighbours = 4;
+// The map-level median needs at least this many judged sensors.
+inline constexpr std::size_t kMisfitMinJudged = 10;
 
 }  // namespace covmap::audit::tolerance

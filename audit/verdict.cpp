@@ -59,6 +59,8 @@ Judgement judge(const VerdictInput& in, double threshold3) {
   return v;
 }
 
+double chi2_tail(double x, int dof) { return dof == 2 ? std::exp(-0.5 * x) : chi2_3_tail(x); }
+
 // χ²₂'s tail is exp(−t/2): the quantile of χ²₃'s tail probability at threshold3.
 double chi2_quantile_two_dof(double threshold3) { return -2.0 * std::log(chi2_3_tail(threshold3)); }
 

@@ -36,6 +36,9 @@ struct Judgement {
 // probability's quantile (computed from it).
 Judgement judge(const VerdictInput& in, double threshold3);
 
+// The probability that χ² with `dof` (2 or 3) degrees of freedom exceeds x.
+double chi2_tail(double x, int dof);
+
 // The 2-degree-of-freedom threshold with the same tail probability as threshold3 for 3.
 double chi2_quantile_two_dof(double threshold3);
 

@@ -87,12 +87,16 @@ std::string model_fit_text(const audit::AuditResult& result) {
                                   ? "no sensor lies in a region it does not explain"
                                   : plural(f.misfit_sensors, "sensor") + " (" + fixed(100.0 * f.misfit_area_share, 1) +
                                         " % of the covered area) lie in regions it does not explain and are not judged (model misfit)";
+  const std::string reports =
+      f.reports_median_p ? "; the reported sensors' median χ² tail probability is " + fixed(*f.reports_median_p, 3) +
+                               " (about 0.5 or more where the model holds and the reports are right)"
+                         : "";
   if (f.misfit)
     return "The map does not follow the path-loss model: the model draws its boundaries " + ratio +
-           " times worse (mean square) than free curves fitted to each; " + misfits +
+           " times the mean square of free curves fitted to each (1 = as well as they do)" + reports + "; " + misfits +
            ". Verdicts elsewhere rest on a model the map only partly follows.";
   return "The map follows the path-loss model: the model draws its boundaries " + ratio +
-         " times the mean square of free curves fitted to each (1 = as well as they do); " + misfits + ".";
+         " times the mean square of free curves fitted to each (1 = as well as they do)" + reports + "; " + misfits + ".";
 }
 
 std::string reception_text(const audit::AuditResult& result) {

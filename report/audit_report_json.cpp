@@ -153,6 +153,7 @@ json reception_json(const std::optional<audit::ReceptionLimit>& limit) {
 json model_fit_json(const audit::ModelFit& fit) {
   if (!fit.known) return nullptr;
   return {{"ratio", number_or_null(fit.ratio)},
+          {"reports_median_p", fit.reports_median_p ? number_or_null(*fit.reports_median_p) : json()},
           {"misfit", fit.misfit},
           {"misfit_sensors", fit.misfit_sensors},
           {"misfit_area_share", number_or_null(fit.misfit_area_share)}};
