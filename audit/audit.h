@@ -143,9 +143,10 @@ struct ModelFit {
   std::optional<double> reports_median_p;
   std::size_t misfit_sensors = 0; // sensors marked model_misfit (either statistic)
   double misfit_area_share = 0.0; // their share of the map's covered area
-  // The map as a whole does not follow the model: its ratio above AuditOptions::model_misfit_ratio,
-  // the reports' median p below tolerance::kMisfitPValue, or more than tolerance::kMisfitAreaShare
-  // of its area in sensors whose boundaries the model does not draw (statistic 1).
+  // The map as a whole does not follow the model: more than tolerance::kMisfitAreaShare of its area
+  // in sensors whose boundaries the model does not draw (statistic 1; the pooled ratio is shown, not
+  // decided on: a few sensors can dominate a mean square), or the reports' median p below
+  // tolerance::kMisfitPValue (statistic 2).
   bool misfit = false;
 };
 

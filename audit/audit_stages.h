@@ -95,6 +95,20 @@ fitting::RefineResult multi_start_refinement(const RefinementSetup& setup, const
                                              const MapRaster& raster, const ReportedOf& reported_of,
                                              std::vector<std::string>& messages);
 
+// ---- Range edges the fit does not bear out (range_edge_check.cpp) ----
+
+// A sensor's outside boundary that cleaning took for a range edge (a circle about the sensor that
+// holds its cell) may be another circle of that shape: the edge of a hole where a cell is missing
+// is a weaker sensor's Apollonius circle against the missing one. Taken for a reach, it pulls the
+// sensor toward the circle's centre, and the sensor's boundaries no longer fit: where a sensor
+// with a range edge has a model-fit ratio (model_fit.h) above kRangeEdgeMisfitRatio, its range
+// samples are dropped from setup.samples and cleaned.range_edges (the edge is then frame), said in
+// messages. True when any was dropped: refine again (a sensor that still misfits then is judged
+// by the model fit as any other).
+bool drop_unfitted_range_edges(RefinementSetup& setup, const fitting::RefineResult& refined, std::span<const double> area,
+                               const AuditOptions& options, cleaning::CleanedMap& cleaned,
+                               std::vector<std::string>& messages);
+
 // ---- Verdicts per sensor (sensor_audits.cpp) ----
 
 // Reported and reconstructed weights are each known only up to a factor.

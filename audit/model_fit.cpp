@@ -77,7 +77,9 @@ ModelFitResult model_fit(const cleaning::CleanedMap& cleaned, std::span<const fi
     if (out.sensor_ratio[i] > options.model_misfit_ratio) ++fit.misfit_sensors, misfit_area += a;
   }
   fit.misfit_area_share = area > 0 ? misfit_area / area : 0.0;
-  fit.misfit = fit.known && (fit.ratio > options.model_misfit_ratio || fit.misfit_area_share > tolerance::kMisfitAreaShare);
+  // The decision rests on the share of area, not on the pooled ratio, which a few sensors can
+  // dominate (a mean square is not robust).
+  fit.misfit = fit.known && fit.misfit_area_share > tolerance::kMisfitAreaShare;
   return out;
 }
 
@@ -156,8 +158,7 @@ void apply_report_fit(std::span<const fitting::BoundarySample> samples, std::spa
       ++fit.misfit_sensors, misfit_area += std::abs(sensor_area[i]);
   }
   fit.misfit_area_share = area > 0 ? misfit_area / area : 0.0;
-  fit.misfit = fit.known && (fit.ratio > options.model_misfit_ratio || boundary_share_off ||
-                             (fit.reports_median_p && *fit.reports_median_p < tolerance::kMisfitPValue));
+  fit.misfit = fit.known && (boundary_share_off || (fit.reports_median_p && *fit.reports_median_p < tolerance::kMisfitPValue));
   if (!fit.misfit) return;
   // A map the model does not explain as a whole: no verdict of the model stands, in either direction.
   for (SensorAudit& s : sensors) {

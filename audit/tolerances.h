@@ -93,6 +93,12 @@ inline constexpr std::size_t kMinPredictedBins = 4;
 // position: a cell reaching farther still covers bins within it, which is all the test needs.
 inline constexpr double kPredictionSearchSpacings = 4.0;
 
+// A sensor with a range edge whose boundaries the fit draws this many times worse (mean square)
+// than free curves has no range edge there (audit_stages.h, drop_unfitted_range_edges): the model
+// fit's own test and default (AuditOptions::model_misfit_ratio); a true range edge is drawn as
+// well by both, while a hole's Apollonius circle, fitted as a reach, pulls the sensor off.
+inline constexpr double kRangeEdgeMisfitRatio = 4.0;
+
 // Model fit (audit/model_fit.h). The map's own noise is at least this many bins (rms), however
 // well a free curve happens to fit a boundary: a boundary drawn exactly (no staircase) would
 // otherwise make any model residual, even rounding, look like a misfit.

@@ -6,6 +6,7 @@
 // their reach, with their gross errors flagged.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
@@ -71,6 +72,30 @@ TEST(ReceptionLimit, TheRasterFrameIsNotARangeEdge) {
   EXPECT_GT(r.result.cleaned.report.frame_chains, 0u);
   EXPECT_EQ(r.result.cleaned.range_edges.size(), 0u);
   EXPECT_FALSE(r.result.reception.has_value());
+}
+
+TEST(ReceptionLimit, AHoleWhereACellIsMissingIsNoReach) {
+  // A map without a reach, one large cell cut out: its neighbours' edges against the hole are
+  // Apollonius circles about (near) them that hold their cells — shaped like range edges. The fit
+  // does not bear them out (no common R); treated as frame, nobody is blamed and the map fits.
+  mapgen::CoverageMapOptions o = base_options(4);
+  o.errors.gross_fraction = 0.0;
+  std::vector<ReportedSensor> reported;
+  AuditRun r = generate_and_read(o, sensors(40, 21), 3.5, reported);
+  const auto cut = std::max_element(r.generated.truth.begin(), r.generated.truth.end(),
+                                    [](const auto& a, const auto& b) { return a.bins < b.bins; });
+  std::erase_if(r.map.cells, [&](const CoverageCell& c) { return c.sensor == cut->id; });
+  std::erase_if(reported, [&](const ReportedSensor& s) { return s.id == cut->id; });
+  audit::AuditOptions ao;
+  ao.alpha = 3.5;
+  const audit::AuditResult result = audit::audit(r.map.cells, reported, ao);
+  EXPECT_FALSE(result.model_fit.misfit) << result.model_fit.ratio << " share " << result.model_fit.misfit_area_share << " p "
+                                        << result.model_fit.reports_median_p.value_or(-1);
+  EXPECT_FALSE(result.reception.has_value());
+  for (const auto& s : result.sensors) {
+    EXPECT_NE(s.verdict, audit::SensorVerdict::kInconsistent) << s.id << ": " << s.reason;
+    EXPECT_NE(s.verdict, audit::SensorVerdict::kModelMisfit) << s.id << ": " << s.reason;
+  }
 }
 
 TEST(ReceptionLimit, AuditEstimatesTheReachAndJudgesIsolatedSensors) {
