@@ -95,6 +95,13 @@ fitting::RefineResult multi_start_refinement(const RefinementSetup& setup, const
                                              const MapRaster& raster, const ReportedOf& reported_of,
                                              std::vector<std::string>& messages);
 
+// Local re-solves (local_resolve.cpp): every sensor outside its own cell, with a weight far from
+// its neighbours' or a poor fit to its own boundaries is solved again with its neighbours (the
+// ring around them held) from several starts, the lowest cost winning; refined.sites is updated.
+void resolve_misplaced(const RefinementSetup& setup, const SiteEstimates& estimates, const MapCells& cells,
+                       const MapRaster& raster, const ReportedOf& reported_of, fitting::RefineResult& refined,
+                       std::vector<std::string>& messages);
+
 // ---- Verdicts per sensor (sensor_audits.cpp) ----
 
 // Reported and reconstructed weights are each known only up to a factor.

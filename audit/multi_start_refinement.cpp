@@ -84,6 +84,7 @@ fitting::RefineResult multi_start_refinement(const RefinementSetup& setup, const
     }
   }
   restart_escaped(setup, cells, raster, refined, messages);
+  resolve_misplaced(setup, estimates, cells, raster, reported_of, refined, messages);
   return refined;
 }
 
