@@ -6,6 +6,7 @@
 //   start values           starting_sites.cpp          tolerant estimates checked against the cells
 //   refinement             two_phase_refinement.cpp    boundary samples, priors, one refinement
 //   multi-start            multi_start_refinement.cpp  several starts, restarts of escaped sensors
+//   local re-solves        local_resolve.cpp           sensors in local minima, solved with their neighbourhoods
 //   verdicts per sensor    sensor_audits.cpp           weight scale, uncertainty and verdict per sensor
 //   recomputed diagrams    recomputed_diagrams.cpp     diagrams of the sensors and their agreement
 #pragma once
@@ -89,7 +90,7 @@ fitting::RefineResult refine_from(const RefinementSetup& setup, std::vector<Site
                                   const std::vector<Point>& centroids, std::vector<std::string>& messages);
 
 // The refinement from several starts (on maps small enough), then the restarts of sensors that
-// escaped their cells.
+// escaped their cells, then the local re-solves (resolve_misplaced).
 fitting::RefineResult multi_start_refinement(const RefinementSetup& setup, const SiteEstimates& estimates,
                                              const std::vector<Site>& start, const MapCells& cells,
                                              const MapRaster& raster, const ReportedOf& reported_of,

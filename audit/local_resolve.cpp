@@ -215,15 +215,23 @@ bool better(const LocalResult& a, const LocalResult& b) {
   return a.cost < b.cost;
 }
 
-// The candidate positions of sensor i.
-std::vector<Point> candidate_positions(const SiteEstimates& estimates, const MapCells& cells,
-                                       const MapRaster& raster, const ReportedOf& reported_of, std::size_t i) {
-  std::vector<Point> out{cells.centroids[i]};
+// The candidate positions of sensor i: its cell's centroid, its tolerant estimate (inside its own
+// cell), its reported position; one within kLocalSameStartBins of the current site or of an earlier
+// candidate would repeat that start's descent and is left out.
+std::vector<Point> candidate_positions(const RefinementSetup& setup, const SiteEstimates& estimates,
+                                       const MapCells& cells, const MapRaster& raster, const ReportedOf& reported_of,
+                                       const Site& current, std::size_t i) {
+  std::vector<Point> all{cells.centroids[i]};
   const Site& e = estimates.sites[i];
   if (estimates.how[i] != EstimateSource::kCentroid && raster.label_at(e.x, e.y) == static_cast<int>(i))
-    out.push_back({e.x, e.y});
-  if (auto it = reported_of.find(static_cast<int>(i)); it != reported_of.end())
-    out.push_back(it->second->position);
+    all.push_back({e.x, e.y});
+  if (auto it = reported_of.find(static_cast<int>(i)); it != reported_of.end()) all.push_back(it->second->position);
+  std::vector<Point> out;
+  const double same = tolerance::kLocalSameStartBins * setup.bin_size_m;
+  auto near = [same](Point a, Point b) { return std::hypot(a.x - b.x, a.y - b.y) < same; };
+  for (Point p : all)
+    if (!near(p, {current.x, current.y}) && std::none_of(out.begin(), out.end(), [&](Point q) { return near(p, q); }))
+      out.push_back(p);
   return out;
 }
 
@@ -238,7 +246,7 @@ std::vector<std::vector<Site>> local_starts(const RefinementSetup& setup, const 
   for (int j : nb.sensors) current.push_back(sites[j]);
   std::vector<std::vector<Site>> starts{current};
   const std::size_t i = static_cast<std::size_t>(nb.sensors[0]);
-  for (Point p : candidate_positions(estimates, cells, raster, reported_of, i)) {
+  for (Point p : candidate_positions(setup, estimates, cells, raster, reported_of, sites[i], i)) {
     starts.push_back(current);
     starts.back()[0] = {sites[i].id, p.x, p.y, std::exp(boundary_log_weight(setup, sites, adj.samples[i], i, p))};
   }
@@ -257,10 +265,16 @@ std::vector<std::vector<Site>> local_starts(const RefinementSetup& setup, const 
   return starts;
 }
 
-// Whether sensor i may sit in a local minimum (the file's comment lists why each test).
-bool suspected(const RefinementSetup& setup, const MapCells& cells, const MapRaster& raster, const Adjacency& adj,
-               const fitting::RefineResult& refined, std::size_t i) {
-  if (adj.samples[i].empty()) return false;
+// Why sensor i may sit in a local minimum (the file's comment says why each test).
+enum class Suspicion {
+  kNone,
+  kIslandHost,  // only that it hosts an island: every boundary of it fits
+  kMisfit,      // outside its own cell, a weight far from its neighbours', merged or a poor boundary
+};
+
+Suspicion suspicion(const RefinementSetup& setup, const MapCells& cells, const MapRaster& raster, const Adjacency& adj,
+                    const fitting::RefineResult& refined, std::size_t i) {
+  if (adj.samples[i].empty()) return Suspicion::kNone;
   const std::vector<Site>& sites = refined.sites;
   std::vector<double> neighbour_logw;
   bool merged = false, island = false;
@@ -271,8 +285,10 @@ bool suspected(const RefinementSetup& setup, const MapCells& cells, const MapRas
   }
   const bool weight_ok =
       std::abs(std::log(sites[i].weight) - median(std::move(neighbour_logw))) <= tolerance::kAuditMaxLogWeightJump;
-  return !inside_own_cell(setup, cells, raster, sites[i], i) || !weight_ok || merged || island ||
-         worst_boundary_fit(setup, refined, adj.samples[i], i) > tolerance::kLocalPoorFitSigma;
+  if (!inside_own_cell(setup, cells, raster, sites[i], i) || !weight_ok || merged ||
+      worst_boundary_fit(setup, refined, adj.samples[i], i) > tolerance::kLocalPoorFitSigma)
+    return Suspicion::kMisfit;
+  return island ? Suspicion::kIslandHost : Suspicion::kNone;
 }
 
 }  // namespace
@@ -284,12 +300,12 @@ void resolve_misplaced(const RefinementSetup& setup, const SiteEstimates& estima
   if (n < 2 || refined.sites.size() != n) return;
   const Adjacency adj = adjacency(setup);
   std::vector<Site>& sites = refined.sites;
-  std::vector<char> suspect(n, 0);
-  for (std::size_t i = 0; i < n; ++i) suspect[i] = suspected(setup, cells, raster, adj, refined, i);
+  std::vector<Suspicion> suspect(n, Suspicion::kNone);
+  for (std::size_t i = 0; i < n; ++i) suspect[i] = suspicion(setup, cells, raster, adj, refined, i);
   std::vector<int> local_of(n, -1);
   int resolved = 0, moved = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    if (!suspect[i]) continue;
+    if (suspect[i] == Suspicion::kNone) continue;
     ++resolved;
     const Neighbourhood nb = neighbourhood(setup, adj, sites, i, local_of);
     LocalResult best;
@@ -303,7 +319,11 @@ void resolve_misplaced(const RefinementSetup& setup, const SiteEstimates& estima
     if (best.sites.empty() || !best.admissible) continue;  // nothing better than a degenerate minimum
     for (std::size_t l = 0; l < nb.free; ++l) sites[nb.sensors[l]] = best.sites[l];
     // Its neighbours were solved with it, from the same starts: a later suspect among them is done.
-    for (int j : adj.neighbours[i]) suspect[j] = 0;
+    // So is an island host anywhere in the free set (it was solved from its centroid with its
+    // island); a misfit two rings away needs starts of its own (measured: one ended 3.1 bins off).
+    for (int j : adj.neighbours[i]) suspect[j] = Suspicion::kNone;
+    for (std::size_t l = 0; l < nb.free; ++l)
+      if (suspect[nb.sensors[l]] == Suspicion::kIslandHost) suspect[nb.sensors[l]] = Suspicion::kNone;
     moved += which > 0;
   }
   if (resolved)

@@ -1,5 +1,6 @@
 // Multi-start refinement of audit(): the refinement from several starts (on maps small enough for
-// it), the lowest cost winning, then restarts of sensors that escaped their own cells.
+// it), the lowest cost winning, then restarts of sensors that escaped their own cells, then local
+// re-solves of the sensors still in local minima (local_resolve.cpp).
 #include <cmath>
 #include <utility>
 

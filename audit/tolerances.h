@@ -101,6 +101,9 @@ inline constexpr double kLocalHeldLogWeight = 1e-4;
 // on a 10⁴-sensor map: from the truth with one ring held at the distorted values the solve left it
 // by 5 bins); two can.
 inline constexpr std::size_t kLocalFreeRings = 2;
-// Iteration cap of one local re-solve (a dozen sensors; they converge in far fewer).
-inline constexpr int kLocalMaxIterations = 100;
+// A candidate start within this many bins of the current site or of another candidate descends to
+// the same minimum (a local minimum's basin is several bins wide) and is not solved again.
+inline constexpr double kLocalSameStartBins = 2.0;
+// Iteration cap of one local re-solve (a few dozen sensors; most converge in far fewer).
+inline constexpr int kLocalMaxIterations = 50;
 }  // namespace covmap::audit::tolerance
