@@ -21,8 +21,10 @@
 // inside its own region), whose weight is far from their neighbours' (a divergence), with a
 // neighbour within kLocalMergedBins (merged), hosting an island, or with a boundary fitted poorly
 // (its median residual above kLocalPoorFitSigma). The neighbourhood of sensor i: every sensor within
-// kLocalFreeRings shared boundaries of i is free; the sensors around them are held (tight priors at
-// their current values); the samples are every sample of a free sensor. The starts: the current
+// kLocalFreeRings shared boundaries of i is free, under the joint refinement's weak priors (position
+// and phase 1's loose log weight, about their current values, the same for every start); the
+// sensors around them are held (tight priors at their current values); the samples are every
+// sample of a free sensor. The starts: the current
 // solution (so a re-solve never ends worse than where it began); i at its cell's centroid, at its
 // tolerant estimate and at its reported position; every free sensor at its cell's centroid. At a new
 // position a sensor's weight is the one that puts its boundaries where the samples are (the median
@@ -156,7 +158,7 @@ Neighbourhood neighbourhood(const RefinementSetup& setup, const Adjacency& adj, 
     const bool held = l >= nb.free;
     nb.priors.push_back({static_cast<int>(l), {site.x, site.y},
                          held ? tolerance::kLocalHeldPositionBins * setup.bin_size_m : setup.prior_position_sigma,
-                         std::log(site.weight), held ? tolerance::kLocalHeldLogWeight : 0.0});
+                         std::log(site.weight), held ? tolerance::kLocalHeldLogWeight : tolerance::kAuditLogWeightPrior});
   }
   for (int j : nb.sensors) local_of[j] = -1;
   return nb;
@@ -193,16 +195,25 @@ LocalResult solve_from(const RefinementSetup& setup, const Neighbourhood& nb, co
   return out;
 }
 
-// A site lies inside its own region, and two sites at one point are no diagram: a solution that
-// breaks either is a degenerate minimum, however low its cost (two merged sensors fit their
-// common boundary with a circle of any radius).
-bool admissible(const RefinementSetup& setup, const MapCells& cells, const MapRaster& raster, const Neighbourhood& nb,
-                const std::vector<Site>& local) {
+// A site lies inside its own region, two sites at one point are no diagram, and neighbours'
+// weights differ by modest factors: a solution that breaks any of these is a degenerate minimum,
+// however low its cost (two merged sensors fit their common boundary with a circle of any radius;
+// a weight that only one short boundary bounds runs off to 10¹³).
+bool admissible(const RefinementSetup& setup, const MapCells& cells, const MapRaster& raster, const Adjacency& adj,
+                const Neighbourhood& nb, const std::vector<Site>& local) {
   const double coincident = tolerance::kLocalCoincidentBins * setup.bin_size_m;
+  std::map<int, std::size_t> local_of;
+  for (std::size_t l = 0; l < local.size(); ++l) local_of[nb.sensors[l]] = l;
   for (std::size_t l = 0; l < nb.free; ++l) {
-    if (!inside_own_cell(setup, cells, raster, local[l], static_cast<std::size_t>(nb.sensors[l]))) return false;
+    const int i = nb.sensors[l];
+    if (!inside_own_cell(setup, cells, raster, local[l], static_cast<std::size_t>(i))) return false;
     for (std::size_t m = 0; m < local.size(); ++m)
       if (m != l && std::hypot(local[m].x - local[l].x, local[m].y - local[l].y) < coincident) return false;
+    // A weight that ran away from its neighbours' (a boundary that bounds it only weakly) diverged.
+    std::vector<double> neighbour_logw;
+    for (int j : adj.neighbours[i]) neighbour_logw.push_back(std::log(local[local_of.at(j)].weight));
+    if (std::abs(std::log(local[l].weight) - median(std::move(neighbour_logw))) > tolerance::kAuditMaxLogWeightJump)
+      return false;
   }
   return true;
 }
@@ -312,7 +323,7 @@ void resolve_misplaced(const RefinementSetup& setup, const SiteEstimates& estima
     int which = -1, k = 0;
     for (const std::vector<Site>& start : local_starts(setup, estimates, cells, raster, reported_of, adj, sites, nb)) {
       LocalResult r = solve_from(setup, nb, start);
-      r.admissible = !r.sites.empty() && admissible(setup, cells, raster, nb, r.sites);
+      r.admissible = !r.sites.empty() && admissible(setup, cells, raster, adj, nb, r.sites);
       if (better(r, best)) best = std::move(r), which = k;
       ++k;
     }
