@@ -96,9 +96,11 @@ fitting::RefineResult multi_start_refinement(const RefinementSetup& setup, const
                                              const MapRaster& raster, const ReportedOf& reported_of,
                                              std::vector<std::string>& messages);
 
-// Local re-solves (local_resolve.cpp): every sensor outside its own cell, with a weight far from
-// its neighbours' or a poor fit to its own boundaries is solved again with its neighbours (the
-// ring around them held) from several starts, the lowest cost winning; refined.sites is updated.
+// Local re-solves (local_resolve.cpp): every sensor suspected of a local minimum (outside its own
+// cell, a weight far from its neighbours', a merged neighbour, an island cell it hosts, a poorly
+// fitted boundary) is solved again with its neighbourhood (the ring around it held) from several
+// starts; of the solutions that keep every site in its own cell, apart and with a plausible
+// weight, the lowest cost wins. Updates refined.sites only (not its summary or residuals).
 void resolve_misplaced(const RefinementSetup& setup, const SiteEstimates& estimates, const MapCells& cells,
                        const MapRaster& raster, const ReportedOf& reported_of, fitting::RefineResult& refined,
                        std::vector<std::string>& messages);
