@@ -6,6 +6,7 @@
 //   start values           starting_sites.cpp          tolerant estimates checked against the cells
 //   refinement             two_phase_refinement.cpp    boundary samples, priors, one refinement
 //   multi-start            multi_start_refinement.cpp  several starts, restarts of escaped sensors
+//   local re-solves        local_resolve.cpp           sensors in local minima, solved with their neighbourhoods
 //   verdicts per sensor    sensor_audits.cpp           weight scale, uncertainty and verdict per sensor
 //   recomputed diagrams    recomputed_diagrams.cpp     diagrams of the sensors and their agreement
 #pragma once
@@ -89,7 +90,7 @@ fitting::RefineResult refine_from(const RefinementSetup& setup, std::vector<Site
                                   const std::vector<Point>& centroids, std::vector<std::string>& messages);
 
 // The refinement from several starts (on maps small enough), then the restarts of sensors that
-// escaped their cells.
+// escaped their cells, then the local re-solves (resolve_misplaced).
 fitting::RefineResult multi_start_refinement(const RefinementSetup& setup, const SiteEstimates& estimates,
                                              const std::vector<Site>& start, const MapCells& cells,
                                              const MapRaster& raster, const ReportedOf& reported_of,
@@ -108,6 +109,15 @@ fitting::RefineResult multi_start_refinement(const RefinementSetup& setup, const
 bool drop_unfitted_range_edges(RefinementSetup& setup, const fitting::RefineResult& refined, std::span<const double> area,
                                const AuditOptions& options, cleaning::CleanedMap& cleaned,
                                std::vector<std::string>& messages);
+
+// Local re-solves (local_resolve.cpp): every sensor suspected of a local minimum (outside its own
+// cell, a weight far from its neighbours', a merged neighbour, an island cell it hosts, a poorly
+// fitted boundary) is solved again with its neighbourhood (the ring around it held) from several
+// starts; of the solutions that keep every site in its own cell, apart and with a plausible
+// weight, the lowest cost wins. Updates refined.sites only (not its summary or residuals).
+void resolve_misplaced(const RefinementSetup& setup, const SiteEstimates& estimates, const MapCells& cells,
+                       const MapRaster& raster, const ReportedOf& reported_of, fitting::RefineResult& refined,
+                       std::vector<std::string>& messages);
 
 // ---- Verdicts per sensor (sensor_audits.cpp) ----
 

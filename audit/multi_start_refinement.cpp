@@ -1,5 +1,6 @@
 // Multi-start refinement of audit(): the refinement from several starts (on maps small enough for
-// it), the lowest cost winning, then restarts of sensors that escaped their own cells.
+// it), the lowest cost winning, then restarts of sensors that escaped their own cells, then local
+// re-solves of the sensors still in local minima (local_resolve.cpp).
 #include <cmath>
 #include <utility>
 
@@ -85,6 +86,11 @@ fitting::RefineResult multi_start_refinement(const RefinementSetup& setup, const
     }
   }
   restart_escaped(setup, cells, raster, refined, messages);
+  resolve_misplaced(setup, estimates, cells, raster, reported_of, refined, messages);
+  // The re-solves moved sites: the residuals the model fit and the range-edge check read must be
+  // those of the sites returned.
+  if (refined.sample_residual.size() == setup.samples.size())
+    refined.sample_residual = fitting::sample_residuals(refined.sites, setup.samples, refined.range);
   return refined;
 }
 

@@ -153,18 +153,30 @@ void judge_absent(const ReportedSensor& r, const AuditContext& c, SensorAudit& s
   }
   s.basis = VerdictBasis::kPrediction;
   const std::size_t k = c.refined.sites.size();
-  const PredictedCell predicted =
-      predicted_cell(c.raster, BinWindow{}, with_reported(c.refined.sites, k, r, c.scale, c.options), static_cast<int>(k),
-                     c.refined.range, tolerance::kPredictionSearchSpacings * c.setup.spacing);
-  const double bin = c.raster.grid.bin, km2 = static_cast<double>(predicted.predicted_bins) * bin * bin / 1e6;
-  if (predicted.predicted_bins >= tolerance::kMinPredictedBins) {
+  std::vector<Site> sites = with_reported(c.refined.sites, k, r, c.scale, c.options);
+  const auto bins_at = [&](const std::vector<Site>& at) {
+    return predicted_cell(c.raster, BinWindow{}, at, static_cast<int>(k), c.refined.range,
+                          tolerance::kPredictionSearchSpacings * c.setup.spacing)
+        .predicted_bins;
+  };
+  const std::size_t as_reported = bins_at(sites);
+  // The weakest power its stated uncertainty (and the floor) allows, to the χ² threshold: a right
+  // report whose sensor the map's bins just missed must not be blamed for a power 1 dB high.
+  const double sigma_logw =
+      std::hypot(r.power_sigma_db.value_or(0.0), c.options.power_floor_db) * c.scale.logw_per_db;
+  sites[k].weight *= std::exp(-std::sqrt(c.chi2_two_dof) * sigma_logw);
+  const std::size_t weakest = bins_at(sites);
+  const double bin = c.raster.grid.bin;
+  const auto area = [&](std::size_t bins) { return fixed(static_cast<double>(bins) * bin * bin / 1e6, 2) + " km²"; };
+  if (weakest >= tolerance::kMinPredictedBins) {
     s.verdict = SensorVerdict::kInconsistent;
     s.reason = "no cell of the map names it, but with its reported position and power it would serve " +
-               std::to_string(predicted.predicted_bins) + " bins (" + fixed(km2, 2) + " km²) of the map";
+               std::to_string(as_reported) + " bins (" + area(as_reported) + ") of the map, and " +
+               std::to_string(weakest) + " even at the weakest power its stated uncertainty allows";
   } else {
     s.verdict = SensorVerdict::kConsistent;
-    s.reason = "no cell of the map names it, and with its reported position and power it would serve " +
-               std::to_string(predicted.predicted_bins) + " bins of the map, as the map shows";
+    s.reason = "no cell of the map names it, and within its stated uncertainty its reported position and power give it " +
+               std::to_string(weakest) + " bins of the map (" + std::to_string(as_reported) + " as reported), as the map shows";
   }
 }
 

@@ -184,6 +184,15 @@ mobius::Complex least_squares_intersection(const std::vector<SiteConstraint>& cs
   return best;
 }
 
+// Whether a sensor's junction constraints may leave it a choice: at most two circles and no point.
+// Two circles meet at the site and at a second point with the same, zero, residual; a hull sensor's
+// two junctions are often the two vertices of one triple of sensors, whose solution circles are
+// the same circle (Lemma 5 depends only on the three bisectors), leaving the whole circle.
+bool underdetermined(const std::vector<SiteConstraint>& cs) {
+  if (cs.empty() || cs.size() > 2) return false;
+  return std::all_of(cs.begin(), cs.end(), [](const SiteConstraint& c) { return c.circle; });
+}
+
 // 2. Every sensor at its centroid with weight 1; a sensor with junction constraints at their
 // least-squares intersection instead (EstimateSource::kJunctions), with its residual.
 void locate_at_junctions(const std::vector<std::string>& sensors, std::span<const Point> centroids,
@@ -219,7 +228,35 @@ std::vector<std::vector<std::pair<int, int>>> site_adjacency(const Diagram& g, s
   return neighbours;
 }
 
-// 3. Sensors no junction constrains: the inversion of a located neighbour across their common arc
+// 3. Sensors whose junctions leave them a choice (underdetermined): Lemma 1 says the site is the
+// inversion of a neighbour's site in their common bisector, so across every arc to a neighbour that
+// its own junctions determine, the partner of that neighbour's site is one more estimate of the
+// site, a point constraint. The least-squares intersection of the junctions' circles and these
+// points replaces the centroid's tie-break; exact input gives the site exactly.
+void locate_underdetermined(const Diagram& g, const std::vector<std::vector<std::pair<int, int>>>& neighbours,
+                            std::span<const Point> centroids, const std::vector<std::vector<SiteConstraint>>& constraints,
+                            SiteEstimates& out) {
+  const std::size_t n = out.sites.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!underdetermined(constraints[i])) continue;
+    std::vector<SiteConstraint> cs = constraints[i];
+    for (auto [j, a] : neighbours[i]) {
+      if (out.how[j] != EstimateSource::kJunctions || underdetermined(constraints[j])) continue;
+      const mobius::WeightedPoint partner =
+          mobius::partner_across(plane_curve(g.arcs[a]), {mobius::Complex(out.sites[j].x, out.sites[j].y), 1.0});
+      if (std::isfinite(partner.position.real()) && std::isfinite(partner.position.imag()))
+        cs.push_back({false, partner.position, 0.0});
+    }
+    if (cs.size() == constraints[i].size()) continue;
+    const mobius::Complex centroid = i < centroids.size() ? mobius::Complex(centroids[i].x, centroids[i].y) : mobius::Complex(0, 0);
+    const mobius::Complex best = least_squares_intersection(cs, centroid);
+    out.sites[i].x = best.real();
+    out.sites[i].y = best.imag();
+    out.residual[i] = std::sqrt(cost(constraints[i], best) / static_cast<double>(constraints[i].size()));
+  }
+}
+
+// 4. Sensors no junction constrains: the inversion of a located neighbour across their common arc
 // (EstimateSource::kNeighbour), breadth first from the sensors located at junctions.
 void locate_from_neighbours(const Diagram& g, const std::vector<std::vector<std::pair<int, int>>>& neighbours,
                             SiteEstimates& out) {
@@ -268,7 +305,7 @@ std::optional<double> log_weight_ratio(const Arc& arc, const std::vector<Site>& 
   return in == arc.left_site ? r : -r;
 }
 
-// 4. Log weights by least squares over the arcs between sensors (Lemma 1 ratios, weighted by chain
+// 5. Log weights by least squares over the arcs between sensors (Lemma 1 ratios, weighted by chain
 // length), one gauge per component; zero where the system cannot be solved.
 Eigen::VectorXd log_weights(const cleaning::CleanedMap& map, const std::vector<Site>& sites) {
   const Diagram& g = map.graph;
@@ -324,7 +361,9 @@ SiteEstimates estimate_sites(const cleaning::CleanedMap& map, std::span<const Po
 
   const std::vector<std::vector<SiteConstraint>> constraints = constraints_at_junctions(map.graph, n);
   locate_at_junctions(map.sensors, centroids, constraints, out);
-  locate_from_neighbours(map.graph, site_adjacency(map.graph, n), out);
+  const auto neighbours = site_adjacency(map.graph, n);
+  locate_underdetermined(map.graph, neighbours, centroids, constraints, out);
+  locate_from_neighbours(map.graph, neighbours, out);
   // Weights from their logarithms, the largest 1.
   const Eigen::VectorXd logw = log_weights(map, out.sites);
   const double top = n ? logw.maxCoeff() : 0.0;

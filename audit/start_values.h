@@ -11,7 +11,12 @@
 //     instead, when the composition is not the identity (other_fixed_point).
 //   - a sensor's position is the least-squares intersection of all its junctions' solution circles
 //     and points (Gauss–Newton from every pairwise intersection and the cell's centroid; the start
-//     with the smallest residual wins — the "candidate with the smaller residual").
+//     with the smallest residual wins — the "candidate with the smaller residual"). A sensor
+//     whose junctions leave it a choice (at most two solution circles and no point: two circles
+//     meet at the site and once more; a hull sensor's two junctions are often the two vertices of
+//     one triple, whose circles coincide) also takes, as points, the inversions of its
+//     neighbours' sites across their common arcs (Lemma 1), for every neighbour its own junctions
+//     determine; with no such neighbour, ties go to the point nearer its cell's centroid.
 //   - weight ratios follow from Lemma 1 for every fitted circle (w_in / w_out =
 //     sqrt(|c - s_in| / |c - s_out|), the geometric mean of its two estimates; 1 for lines), and
 //     log weights are their least-squares solution over the sensor adjacency graph, weighted by

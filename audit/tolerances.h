@@ -125,3 +125,45 @@ inline constexpr std::size_t kMisfitMinNeighbours = 4;
 inline constexpr std::size_t kMisfitMinJudged = 10;
 
 }  // namespace covmap::audit::tolerance
+
+// ---- Local re-solves of badly placed sensors (audit/local_resolve.cpp) ----
+namespace covmap::audit::tolerance {
+// A sensor one of whose boundaries (with one neighbour) has a median residual above this many
+// sample σ (σ = bin / √12) fits poorly and is solved again locally: a correctly placed sensor's
+// staircase residuals are uniform within ±bin/2, median |r| = bin/4 ≈ 0.87 σ; at 2 σ that boundary
+// is on average more than half a bin off. Only boundaries of at least kLocalMinBoundarySamples
+// samples count (a median of fewer is noise, and a junction's corner dominates a short one).
+inline constexpr double kLocalPoorFitSigma = 2.0;
+inline constexpr std::size_t kLocalMinBoundarySamples = 5;
+// Two neighbouring sites closer than this many bins are suspected of having merged (one of them
+// drawn onto the other, their bisector a circle of a radius set by two tiny differences); both are
+// solved again. True neighbours that close exist, and a re-solve leaves them where they are.
+inline constexpr double kLocalMergedBins = 0.5;
+// A site counts as inside its own cell when the comparison raster's bin holding it, or one of the
+// eight around it at this many raster bins, is the cell's: the raster is coarser than the map's
+// own bins on the largest maps and a site may lie within a bin of its cell's edge (a heavy sensor
+// beside a light neighbour's small cell).
+inline constexpr double kLocalCellSlackBins = 1.0;
+// A local re-solve that leaves two sites closer than this many bins has merged them (no raster
+// tells sites that close apart, and at one point they have no diagram): it is not accepted.
+inline constexpr double kLocalCoincidentBins = 1e-3;
+// A site outside the map counts as in its own cell within this many mean sensor spacings of the
+// cell's centroid (a sensor beyond the map's edge), as for the restarts.
+inline constexpr double kLocalOutsideMapSpacings = 3.0;
+// The sensors held around a local re-solve: position priors of this many bins and log-weight
+// priors of this σ. Tight enough that the held sensors move by a negligible fraction of a bin (a
+// hundred samples at 1 σ pull one by ~10⁻³ bin), loose enough to keep the solve well conditioned.
+inline constexpr double kLocalHeldPositionBins = 1e-3;
+inline constexpr double kLocalHeldLogWeight = 1e-4;
+// The sensors within this many steps (shared boundaries) of a re-solved sensor are free in its
+// local solve. One ring cannot undo a merged pair's distortion of the sensors around it (measured
+// on a 10⁴-sensor map: solved from the truth with one ring free and the next held at the distorted
+// values, a sensor left it by 5 bins); with two no sensor ended more than 3 bins off, as with three
+// at 1.7 times the audit's time.
+inline constexpr std::size_t kLocalFreeRings = 2;
+// A candidate start within this many bins of the current site or of another candidate descends to
+// the same minimum (a local minimum's basin is several bins wide) and is not solved again.
+inline constexpr double kLocalSameStartBins = 2.0;
+// Iteration cap of one local re-solve (a few dozen sensors; most converge in far fewer).
+inline constexpr int kLocalMaxIterations = 50;
+}  // namespace covmap::audit::tolerance

@@ -92,6 +92,7 @@ BuiltProblem build_problem(std::vector<SiteBlock>& blocks, double* log_range, co
     if (layout.sample_count[i] > 0) problem.AddParameterBlock(blocks[i].data(), kSiteBlockSize);
   }
   if (layout.range) problem.AddParameterBlock(log_range, 1);
+  if (layout.range && layout.hold_range) problem.SetParameterBlockConstant(log_range);
   built.sample_blocks.reserve(samples.size());
   for (std::size_t i = 0; i < samples.size(); ++i) {
     const BoundarySample& s = samples[i];

@@ -27,6 +27,7 @@ struct Layout {
   std::vector<int> group;            // per site: its connected group, kNone for a site without samples
   std::vector<int> group_reference;  // per group: the site whose u is held, kNone if weight priors fix the scale
   bool range = false;                // some sample is a range edge: ρ = log R is a parameter
+  bool hold_range = false;           // ... held at its initial value (RefineOptions::held_range)
   std::size_t free_parameters = 0;   // tangent dimension of the problem
 };
 

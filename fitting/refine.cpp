@@ -133,9 +133,13 @@ RefineResult refine_sites(std::span<const Site> initial, std::span<const Boundar
   if (!options.IsValid(&error)) throw std::invalid_argument("refine_sites: invalid options: " + error);
   detail::validate_inputs(initial, samples, priors);
 
-  const detail::Layout layout = detail::make_layout(initial, samples, priors);
+  detail::Layout layout = detail::make_layout(initial, samples, priors);
+  if (layout.range && options.held_range) {
+    layout.hold_range = true;
+    --layout.free_parameters;
+  }
   std::vector<SiteBlock> blocks = detail::initial_blocks(initial);
-  double log_range = detail::initial_log_range(blocks, samples);
+  double log_range = options.held_range ? std::log(*options.held_range) : detail::initial_log_range(blocks, samples);
   const std::unique_ptr<ceres::LossFunction> loss = detail::make_loss(options.loss, options.loss_scale);
 
   RefineResult result;
@@ -200,6 +204,18 @@ RefineResult refine_sites(std::span<const Site> initial, std::span<const Boundar
   }
   summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
+}
+
+std::vector<double> sample_residuals(std::span<const Site> sites, std::span<const BoundarySample> samples,
+                                     std::optional<double> range) {
+  const std::vector<SiteBlock> blocks = detail::initial_blocks(sites);
+  const bool any_range = std::any_of(samples.begin(), samples.end(), [](const BoundarySample& s) { return s.site_b == kNone; });
+  if (any_range && !range) throw std::invalid_argument("sample_residuals: range-edge samples need the range R");
+  const double log_range = range ? std::log(*range) : 0.0;
+  std::vector<double> out;
+  out.reserve(samples.size());
+  for (const BoundarySample& s : samples) out.push_back(detail::geometric_residual(blocks, log_range, s));
+  return out;
 }
 
 }  // namespace covmap::fitting

@@ -106,6 +106,10 @@ struct RefineOptions {
   int threads = 1;
   // Print Ceres' per-iteration progress to stdout.
   bool verbose = false;
+  // With range-edge samples: hold R at this value (in the units of the initial weights: site i's
+  // reach is held_range · initial weight scale) instead of estimating it, e.g. for a local re-solve
+  // of part of a map whose R the whole map fixed. Must be finite and > 0 when set.
+  std::optional<double> held_range;
   // Called after every solver iteration with its number (from 0): a heartbeat for long solves.
   // Empty: not called. Must not throw.
   std::function<void(int iteration)> on_iteration;
@@ -172,5 +176,11 @@ struct RefineResult {
 
 RefineResult refine_sites(std::span<const Site> initial, std::span<const BoundarySample> samples,
                           std::span<const SitePrior> priors = {}, const RefineOptions& options = {});
+
+// RefineResult::sample_residual for other sites (e.g. after a local re-solve): the signed
+// geometric distance of each sample from its bisector, or from its range circle of radius
+// range·weight (range required when any sample is a range edge; std::invalid_argument otherwise).
+std::vector<double> sample_residuals(std::span<const Site> sites, std::span<const BoundarySample> samples,
+                                     std::optional<double> range);
 
 }  // namespace covmap::fitting

@@ -50,6 +50,8 @@ bool RefineOptions::IsValid(std::string* error) const {
   }
   if (max_iterations < 1) return fail("max_iterations must be at least 1 (got " + std::to_string(max_iterations) + ")");
   if (threads < 1) return fail("threads must be at least 1 (got " + std::to_string(threads) + ")");
+  if (held_range && !(std::isfinite(*held_range) && *held_range > 0))
+    return fail("held_range must be finite and positive (got " + std::to_string(*held_range) + ")");
   return true;
 }
 

@@ -118,8 +118,9 @@ Errors compare(const std::vector<Site>& truth, const SiteEstimates& e) {
 
 // Exact diagram in. A sensor with ≥ 3 junctions has ≥ 3 solution circles through its site, which
 // meet only there: it is located exactly. With 2 junctions the two circles meet at the site and at
-// one more point, and the header breaks that tie towards the cell: the estimate lies on both
-// circles (residual ≈ 0) and is either the site or no farther from the centroid than the site is.
+// one more point: the estimate lies on both circles (residual ≈ 0) and is the site where a located
+// neighbour tells the two apart (TwoJunctionSensorsAreLocatedExactly), else no farther from the
+// centroid than the site is (the header's tie-break towards the cell).
 // Weights are compared only when every sensor was located exactly (Lemma 1 needs both positions).
 bool expect_exact_recovery(const std::vector<Site>& sites, double frame, double position_tolerance,
                            double log_weight_tolerance, int min_located) {
@@ -151,7 +152,9 @@ bool expect_exact_recovery(const std::vector<Site>& sites, double frame, double 
     all_exact = all_exact && junctions[i] >= 2 && error < position_tolerance;
   }
   EXPECT_GE(located, min_located);
-  if (all_exact) EXPECT_LT(compare(sites, e).log_weight, log_weight_tolerance);
+  if (all_exact) {
+    EXPECT_LT(compare(sites, e).log_weight, log_weight_tolerance);
+  }
   return all_exact;
 }
 
@@ -185,9 +188,9 @@ TEST(StartValues, ExactWeightedDiagramRecoversSitesAndWeights) {
     SCOPED_TRACE(seed);
     weights_checked += expect_exact_recovery(grid_layout(false, seed), 22.0, kWeightedPosition, kLogWeight, 10);
   }
-  // Seeds 1 and 3 each have a hull sensor with 2 junctions placed at the other intersection (see
-  // DISABLED_TwoJunctionSensorsAreLocatedExactly); seed 2 has none, so its weights are compared.
-  EXPECT_GE(weights_checked, 1) << "no layout where every sensor was located: weights never compared";
+  // Every sensor of these layouts has ≥ 2 junctions and is located exactly (two-junction sensors
+  // too: TwoJunctionSensorsAreLocatedExactly), so the weights of all three are compared.
+  EXPECT_EQ(weights_checked, 3) << "a layout where some sensor was not located: its weights were not compared";
 }
 
 TEST(StartValues, ExactEqualWeightsLinesRecoverSitesAndEqualWeights) {
@@ -254,15 +257,14 @@ TEST(StartValues, PerturbedNodesStayWithinAStatedBound) {
 }
 
 
-// Found while writing these tests: a sensor with exactly two junctions (a hull sensor) has two
-// candidate positions, the site and the second intersection of its two solution circles, with
-// equal (zero) residuals; estimate_sites takes the one nearer the cell's centroid, as its header
-// says. For a hull cell the centroid is pulled away from the other sensors, and in seeds 1 and 3
-// (realistic centroids, cells clipped to the map's extent) the wrong candidate wins, 4–7 units off
-// with a spacing of 10; every weight then moves by up to 0.3 in log (Lemma 1 ratios use the wrong
-// position). Lemma 1 across the sensor's located neighbours would tell the two candidates apart.
-// Disabled until the estimate uses it: this is what exact input should give.
-TEST(StartValues, DISABLED_TwoJunctionSensorsAreLocatedExactly) {
+// A sensor with exactly two junctions (a hull sensor) has two candidate positions, the site and
+// the second intersection of its two solution circles, with equal (zero) residuals. Taking the one
+// nearer the cell's centroid was wrong in seeds 1 and 3 (realistic centroids, cells clipped to the
+// map's extent: a hull cell's centroid is pulled away from the other sensors), 4–7 units off with
+// a spacing of 10, and every weight then moved by up to 0.3 in log (Lemma 1 ratios used the wrong
+// position). Lemma 1 across the sensor's located neighbours tells the two candidates apart; exact
+// input must give the sites exactly.
+TEST(StartValues, TwoJunctionSensorsAreLocatedExactly) {
   for (unsigned seed : {1u, 3u}) {
     SCOPED_TRACE(seed);
     const auto sites = grid_layout(false, seed);
