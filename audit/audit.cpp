@@ -99,10 +99,8 @@ AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSen
   StageTimer timer(t0, out.timings);
   timer.lap("cleaning and starting values");
   fitting::RefineResult refined = multi_start_refinement(setup, estimates, start, cells, raster, reported_of, out.messages);
-  if (drop_unfitted_range_edges(setup, refined, cells.area, options, out.cleaned, out.messages)) {
-    refined = refine_from(setup, refined.sites, cells.centroids, out.messages);
-    out.boundary_samples = setup.samples.size();
-  }
+  check_range_edges(setup, refined, cells, options, out.cleaned, out.messages);
+  out.boundary_samples = setup.samples.size();
   out.refinement_summary = refined.summary.brief();
   timer.lap(setup.n <= tolerance::kMultiStartSensors ? "refinement (several starts)" : "refinement");
   progress("verification", 0.7);

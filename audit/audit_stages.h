@@ -101,14 +101,13 @@ fitting::RefineResult multi_start_refinement(const RefinementSetup& setup, const
 // A sensor's outside boundary that cleaning took for a range edge (a circle about the sensor that
 // holds its cell) may be another circle of that shape: the edge of a hole where a cell is missing
 // is a weaker sensor's Apollonius circle against the missing one. Taken for a reach, it pulls the
-// sensor toward the circle's centre, and the sensor's boundaries no longer fit: where a sensor
-// with a range edge has a model-fit ratio (model_fit.h) above kRangeEdgeMisfitRatio, its range
-// samples are dropped from setup.samples and cleaned.range_edges (the edge is then frame), said in
-// messages. True when any was dropped: refine again (a sensor that still misfits then is judged
-// by the model fit as any other).
-bool drop_unfitted_range_edges(RefinementSetup& setup, const fitting::RefineResult& refined, std::span<const double> area,
-                               const AuditOptions& options, cleaning::CleanedMap& cleaned,
-                               std::vector<std::string>& messages);
+// sensor toward the circle's centre, and the sensor's boundaries no longer fit. Where sensors with
+// a range edge have a model-fit ratio (model_fit.h) above kRangeEdgeMisfitRatio, the refinement is
+// tried again without their range edges; the trial is kept (setup.samples, refined and
+// cleaned.range_edges updated, said in messages) only if it then fits every one of them: a sensor
+// held in a bad minimum by something else keeps its true range edge.
+void check_range_edges(RefinementSetup& setup, fitting::RefineResult& refined, const MapCells& cells,
+                       const AuditOptions& options, cleaning::CleanedMap& cleaned, std::vector<std::string>& messages);
 
 // Local re-solves (local_resolve.cpp): every sensor suspected of a local minimum (outside its own
 // cell, a weight far from its neighbours', a merged neighbour, an island cell it hosts, a poorly

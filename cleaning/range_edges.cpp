@@ -150,12 +150,16 @@ void find_range_edges(CleanedMap& map, const MapRings& rings, double snap, doubl
       continue;
     }
     // The raw staircase along the circle found, and the circle refitted to it.
-    if (const Circle* c = std::get_if<Circle>(&edge.fit.curve)) {
+    // Twice: the first circle (of simplified corners) lies ~0.4 bins outside the staircase, and
+    // the band about it would keep more outer corners than inner ones.
+    for (int pass = 0; pass < 2; ++pass) {
+      const Circle* c = std::get_if<Circle>(&edge.fit.curve);
+      if (!c) break;
       std::vector<std::vector<Point>> raw = raw_pieces(rings_of[s], *c, box, snap);
-      if (!raw.empty()) {
-        const FittedCurve refit = fit_circle(raw, huber, line_preference);
-        if (is_reach_of(refit, rings_of[s], snap)) edge.pieces = std::move(raw), edge.fit = refit;
-      }
+      if (raw.empty()) break;
+      const FittedCurve refit = fit_circle(raw, huber, line_preference);
+      if (!is_reach_of(refit, rings_of[s], snap)) break;
+      edge.pieces = std::move(raw), edge.fit = refit;
     }
     map.range_edges.push_back(std::move(edge));
   }

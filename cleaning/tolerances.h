@@ -133,7 +133,8 @@ inline constexpr double kRangeEdgeRms = 1.5;
 // staircase's corners stick out of the true disc by up to ~0.7 bins).
 inline constexpr double kRangeDiscSlack = 3.0;
 // The raw staircase of a range edge: the sensor's ring vertices within this many snap distances of
-// the circle found (its corners lie within ~0.7 bins, 1.4 s, of it; 2 s leaves room for jitter).
-inline constexpr double kRangeEdgeBand = 2.0;
+// the circle found (its corners lie within ~0.7 bins, 1.4 s, of the true circle; the first circle
+// found, of simplified corners, lies up to ~0.4 bins outside it; 3 s keeps both sides' corners).
+inline constexpr double kRangeEdgeBand = 3.0;
 
 }  // namespace covmap::cleaning::tolerance
