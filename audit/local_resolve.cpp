@@ -190,8 +190,14 @@ LocalResult solve_from(const RefinementSetup& setup, const Neighbourhood& nb, co
     // neighbourhood's, when nothing is held).
     const std::size_t from = nb.free < nb.sensors.size() ? nb.free : 0;
     double shift = 0.0;
-    for (std::size_t l = from; l < start.size(); ++l) shift += std::log(start[l].weight) - std::log(r.sites[l].weight);
-    shift /= static_cast<double>(start.size() - from);
+    if (range && r.range) {
+      // The map's R was held: weights are absolute through it (R·w is invariant under the
+      // normalisation), whether or not any sensor was held.
+      shift = std::log(*r.range / *range);
+    } else {
+      for (std::size_t l = from; l < start.size(); ++l) shift += std::log(start[l].weight) - std::log(r.sites[l].weight);
+      shift /= static_cast<double>(start.size() - from);
+    }
     for (Site& site : r.sites) site.weight *= std::exp(shift);
     out.cost = r.summary.final_cost;
     out.sites = std::move(r.sites);

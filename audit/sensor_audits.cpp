@@ -97,7 +97,11 @@ void judge_by_cell(const ReportedSensor& r, std::size_t i, const VerdictInput& v
   const std::string overlaps = "overlaps the mapped cell by " + percent(reported.iou) + " as reported, by " +
                                percent(nearest.iou) + " at the nearest values its stated uncertainty allows (the reconstruction's by " +
                                percent(refined.iou) + ")";
-  if (nearest.iou < tolerance::kPredictedOverlap) {
+  // The overlap a right report can lose against the reconstruction's: its whole boundary moved by
+  // one bin (the map's own resolution), about 4·√A bins of a cell of A bins.
+  const double a = static_cast<double>(refined.mapped_bins);
+  const double allowed_loss = a > 0 ? 1.0 - a / (a + 4.0 * std::sqrt(a)) : 1.0;
+  if (nearest.iou < std::max(tolerance::kPredictedOverlap, refined.iou - allowed_loss)) {
     s.verdict = SensorVerdict::kInconsistent;
     s.reason = "its boundaries do not pin it down, but its predicted cell " + overlaps;
   } else {

@@ -73,7 +73,9 @@ inline constexpr double kHeartbeatSeconds = 5.0;
 // and more overlap by 0.9–1.0 (docs/ACCURACY.md), so 0.8 leaves room for small cells' staircases.
 inline constexpr double kCellModelOverlap = 0.8;
 // ... and the predicted cell of the values nearest the reconstruction that the report's stated
-// uncertainty allows (to the χ² threshold) must overlap it by at least this. Those values differ
+// uncertainty allows (to the χ² threshold) must overlap it as well as the reconstruction's does,
+// but for the loss of moving the cell's whole boundary by one bin (sensor_audits.cpp), and by at
+// least this. Those values differ
 // from a right report's by its stated errors, which near equal weights can still move a small
 // cell's boundary by a bin or two; a gross error of several bins, or of several dB, beyond them
 // halves the overlap.

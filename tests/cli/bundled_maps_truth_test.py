@@ -161,6 +161,18 @@ def judge(name, truth, report):
     if resolved and share > UNDETERMINED_TARGET:
         failures.append(f"{name}: undetermined {len(undetermined)} of {len(resolved)} resolved cells "
                         f"({100 * share:.1f} % > {100 * UNDETERMINED_TARGET:.0f} %): {undetermined}")
+    # The bundled maps were drawn by the multiplicative model: it must be found to fit, no sensor
+    # set aside as a misfit, and a map drawn with a reach must have it back within a bin.
+    fit = report["model_fit"]
+    if fit is None or fit["misfit"]:
+        failures.append(f"{name}: model fit {fit}: the map was drawn by the model")
+    misfits = sorted(s["id"] for s in report["sensors"] if s["verdict"] == "model_misfit")
+    if misfits:
+        failures.append(f"{name}: model_misfit verdicts on a map drawn by the model: {misfits}")
+    reach = truth["generator"].get("max_range_m")
+    got = report["reception"]["range_m"] if report["reception"] else None
+    if (reach is None) != (got is None) or (reach is not None and abs(got - reach) > bin_size):
+        failures.append(f"{name}: reach {got} m, drawn with {reach} m (bin {bin_size} m)")
     return row, failures
 
 
