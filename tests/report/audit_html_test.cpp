@@ -357,5 +357,43 @@ TEST(AuditHtmlText, EscapingAndUtf8Repair) {
   EXPECT_EQ(detail::sort_key(0.1), "0.1");
 }
 
+TEST(AuditHtml, AMisfitMapSaysSoFirstAndNamesItsReach) {
+  // Issue 12: when the map does not follow the model, the page says so before any verdict; the
+  // reception limit is stated with its numbers. The fixture's values are the oracle.
+  AuditFixture f = audit_fixture(false);
+  f.result.model_fit.known = true;
+  f.result.model_fit.ratio = 37.5;
+  f.result.model_fit.reports_median_p = 0.0004;
+  f.result.model_fit.misfit = true;
+  f.result.model_fit.misfit_sensors = 2;
+  f.result.model_fit.misfit_area_share = 0.25;
+  f.result.sensors[0].verdict = audit::SensorVerdict::kModelMisfit;
+  f.result.reception = audit::ReceptionLimit{16008.0, 1.7, -104.2, 26};
+  const std::string html = html_of(context_of(f));
+  const auto fit = html.find("id=\"model-fit\" class=\"misfit\"");
+  ASSERT_NE(fit, std::string::npos);
+  EXPECT_LT(fit, html.find("id=\"summary\""));
+  const std::string text = between(html.substr(fit), ">", "</p>");
+  EXPECT_NE(text.find("does not follow the path-loss model"), std::string::npos) << text;
+  EXPECT_NE(text.find("38 times"), std::string::npos) << text;  // 37.5 shown as a whole number
+  EXPECT_NE(text.find("2 sensors (25.0 %"), std::string::npos) << text;
+  const std::string reach = between(html, "id=\"reception\" class=\"meta\">", "</p>");
+  EXPECT_NE(reach.find("16.0 km"), std::string::npos) << reach;
+  EXPECT_NE(reach.find("26 sensors"), std::string::npos) << reach;
+  EXPECT_NE(reach.find("-104.2 dBm"), std::string::npos) << reach;
+  EXPECT_EQ(count(html, "id=\"count-model-misfit\""), 1u);
+  expect_well_formed(html);
+}
+
+TEST(AuditHtml, AMapThatFitsSaysSoWithoutAlarm) {
+  AuditFixture f = audit_fixture(false);
+  f.result.model_fit.known = true;
+  f.result.model_fit.ratio = 0.81;
+  const std::string html = html_of(context_of(f));
+  EXPECT_NE(html.find("id=\"model-fit\" class=\"meta\""), std::string::npos);
+  EXPECT_EQ(html.find("class=\"misfit\""), std::string::npos);
+  EXPECT_EQ(html.find("id=\"reception\""), std::string::npos);  // no reach: no sentence
+}
+
 }  // namespace
 }  // namespace covmap::report
