@@ -1,5 +1,6 @@
 #include "report/audit_html_text.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -72,6 +73,16 @@ std::string html_escape(std::string_view text) {
 std::string human_number(double value, int significant) {
   if (!std::isfinite(value)) return std::string(kDash);
   char buffer[40];
+  // Fixed notation with `significant` digits for what people read (2 510 m, not 2.51e+03 m); the
+  // exponent form only for the very small and the very large, where it says more in less space.
+  const double magnitude = std::abs(value);
+  if (magnitude == 0.0) return "0";
+  if (magnitude >= 1e-3 && magnitude < 1e15) {
+    const int exponent = static_cast<int>(std::floor(std::log10(magnitude)));
+    const int decimals = std::max(0, significant - 1 - exponent);
+    std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
+    return buffer;
+  }
   std::snprintf(buffer, sizeof buffer, "%.*g", significant, value);
   return buffer;
 }

@@ -13,7 +13,8 @@ namespace covmap::report::detail {
 // what follows in some browsers).
 std::string html_escape(std::string_view text);
 
-// A number for people: `significant` significant digits ("12.3", "0.000123", "1.2e+06"); an en
+// A number for people: `significant` significant digits in fixed notation ("12.3", "2510",
+// "0.00123"); below 10⁻³ and from 10¹⁵ as printf's %g writes them ("0.000123", "1.5e-07"); an en
 // dash for NaN, infinity or nullopt.
 std::string human_number(double value, int significant = 3);
 std::string human_number(const std::optional<double>& value, int significant = 3);

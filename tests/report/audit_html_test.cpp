@@ -353,6 +353,12 @@ TEST(AuditHtmlText, EscapingAndUtf8Repair) {
   EXPECT_EQ(detail::html_escape(std::string("a\0b\x01\tc\n", 7)), "a" + fffd + "b" + fffd + "\tc\n");
   EXPECT_EQ(detail::human_number(std::numeric_limits<double>::quiet_NaN()), "\xE2\x80\x93");
   EXPECT_EQ(detail::human_number(12.345), "12.3");
+  // Issue 13: numbers for people in fixed notation ("2.51e+03 m" was on the page).
+  EXPECT_EQ(detail::human_number(2510.4), "2510");
+  EXPECT_EQ(detail::human_number(-0.012345), "-0.0123");
+  EXPECT_EQ(detail::human_number(0.0), "0");
+  EXPECT_EQ(detail::human_number(1.5e-7), "1.5e-07");  // very small: the exponent says more
+  EXPECT_EQ(detail::human_number(3e20), "3e+20");
   EXPECT_EQ(detail::sort_key(std::nullopt), "");
   EXPECT_EQ(detail::sort_key(0.1), "0.1");
 }
