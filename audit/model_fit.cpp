@@ -7,21 +7,34 @@
 #include <string>
 #include <limits>
 
+#include "audit/audit_stages.h"
 #include "audit/tolerances.h"
 #include "audit/verdict.h"
 
 namespace covmap::audit::stages {
 namespace {
 
-// The free fit's mean square of each sample's chain (map chains, then range-edge pieces in the
-// order boundary_samples.cpp numbers them), floored at the map's own resolution.
-std::vector<double> free_mean_squares(const cleaning::CleanedMap& cleaned, double floor_ms) {
-  std::vector<double> ms;
-  for (const cleaning::BoundaryChain& chain : cleaned.chains) ms.push_back(std::max(chain.fit.rms * chain.fit.rms, floor_ms));
-  for (const cleaning::RangeEdge& edge : cleaned.range_edges)
-    for (std::size_t k = 0; k < edge.pieces.size(); ++k) ms.push_back(std::max(edge.fit.rms * edge.fit.rms, floor_ms));
-  return ms;
-}
+// The free fit's mean square behind each sample, floored at the map's own resolution: its chain's
+// fit for a boundary sample, its sensor's range circle for a range-edge sample (looked up by
+// sensor, so that dropping a sensor's range edge renumbers nothing).
+class FreeMeanSquares {
+ public:
+  FreeMeanSquares(const cleaning::CleanedMap& cleaned, double floor_ms)
+      : range_(cleaned.sensors.size(), std::numeric_limits<double>::quiet_NaN()) {
+    for (const cleaning::BoundaryChain& chain : cleaned.chains) chain_.push_back(std::max(chain.fit.rms * chain.fit.rms, floor_ms));
+    for (const cleaning::RangeEdge& edge : cleaned.range_edges)
+      range_[static_cast<std::size_t>(edge.sensor)] = std::max(edge.fit.rms * edge.fit.rms, floor_ms);
+  }
+  // NaN when unknown (no such chain, or the sensor has no range edge).
+  double of(const fitting::BoundarySample& s) const {
+    if (s.site_b == kNone) return range_[static_cast<std::size_t>(s.site_a)];
+    return s.chain >= 0 && static_cast<std::size_t>(s.chain) < chain_.size() ? chain_[static_cast<std::size_t>(s.chain)]
+                                                                               : std::numeric_limits<double>::quiet_NaN();
+  }
+
+ private:
+  std::vector<double> chain_, range_;
+};
 
 std::string readable_probability(double p) {
   char buffer[32];
@@ -46,14 +59,15 @@ ModelFitResult model_fit(const cleaning::CleanedMap& cleaned, std::span<const fi
   out.sensor_ratio.assign(n, std::numeric_limits<double>::quiet_NaN());
   if (residuals.size() != samples.size() || samples.empty()) return out;
   const double floor = tolerance::kMisfitNoiseFloorBins * bin;
-  const std::vector<double> free_ms = free_mean_squares(cleaned, floor * floor);
+  const FreeMeanSquares free_ms(cleaned, floor * floor);
   std::vector<double> model_sum(n, 0.0), free_sum(n, 0.0);
   std::vector<int> count(n, 0);
   double model_total = 0.0, free_total = 0.0;
   for (std::size_t k = 0; k < samples.size(); ++k) {
     const fitting::BoundarySample& s = samples[k];
-    if (s.chain < 0 || static_cast<std::size_t>(s.chain) >= free_ms.size() || !std::isfinite(residuals[k])) continue;
-    const double r2 = residuals[k] * residuals[k], f = free_ms[static_cast<std::size_t>(s.chain)];
+    const double f = free_ms.of(s);
+    if (!std::isfinite(f) || !std::isfinite(residuals[k])) continue;
+    const double r2 = residuals[k] * residuals[k];
     model_total += r2, free_total += f;
     for (int site : {s.site_a, s.site_b}) {
       if (site == kNone) continue;
@@ -92,7 +106,7 @@ void apply_model_fit(const ModelFitResult& fit, const AuditOptions& options, std
     if (!(ratio > options.model_misfit_ratio) || !s.reported) continue;
     s.verdict = SensorVerdict::kModelMisfit;
     s.basis = VerdictBasis::kModelFit;
-    s.chi2 = {};  // not judged
+    s.chi2 = {};  // χ² is set exactly for verdicts of the boundary fit (audit.h)
     s.reason = "the map around this sensor does not follow the path-loss model: the model draws its boundaries " +
                readable_ratio(ratio) + " times worse (mean square) than free curves do, above the threshold " +
                readable_ratio(options.model_misfit_ratio) + "; not judged";
@@ -107,11 +121,6 @@ double tail_probability(const SensorAudit& s) {
   return chi2_tail(*s.chi2, s.weight_ratio ? 3 : 2);
 }
 
-double median_of(std::vector<double> v) {
-  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-  return v[v.size() / 2];
-}
-
 }  // namespace
 
 void apply_report_fit(std::span<const fitting::BoundarySample> samples, std::span<const double> sensor_area,
@@ -123,7 +132,7 @@ void apply_report_fit(std::span<const fitting::BoundarySample> samples, std::spa
     p[i] = tail_probability(sensors[i]);
     if (std::isfinite(p[i])) judged.push_back(p[i]);
   }
-  if (judged.size() >= tolerance::kMisfitMinJudged) fit.reports_median_p = median_of(judged);
+  if (judged.size() >= tolerance::kMisfitMinJudged) fit.reports_median_p = median(judged);
   std::vector<std::set<int>> neighbours(n);
   for (const fitting::BoundarySample& s : samples)
     if (s.site_b != kNone) neighbours[s.site_a].insert(s.site_b), neighbours[s.site_b].insert(s.site_a);
@@ -134,12 +143,13 @@ void apply_report_fit(std::span<const fitting::BoundarySample> samples, std::spa
     for (int k : neighbours[i])
       if (std::isfinite(p[k])) around.push_back(p[k]);
     if (around.size() < tolerance::kMisfitMinNeighbours) continue;
-    if (const double m = median_of(around); m < tolerance::kMisfitPValue) misfits.push_back({i, m});
+    if (const double m = median(around); m < tolerance::kMisfitPValue) misfits.push_back({i, m});
   }
   for (auto [i, m] : misfits) {
     SensorAudit& s = sensors[i];
     s.verdict = SensorVerdict::kModelMisfit;
     s.basis = VerdictBasis::kModelFit;
+    s.chi2 = {};  // χ² is set exactly for verdicts of the boundary fit (audit.h)
     s.reason = "the reports around this sensor do not follow the path-loss model: its neighbours' reports " +
                std::string("disagree with the map (median χ² tail probability ") + readable_probability(m) +
                ", below " + readable_probability(tolerance::kMisfitPValue) + "), so its own disagreement (" +
@@ -167,6 +177,7 @@ void apply_report_fit(std::span<const fitting::BoundarySample> samples, std::spa
                ") does not stand; not judged";
     s.verdict = SensorVerdict::kModelMisfit;
     s.basis = VerdictBasis::kModelFit;
+    s.chi2 = {};
   }
 }
 

@@ -23,7 +23,11 @@ mapgen::CoverageMapOptions model_options(mapgen::PropagationModel model, std::ui
 void expect_misfit_and_nobody_blamed(const audit::AuditResult& r) {
   EXPECT_TRUE(r.model_fit.misfit) << "ratio " << r.model_fit.ratio << ", reports' median p "
                                   << r.model_fit.reports_median_p.value_or(-1.0);
-  for (const auto& s : r.sensors) EXPECT_NE(s.verdict, audit::SensorVerdict::kInconsistent) << s.id << ": " << s.reason;
+  for (const auto& s : r.sensors) {
+    EXPECT_NE(s.verdict, audit::SensorVerdict::kInconsistent) << s.id << ": " << s.reason;
+    // audit.h: χ² is set exactly for verdicts of the boundary fit, never left over from one undone.
+    EXPECT_EQ(s.chi2.has_value(), s.basis == audit::VerdictBasis::kBoundaryFit) << s.id << ": " << s.reason;
+  }
 }
 
 TEST(ModelMisfit, PerSensorExponentsAreReportedAndNobodyIsBlamed) {
