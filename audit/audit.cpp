@@ -102,6 +102,7 @@ AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSen
   check_range_edges(setup, refined, cells, options, out.cleaned, out.messages);
   out.boundary_samples = setup.samples.size();
   out.refinement_summary = refined.summary.brief();
+  out.refinement_converged = refined.summary.converged;
   timer.lap(setup.n <= tolerance::kMultiStartSensors ? "refinement (several starts)" : "refinement");
   progress("verification", 0.7);
 

@@ -170,7 +170,8 @@ struct AuditResult {
   std::optional<DiagramAgreement> reported_agreement;
   double bin_size_m = 0.0;
   std::size_t boundary_samples = 0;
-  std::string refinement_summary;     // fitting's brief report
+  std::string refinement_summary;     // fitting's brief report (solver words, for analysts)
+  bool refinement_converged = false;  // the solver reached its tolerance (reports say so in plain words)
   std::vector<std::string> messages;  // notable events of each stage, for the report (no times)
   std::vector<StageTiming> timings;   // per stage, in order
   double seconds = 0.0;               // the whole audit

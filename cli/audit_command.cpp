@@ -46,6 +46,19 @@ CLI::App* setup_audit(CLI::App& app, AuditCommandOptions& options) {
   cmd->add_option("--threads", options.threads, "threads of the refinement's covariance (the reports are the same whatever the count)")
       ->check(whole_number_in(1, 64))
       ->capture_default_str();
+  cmd->add_option("--basemap", options.basemap_url,
+                  "tile URL with {z}, {x}, {y} (e.g. https://tile.openstreetmap.org/{z}/{x}/{y}.png) that report.html "
+                  "may draw under a lon/lat map when the reader switches it on; without it the page loads nothing")
+      ->check([](const std::string& url) -> std::string {
+        report::AuditRenderOptions render;
+        render.basemap_url = url;
+        std::string why;
+        if (!render.is_valid(&why)) return "--basemap: " + why.substr(why.find("must"));
+        if (url.rfind("https://", 0) != 0 && url.rfind("http://", 0) != 0 && url.rfind("file://", 0) != 0)
+          return "--basemap: give an http://, https:// or file:// URL";
+        return "";
+      })
+      ->excludes("--planar");
   return cmd;
 }
 
@@ -144,6 +157,7 @@ int run_audit(const AuditCommandOptions& options) {
     const audit::AuditResult result = audit::audit(map.cells, reported, ao);
     report::AuditReportContext context{result, map, options.map_path, options.sensors_path, options.alpha,
                                    options.command_line, &ao};
+    context.render.basemap_url = options.basemap_url;
     std::ostringstream json, html, sensors, diagram;
     say("writing report.json");
     report::write_audit_json(context, json);

@@ -24,6 +24,7 @@ struct AuditCommandOptions {
   bool force = false;                // write into a foreign folder; audit despite plausibility warnings
   bool fail_on_inconsistent = false; // exit 1 when a reported sensor is inconsistent
   int threads = 2;                   // covariance threads (same reports whatever the count)
+  std::string basemap_url;           // report.html's optional tile layer (empty: none, the page stays offline)
   std::string command_line;          // recorded in the reports
 };
 

@@ -1,24 +1,18 @@
-// The map picture of report.html (internal to io/, declared here so tests can check the pieces).
+// The map geometry of report.html (internal to report/, declared here so tests can check the
+// pieces): the map's cells, the recomputed diagrams and the sensors, rounded to a grid and
+// simplified to what a screen can show, for the page's canvas (report/html/report.js draws them).
 //
-// The picture is an inline <svg> whose user units are a grid of AuditRenderOptions::html_grid_px
-// pixels: every coordinate is an integer, y points down, and the view is the map's bounding box
-// widened by html_margin. Polylines and rings are rounded to that grid, consecutive repeats
-// dropped, and simplified (Douglas-Peucker, html_simplify_px), then written as relative path
-// commands, so the size of the picture follows what can be seen rather than the vertex count of
-// the map. Stroke widths stay in screen pixels (vector-effect: non-scaling-stroke), so zooming in
-// by changing the viewBox keeps lines thin.
-//
-// Drawn, bottom to top: the map's cells (fill per sensor, site_colour of the sensor's index in
-// AuditResult::sensors, hover title = sensor); the reported sensors' diagram, dashed, hidden
-// until switched on; the recomputed diagram's frame and boundaries; arrows from reported to
-// reconstructed positions coloured by verdict; reported positions as rings; reconstructed sensors
-// as dots coloured by verdict, with a hover title. Elements more than kFarAway views away from
-// the map are left out (they cannot be seen; the sensor table still lists them), and so are arcs
-// with an end at infinity (only an unclipped diagram has them).
+// The grid: the map's bounding box widened by render.html_margin, html_width_px wide at the
+// nominal size, in units of html_grid_px pixels; every coordinate is an integer, x to the right,
+// y down. Rings and polylines are rounded to it, consecutive repeats dropped, simplified
+// (Douglas-Peucker, html_simplify_px) and written as flat integer arrays [x0, y0, dx1, dy1, ...]
+// (the first point absolute, then steps), so the page's size follows what can be seen rather than
+// the map's vertex count: a 2·10⁶-vertex raster map of 10⁴ cells costs ~0.5 MB. Pieces more than
+// kFarAway views away from the map, or through infinity (only unclipped diagrams have them), are
+// left out whole; the sensor table still lists every sensor.
 #pragma once
 
 #include <cstdint>
-#include <iosfwd>
 #include <span>
 #include <string>
 #include <vector>
@@ -39,15 +33,31 @@ struct GridPoint {
 // points, or an open one that shrinks to a single point, comes back empty.
 std::vector<GridPoint> simplify(std::span<const GridPoint> points, double tolerance, bool closed);
 
-// SVG path data of one simplified polyline ("M12 5l3-4 0 7" plus "z" when closed): an absolute
-// move, then relative line segments.
-std::string grid_path(std::span<const GridPoint> points, bool closed);
+// [x0, y0, x1 - x0, y1 - y0, ...]: one polyline or implicitly closed ring as the page reads it.
+std::vector<std::int64_t> delta_encode(std::span<const GridPoint> points);
 
-// The <svg id="map"> element with everything above.
-void write_audit_map_svg(const AuditReportContext& context, std::ostream& out);
+// The grid of one report: map units to grid units and back.
+struct GridFrame {
+  double xmin = 0.0, ymax = 0.0;
+  double scale = 1.0;  // grid units per map unit
+  std::int64_t width = 1, height = 1;
+
+  GridPoint at(Point p) const;
+  Point map_point(double gx, double gy) const;  // the inverse of at(), without rounding
+  bool drawable(Point p) const;                 // finite and within kFarAway views of the map
+};
+
+GridFrame grid_frame(const AuditReportContext& context);
+
+// Every ring of a cell (outer rings and holes alike: the page fills with the even-odd rule), or
+// every arc of a diagram that is (frame) or is not (!frame) part of its clip frame, encoded as
+// above; empty pieces are left out.
+std::vector<std::vector<std::int64_t>> cell_rings(const GridFrame& f, const AuditRenderOptions& o, const io::MapCell& cell);
+std::vector<std::vector<std::int64_t>> diagram_arcs(const GridFrame& f, const AuditRenderOptions& o, const Diagram& d,
+                                                    bool frame);
 
 // Verdict colours shared by the map, the cards, the legend and the table: green consistent, red
-// inconsistent, grey undetermined, orange not in map, blue unreported.
+// inconsistent, grey undetermined, orange not in map, blue unreported, purple model misfit.
 std::string verdict_colour(audit::SensorVerdict verdict);
 // A CSS class name for the verdict: "v-" and its report name with '-' for '_' ("v-consistent",
 // "v-not-in-map", ...).

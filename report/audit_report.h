@@ -36,6 +36,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "io/coverage_map.h"
 #include "audit/audit.h"
@@ -68,6 +69,14 @@ struct AuditRenderOptions {
   // report.html: polylines are simplified (Douglas-Peucker) so that no dropped vertex lies farther
   // than this from the drawn line, in pixels. This is what keeps a map of 10^4 raster cells small.
   double html_simplify_px = 0.25;
+  // report.html: lon/lat of the cursor and the basemap's tiles are interpolated (bilinearly) on a
+  // grid of this many cells a side over the map's frame; 32 keeps the error of a local projection
+  // over a 500 km region well below a metre.
+  int html_lonlat_grid = 32;
+  // report.html, geographic maps only: a slippy-map tile URL ("https://tile.example/{z}/{x}/{y}.png")
+  // drawn under the map when the reader switches the basemap on (`covmap audit --basemap`). Empty:
+  // no basemap, and the page names no URL at all (it works offline and tells nobody it was opened).
+  std::string basemap_url;
 
   // True if every field is usable; otherwise false, with the reason in *why if why is not null.
   bool is_valid(std::string* why = nullptr) const;
@@ -113,6 +122,18 @@ std::string_view verdict_words(audit::SensorVerdict verdict);
 // people: "0 in the map but not reported, 47 consistent, 5 inconsistent, 6 undetermined (not
 // judged), 0 reported but not in the map".
 std::string verdict_counts_text(const AuditVerdictCounts& counts);
+
+// The order in which sensors need a planner's attention (issue 13), worst first: indices into
+// `sensors`. By verdict: inconsistent, model misfit, reported but not in the map, in the map but
+// not reported, undetermined, consistent; within a verdict by χ² (largest first, none last), then
+// by position error (largest first, only where it was measured), then by id. report.html's list
+// and its table's default order follow it.
+std::vector<std::size_t> sensors_by_severity(std::span<const audit::SensorAudit> sensors);
+// The verdicts a planner should look at: every one but consistent.
+bool needs_attention(audit::SensorVerdict verdict);
+// What a verdict rests on, for people: "the fit of its cell's boundaries", "its cell in the map",
+// "the cell it would serve", "the model fit around it"; empty for VerdictBasis::kNone.
+std::string_view basis_words(audit::VerdictBasis basis);
 
 // The model fit (issue 12) in one sentence for people; empty when it was not measured. When the
 // map does not follow the model it starts "The map does not follow the path-loss model", and every

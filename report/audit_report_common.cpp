@@ -28,6 +28,13 @@ bool AuditRenderOptions::is_valid(std::string* why) const {
   if (!(html_simplify_px >= 0 && html_simplify_px <= 10)) return fail("html_simplify_px must be in [0, 10]");
   // The picture's integer coordinates must stay exact in a double and short in the file.
   if (html_width_px / html_grid_px > 1e7) return fail("html_width_px / html_grid_px must not exceed 1e7");
+  if (!(html_lonlat_grid >= 1 && html_lonlat_grid <= 256)) return fail("html_lonlat_grid must be in [1, 256]");
+  if (!basemap_url.empty()) {
+    for (const char* part : {"{z}", "{x}", "{y}"})
+      if (basemap_url.find(part) == std::string::npos) return fail("basemap_url must contain {z}, {x} and {y}");
+    if (basemap_url.find_first_of("\"<>` \t\n\r") != std::string::npos)
+      return fail("basemap_url must not contain quotes, angle brackets, backquotes or spaces");
+  }
   return true;
 }
 
@@ -59,7 +66,7 @@ std::string_view verdict_words(audit::SensorVerdict verdict) {
     case audit::SensorVerdict::kInconsistent: return "inconsistent";
     case audit::SensorVerdict::kUndetermined: return "undetermined (not judged)";
     case audit::SensorVerdict::kNotInMap: return "reported but not in the map";
-    case audit::SensorVerdict::kModelMisfit: return "model misfit (not judged: the map does not follow the model there)";
+    case audit::SensorVerdict::kModelMisfit: return "model misfit (not judged)";
   }
   throw std::logic_error("verdict_words: a verdict outside the enumeration");
 }

@@ -9,6 +9,8 @@
 #include <set>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 #include "report/audit_html_map.h"
 #include "report/audit_html_text.h"
 #include "report/audit_report.h"
@@ -45,7 +47,7 @@ std::string between(const std::string& text, const std::string& open, const std:
 // whose content is not markup; every '&' starts an entity.
 void expect_well_formed(const std::string& html) {
   std::string markup = std::regex_replace(html, std::regex(R"(<style>[\s\S]*?</style>)"), "");
-  markup = std::regex_replace(markup, std::regex(R"(<script>[\s\S]*?</script>)"), "");
+  markup = std::regex_replace(markup, std::regex(R"(<script[^>]*>[\s\S]*?</script>)"), "");
   static const std::set<std::string> kVoid = {"meta", "input", "br", "img", "link", "hr"};
   std::vector<std::string> open;
   const std::regex tag(R"(<(/?)([A-Za-z!][\w:-]*)[^>]*?(/?)>)");
@@ -62,7 +64,20 @@ void expect_well_formed(const std::string& html) {
     }
   }
   EXPECT_TRUE(open.empty()) << "unclosed <" << (open.empty() ? "" : open.back()) << ">";
-  EXPECT_FALSE(std::regex_search(markup, std::regex(R"(&(?!(amp|lt|gt|quot|#39|alpha|sigma|chi|sup2|rarr);))")));
+  EXPECT_FALSE(std::regex_search(markup, std::regex(R"(&(?!(amp|lt|gt|quot|#39|alpha|sigma|chi|sup2|rarr|minus|times|plusmn|hellip);))")));
+}
+
+// The page's data block (report/audit_html_data.h), parsed as JSON.
+nlohmann::json page_data(const std::string& html) {
+  const std::string open = "<script type=\"application/json\" id=\"report-data\">";
+  const std::string text = between(html, open, "</script>");
+  EXPECT_FALSE(text.empty()) << "no data block";
+  return nlohmann::json::parse(text);
+}
+
+std::size_t verdict_index(audit::SensorVerdict v) {
+  return static_cast<std::size_t>(std::find(std::begin(audit::kAllSensorVerdicts), std::end(audit::kAllSensorVerdicts), v) -
+                                  std::begin(audit::kAllSensorVerdicts));
 }
 
 TEST(AuditHtml, SelfContainedWellFormedPage) {
@@ -70,38 +85,74 @@ TEST(AuditHtml, SelfContainedWellFormedPage) {
   const std::string html = html_of(context_of(f));
   EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
   EXPECT_NE(html.find("</html>"), std::string::npos);
-  EXPECT_EQ(count(html, "<svg"), 1u);
   EXPECT_EQ(count(html, "<style>"), 1u);
-  EXPECT_EQ(count(html, "<script>"), 1u);
+  EXPECT_EQ(count(html, "<script>"), 1u);  // the page's script
+  EXPECT_EQ(count(html, "<script type=\"application/json\" id=\"report-data\">"), 1u);
+  EXPECT_EQ(count(html, "<canvas id=\"map-canvas\""), 1u);
   expect_well_formed(html);
-  // Nothing to fetch: no URL (an xmlns would be the only allowed "http"), no src/href attribute,
-  // no CSS import, url() only for in-page references.
-  EXPECT_EQ(count(html, "http"), count(html, "xmlns=\"http")) << "URL near " << html.substr(std::min(html.find("http"), html.size()), 40);
+  // Nothing to fetch: no URL at all without --basemap, no src/href attribute, no CSS import or url().
+  EXPECT_EQ(count(html, "http"), 0u) << "URL near " << html.substr(std::min(html.find("http"), html.size()), 40);
   EXPECT_FALSE(std::regex_search(html, std::regex(R"(<[^>]*\s(src|href)\s*=)", std::regex::icase)));
   EXPECT_EQ(html.find("@import"), std::string::npos);
-  for (auto at = html.find("url("); at != std::string::npos; at = html.find("url(", at + 1)) {
-    EXPECT_EQ(html.compare(at, 5, "url(#"), 0) << html.substr(at, 40);
-  }
+  EXPECT_EQ(html.find("url("), std::string::npos);
+  EXPECT_EQ(html.find("id=\"basemap-toggle\""), std::string::npos);
+  EXPECT_TRUE(page_data(html)["basemap"].is_null());
 }
 
-TEST(AuditHtml, OneTableRowPerSensorInOrder) {
-  const AuditFixture f = audit_fixture(false);
+// Issue 13: the first screen is the answer. In the page's order: the verdict counts, the map, the
+// list of sensors needing attention; the table after them, the details last and folded.
+TEST(AuditHtml, AnswerFirstDetailsFolded) {
+  const AuditFixture f = audit_fixture(true);
   const std::string html = html_of(context_of(f));
-  const std::string body = between(html, "<tbody>", "</tbody>");
-  EXPECT_EQ(count(body, "<tr"), f.result.sensors.size());
-  std::size_t at = 0;
-  for (const auto& s : f.result.sensors) {
-    const auto found = body.find("<td><code>" + s.id + "</code></td>", at);
-    ASSERT_NE(found, std::string::npos) << s.id;
-    at = found;
+  const auto at = [&](const std::string& what) {
+    const auto p = html.find(what);
+    EXPECT_NE(p, std::string::npos) << what;
+    return p;
+  };
+  EXPECT_LT(at("id=\"count-sensors\""), at("id=\"map-canvas\""));
+  EXPECT_LT(at("id=\"map-canvas\""), at("id=\"attention\""));
+  EXPECT_LT(at("id=\"attention\""), at("id=\"sensor-table\""));
+  EXPECT_LT(at("id=\"sensor-table\""), at("<details id=\"details\">"));
+  EXPECT_LT(at("<details id=\"details\">"), at("id=\"cleaning-repairs\""));
+  // Solver words only among the analysts' notes, inside the folded details.
+  EXPECT_GT(html.find(f.result.refinement_summary), html.find("Notes for analysts"));
+  // The attention list: every sensor but the consistent ones, worst first (b is inconsistent, e
+  // not in the map, c unreported; the fixture's verdicts are the oracle).
+  const std::string list = between(html, "<ol id=\"attention\">", "</ol>");
+  std::vector<std::string> ids;
+  const std::regex item(R"re(data-sensor-id="([^"]*)")re");
+  for (auto it = std::sregex_iterator(list.begin(), list.end(), item); it != std::sregex_iterator(); ++it) ids.push_back((*it)[1]);
+  std::vector<std::string> want;
+  for (const audit::SensorVerdict v : {audit::SensorVerdict::kInconsistent, audit::SensorVerdict::kModelMisfit,
+                                       audit::SensorVerdict::kNotInMap, audit::SensorVerdict::kUnreported,
+                                       audit::SensorVerdict::kUndetermined})
+    for (const auto& s : f.result.sensors)
+      if (s.verdict == v) want.push_back(s.id);
+  EXPECT_EQ(ids, want);
+  EXPECT_NE(html.find("id=\"attention-count\">" + std::to_string(want.size()) + "<"), std::string::npos);
+}
+
+TEST(AuditHtml, EverySensorInTheDataWorstFirst) {
+  const AuditFixture f = audit_fixture(false);
+  const nlohmann::json data = page_data(html_of(context_of(f)));
+  const auto& sensors = data["sensors"];
+  ASSERT_EQ(sensors.size(), f.result.sensors.size());
+  std::set<std::string> ids;
+  for (const auto& s : sensors) ids.insert(s["id"].get<std::string>());
+  for (const auto& s : f.result.sensors) EXPECT_EQ(ids.count(s.id), 1u) << s.id;
+  // Ordered by the documented severity of verdicts.
+  const std::vector<std::size_t> rank = {3, 5, 0, 4, 2, 1};  // by kAllSensorVerdicts index
+  for (std::size_t i = 1; i < sensors.size(); ++i)
+    EXPECT_LE(rank[sensors[i - 1]["verdict"].get<std::size_t>()], rank[sensors[i]["verdict"].get<std::size_t>()]) << i;
+  // The numbers behind the verdict, exact; unknown ones null, never NaN or a made-up 0.
+  for (const auto& s : sensors) {
+    if (s["id"] == "b") {
+      EXPECT_EQ(s["chi2"], 412.0);
+      EXPECT_EQ(s["moved"], 100.0);
+      EXPECT_EQ(s["verdict"], verdict_index(audit::SensorVerdict::kInconsistent));
+    }
+    if (s["id"] == "c") EXPECT_TRUE(s["chi2"].is_null());  // unreported
   }
-  // Sortable: every header cell says how to sort, numeric cells carry exact values.
-  const std::string head = between(html, "<thead>", "</thead>");
-  EXPECT_EQ(count(head, "<th data-type="), count(head, "<th"));
-  EXPECT_NE(body.find("data-v=\"412\""), std::string::npos);  // b's chi2
-  EXPECT_NE(body.find("data-v=\"100\""), std::string::npos);  // b's position error
-  EXPECT_EQ(body.find("data-v=\"nan"), std::string::npos);
-  EXPECT_EQ(body.find("data-v=\"inf"), std::string::npos);
 }
 
 TEST(AuditHtml, SummaryCountsVerdicts) {
@@ -122,18 +173,18 @@ TEST(AuditHtml, SummaryCountsVerdicts) {
   EXPECT_NE(html.find("id=\"count-unreported\">" + std::to_string(unreported) + "<"), std::string::npos);
   EXPECT_NE(html.find("id=\"cleaning-repairs\">28<"), std::string::npos);
   EXPECT_NE(html.find(f.map.projection->description()), std::string::npos);
-  EXPECT_NE(html.find("0.975"), std::string::npos);  // refined mean IoU
+  EXPECT_NE(html.find("97.50 %"), std::string::npos);  // refined mean IoU 0.975
 }
 
 // Issue 12: the page called undetermined sensors "other verdict" and left them out of the legend.
-// Every verdict has a card with its count (zero included), its words in the legend, and the cards
-// add up to the sensors.
-TEST(AuditHtml, EveryVerdictNamedCountedAndInTheLegend) {
+// Every verdict has a card with its count (zero included); the legend names exactly the verdicts
+// drawn on the map (issue 13), and the cards add up to the sensors.
+TEST(AuditHtml, EveryVerdictNamedCountedAndTheLegendMatchesTheMap) {
   const AuditFixture f = testing::audit_fixture_with_undetermined(true);
   const std::string html = html_of(context_of(f));
   EXPECT_EQ(html.find("other verdict"), std::string::npos);
   EXPECT_EQ(html.find("v-other"), std::string::npos);
-  const std::string legend = between(html, "<p class=\"legend\">", "</p>");
+  const std::string legend = between(html, "<ul id=\"map-legend\" class=\"legend\">", "</ul>");
   std::size_t total = 0;
   for (const audit::SensorVerdict v : audit::kAllSensorVerdicts) {
     const std::string name = std::regex_replace(std::string(audit::to_string(v)), std::regex("_"), "-");
@@ -142,42 +193,114 @@ TEST(AuditHtml, EveryVerdictNamedCountedAndInTheLegend) {
         f.result.sensors.begin(), f.result.sensors.end(), [&](const audit::SensorAudit& a) { return a.verdict == v; }));
     EXPECT_NE(html.find("id=\"count-" + name + "\">" + std::to_string(want) + "</b>" + words + "<"), std::string::npos)
         << name;
-    EXPECT_NE(legend.find(words), std::string::npos) << name;
+    EXPECT_EQ(legend.find("data-symbol=\"" + std::string(audit::to_string(v)) + "\"") != std::string::npos, want > 0) << name;
     EXPECT_NE(html.find(".card.v-" + name + "{"), std::string::npos) << name;  // styled like the legend
     total += want;
   }
   EXPECT_EQ(total, f.result.sensors.size());
   EXPECT_NE(html.find("id=\"count-undetermined\">1<"), std::string::npos);
-  // The undetermined sensor's row has no χ² (an empty cell), not 0.
-  const std::string row = between(html, "<tr class=\"v-undetermined\">", "</tr>");
-  ASSERT_FALSE(row.empty());
-  std::vector<std::string> cells;
-  const std::regex cell(R"(<td[^>]*>)");
-  for (auto it = std::sregex_iterator(row.begin(), row.end(), cell); it != std::sregex_iterator(); ++it)
-    cells.push_back(it->str());
-  ASSERT_GT(cells.size(), 5u);
-  EXPECT_EQ(cells[5], "<td class=\"n\" data-v=\"\">") << row;  // column 6: χ²
+  // The undetermined sensor has no χ² (null), not 0.
+  bool seen = false;
+  const nlohmann::json data = page_data(html);
+  for (const auto& s : data["sensors"]) {
+    if (s["verdict"] != verdict_index(audit::SensorVerdict::kUndetermined)) continue;
+    EXPECT_TRUE(s["chi2"].is_null());
+    seen = true;
+  }
+  EXPECT_TRUE(seen);
 }
 
-TEST(AuditHtml, MapShowsCellsBoundariesArrowsAndDots) {
+// Reads an encoded polyline [x0, y0, dx, dy, ...] back into points.
+std::vector<GridPoint> decode(const nlohmann::json& encoded) {
+  std::vector<GridPoint> out;
+  for (std::size_t i = 0; i + 1 < encoded.size(); i += 2) {
+    const std::int64_t x = encoded[i], y = encoded[i + 1];
+    out.push_back(out.empty() ? GridPoint{x, y} : GridPoint{out.back().x + x, out.back().y + y});
+  }
+  return out;
+}
+
+TEST(AuditHtml, MapDataHoldsCellsBoundariesAndMarks) {
   const AuditFixture f = audit_fixture(false);
-  const std::string html = html_of(context_of(f));
-  const std::string svg = between(html, "<svg", "</svg>");
-  EXPECT_EQ(count(between(svg, "id=\"layer-cells\"", "</g>"), "<path"), f.map.cells.size());
-  EXPECT_EQ(count(svg, "<line class=\"shift v-consistent\""), 2u);    // a, d
-  EXPECT_EQ(count(svg, "<line class=\"shift v-inconsistent\""), 1u);  // b
-  EXPECT_EQ(count(svg, "<circle class=\"sensor "), 4u);               // in the map: a-d
-  EXPECT_EQ(count(svg, "<circle class=\"reported "), 4u);             // reported: a, b, d, e
-  // Green and red arrows, as the brief asks.
-  EXPECT_NE(svg.find("class=\"shift v-consistent\" x1"), std::string::npos);
-  EXPECT_NE(between(svg, "<line class=\"shift v-inconsistent\"", ">").find("stroke=\"#d73027\""), std::string::npos);
-  EXPECT_NE(between(svg, "<line class=\"shift v-consistent\"", ">").find("stroke=\"#1a9850\""), std::string::npos);
-  const std::string boundaries = between(svg, "class=\"boundaries\" d=\"", "\"");
+  const nlohmann::json data = page_data(html_of(context_of(f)));
+  EXPECT_EQ(data["cells"].size(), f.map.cells.size());
+  std::size_t dots = 0, rings = 0, arrows = 0;
+  for (const auto& s : data["sensors"]) {
+    dots += !s["x"].is_null();
+    rings += !s["rx"].is_null();
+    arrows += !s["x"].is_null() && !s["rx"].is_null();
+  }
+  EXPECT_EQ(dots, 4u);    // in the map: a-d
+  EXPECT_EQ(rings, 4u);   // reported: a, b, d, e
+  EXPECT_EQ(arrows, 3u);  // a, b, d
   std::size_t bisector_arcs = 0;
   for (const auto& arc : f.result.refined_diagram.arcs) bisector_arcs += arc.frame ? 0 : 1;
-  EXPECT_EQ(count(boundaries, "M"), bisector_arcs);  // one subpath per arc (b|a, b|c, b|d)
-  EXPECT_GT(count(between(svg, "class=\"frame\" d=\"", "\""), "M"), 3u);
-  EXPECT_NE(svg.find("<title>b \xE2\x80\x94 inconsistent"), std::string::npos);
+  EXPECT_EQ(data["boundaries"].size(), bisector_arcs);  // one polyline per arc (b|a, b|c, b|d)
+  EXPECT_GT(data["frame"].size(), 3u);
+  // Every cell ring lies on the grid, inside the frame's margin, and each cell names its sensor.
+  const std::int64_t w = data["grid"]["w"], h = data["grid"]["h"];
+  for (const auto& cell : data["cells"]) {
+    const std::size_t s = cell[0];
+    ASSERT_LT(s, data["sensors"].size());
+    for (std::size_t r = 1; r < cell.size(); ++r)
+      for (const GridPoint& p : decode(cell[r])) {
+        EXPECT_GE(p.x, 0);
+        EXPECT_LE(p.x, w);
+        EXPECT_GE(p.y, 0);
+        EXPECT_LE(p.y, h);
+      }
+  }
+  // A sensor's grid position maps back to its map position within half a grid unit.
+  const double m = data["grid"]["m"], x0 = data["grid"]["x0"], y0 = data["grid"]["y0"];
+  for (const auto& s : data["sensors"]) {
+    if (s["x"].is_null()) continue;
+    const auto& truth = *std::find_if(f.result.sensors.begin(), f.result.sensors.end(),
+                                      [&](const audit::SensorAudit& a) { return a.id == s["id"]; });
+    EXPECT_NEAR(x0 + s["x"].get<double>() * m, truth.position.x, 0.51 * m);
+    EXPECT_NEAR(y0 - s["y"].get<double>() * m, truth.position.y, 0.51 * m);
+  }
+}
+
+// Geographic maps carry a lon/lat grid for the cursor's coordinates: checked here against the
+// projection's own inverse at points between the nodes.
+TEST(AuditHtml, GeographicMapsCarryLonLatForTheCursor) {
+  const AuditFixture f = audit_fixture(true);
+  const nlohmann::json data = page_data(html_of(context_of(f)));
+  const auto& L = data["lonlat"];
+  ASSERT_FALSE(L.is_null());
+  const int n = L["n"];
+  const double w = data["grid"]["w"], h = data["grid"]["h"], m = data["grid"]["m"], x0 = data["grid"]["x0"], y0 = data["grid"]["y0"];
+  for (const double u : {0.13, 0.5, 0.77}) {
+    for (const double v : {0.21, 0.64}) {
+      const double gx = u * w, gy = v * h, fu = u * n - std::floor(u * n), fv = v * n - std::floor(v * n);
+      const int i = static_cast<int>(std::floor(u * n)), j = static_cast<int>(std::floor(v * n));
+      const auto at = [&](const nlohmann::json& a, int ii, int jj) { return a[jj * (n + 1) + ii].get<double>(); };
+      const auto mix = [&](const nlohmann::json& a) {
+        return (1 - fv) * ((1 - fu) * at(a, i, j) + fu * at(a, i + 1, j)) + fv * ((1 - fu) * at(a, i, j + 1) + fu * at(a, i + 1, j + 1));
+      };
+      const io::LonLat truth = f.map.projection->inverse({x0 + gx * m, y0 - gy * m});
+      EXPECT_NEAR(mix(L["lon"]), truth.lon, 1e-5);  // about a metre
+      EXPECT_NEAR(mix(L["lat"]), truth.lat, 1e-5);
+    }
+  }
+}
+
+TEST(AuditHtml, ABasemapOnlyWhenAskedAndOnlyForGeographicMaps) {
+  AuditFixture f = audit_fixture(true);
+  AuditReportContext c = context_of(f);
+  c.render.basemap_url = "https://tiles.example/{z}/{x}/{y}.png";
+  std::string html = html_of(c);
+  EXPECT_NE(html.find("id=\"basemap-toggle\""), std::string::npos);
+  EXPECT_EQ(page_data(html)["basemap"]["url"], c.render.basemap_url);
+  c.render.basemap_url = "https://tiles.example/{z}/{x}.png";  // no {y}
+  std::ostringstream out;
+  EXPECT_THROW(write_audit_html(c, out), std::invalid_argument);
+  AuditFixture planar = audit_fixture(false);
+  AuditReportContext p = context_of(planar);
+  p.render.basemap_url = "https://tiles.example/{z}/{x}/{y}.png";
+  html = html_of(p);
+  EXPECT_EQ(html.find("id=\"basemap-toggle\""), std::string::npos);
+  EXPECT_TRUE(page_data(html)["basemap"].is_null());
 }
 
 TEST(AuditHtml, EscapesEveryStringFromInput) {
@@ -185,16 +308,22 @@ TEST(AuditHtml, EscapesEveryStringFromInput) {
   AuditFixture f = audit_fixture(false, evil);
   f.result.messages.push_back("<b>bold</b>");
   f.result.sensors[1].reason = "<img onerror=alert(1)>";
+  f.result.sensors[0].verdict = audit::SensorVerdict::kInconsistent;  // listed by id in the attention list
   AuditReportContext c = context_of(f);
   c.map_file = "<evil>.geojson";
   c.command_line = "covmap audit \"<evil>.geojson\"";
   const std::string html = html_of(c);
-  EXPECT_EQ(count(html, "<script"), 1u);  // only the page's own
+  EXPECT_EQ(count(html, "<script"), 2u);  // only the page's own: its data and its script
   EXPECT_EQ(html.find("<img"), std::string::npos);
   EXPECT_EQ(html.find("<b>bold"), std::string::npos);
   EXPECT_EQ(html.find("<evil>"), std::string::npos);
   const std::string escaped = "&lt;script&gt;alert(&quot;x&quot;)&lt;/script&gt;&amp;&#39;";
-  EXPECT_GE(count(html, escaped), 3u);  // table row, cell title, dot title
+  EXPECT_GE(count(html, escaped), 1u);  // the attention list
+  // In the data block the strings survive intact once parsed.
+  bool found = false;
+  const nlohmann::json data = page_data(html);
+  for (const auto& s : data["sensors"]) found = found || s["id"] == evil;
+  EXPECT_TRUE(found);
   expect_well_formed(html);
 }
 
@@ -239,12 +368,12 @@ TEST(AuditHtml, LargeMapStaysSmall) {
   }
   ASSERT_EQ(vertices, 2'000'000u);
   const std::string html = html_of(context_of(f));
-  const std::string cells = between(html, "id=\"layer-cells\"", "</g>");
-  EXPECT_EQ(count(cells, "<path"), static_cast<std::size_t>(kSide * kSide));
-  // A square drawn as 4 corners costs about 80 bytes with its <path> and <title>; 200 vertices
-  // written as they are would cost well over 1000.
-  EXPECT_LT(cells.size(), 150u * kSide * kSide);
-  EXPECT_LT(html.size(), 2'000'000u);
+  const nlohmann::json data = page_data(html);
+  EXPECT_EQ(data["cells"].size(), static_cast<std::size_t>(kSide * kSide));
+  // A square kept as its 4 corners costs about 40 bytes; 200 vertices written as they are would
+  // cost well over 1000.
+  EXPECT_LT(data["cells"].dump().size(), 60u * kSide * kSide);
+  EXPECT_LT(html.size(), 1'000'000u);
 }
 
 // ------------------------------------------------------------------------------ building blocks
@@ -306,40 +435,11 @@ TEST(AuditSimplify, ClosedRingsKeepCornersAndDropNoise) {
   EXPECT_TRUE(detail::simplify(std::vector<GridPoint>{{3, 3}, {3, 3}}, 0.0, false).empty());
 }
 
-// Reads "M x y l dx dy dx dy ... [z]" back into absolute points.
-std::vector<GridPoint> parse_grid_path(const std::string& d, bool& closed) {
-  const std::string spaced = std::regex_replace(std::regex_replace(d, std::regex(R"(([Mlz]))"), " $1 "), std::regex("-"), " -");
-  std::istringstream in(spaced);
-  std::string token;
-  std::vector<GridPoint> out;
-  closed = false;
-  std::vector<long long> numbers;
-  while (in >> token) {
-    if (token == "M" || token == "l") continue;
-    if (token == "z") {
-      closed = true;
-      continue;
-    }
-    numbers.push_back(std::stoll(token));
-  }
-  EXPECT_EQ(numbers.size() % 2, 0u);
-  for (std::size_t i = 0; i + 1 < numbers.size(); i += 2) {
-    if (out.empty()) out.push_back({numbers[i], numbers[i + 1]});
-    else out.push_back({out.back().x + numbers[i], out.back().y + numbers[i + 1]});
-  }
-  return out;
-}
-
-TEST(AuditGridPath, RelativeCommandsRoundTrip) {
+TEST(AuditDeltaEncode, StepsRoundTrip) {
   const std::vector<GridPoint> points{{12, 5}, {15, 1}, {15, 8}, {-4, -9}, {0, 0}, {1000000, -3}};
-  for (const bool close : {false, true}) {
-    const std::string d = detail::grid_path(points, close);
-    EXPECT_EQ(d.front(), 'M');
-    bool closed = false;
-    EXPECT_EQ(parse_grid_path(d, closed), points) << d;
-    EXPECT_EQ(closed, close);
-  }
-  EXPECT_EQ(detail::grid_path(std::vector<GridPoint>{{12, 5}, {15, 1}, {15, 8}}, true), "M12 5l3-4 0 7z");
+  const std::vector<std::int64_t> encoded = detail::delta_encode(points);
+  EXPECT_EQ(decode(nlohmann::json(encoded)), points);
+  EXPECT_EQ(detail::delta_encode(std::vector<GridPoint>{{12, 5}, {15, 1}, {15, 8}}), (std::vector<std::int64_t>{12, 5, 3, -4, 0, 7}));
 }
 
 TEST(AuditHtmlText, EscapingAndUtf8Repair) {
