@@ -1,6 +1,8 @@
 #include "report/audit_html_data.h"
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -17,7 +19,16 @@ namespace {
 
 using Json = nlohmann::json;
 
-Json number(const std::optional<double>& v) { return v && std::isfinite(*v) ? Json(*v) : Json(nullptr); }
+// Numbers for people and for sorting: six significant digits are more than the page ever shows
+// (report.json keeps every bit) and take half the bytes of a shortest round-trip double.
+constexpr int kDisplayDigits = 6;
+
+Json number(const std::optional<double>& v) {
+  if (!v || !std::isfinite(*v)) return nullptr;
+  char text[32];
+  std::snprintf(text, sizeof text, "%.*g", kDisplayDigits, *v);
+  return std::strtod(text, nullptr);
+}
 Json number_if(bool known, double v) { return number(known ? std::optional<double>(v) : std::nullopt); }
 
 // The sensor's name for people (issue 13); empty when no input gave one.
