@@ -80,6 +80,7 @@ class MapTooLarge : public std::invalid_argument {
 
 struct SensorAudit {
   std::string id;
+  std::string name;                   // the reported name, else the map's (its first cell with one), else empty
   bool in_map = true;                 // false: reported, but no cell of the map names it
   Point position;            // reconstructed (refined), map units
   double weight = 1.0;                // largest = 1

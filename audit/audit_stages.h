@@ -41,6 +41,7 @@ struct MapCells {
   std::unordered_map<std::string, int> index;  // sensor name -> index in cleaned.sensors
   std::vector<double> area, cx, cy;            // per sensor: signed area, area-weighted x and y sums
   std::vector<Point> centroids;                // per sensor: its cells' centroid (box centre if none)
+  std::vector<std::string> names;              // per sensor: the first non-empty name its cells give
   std::vector<int> cell_sensor;                // per cell of the map: its sensor (kNone if unknown)
   Box box;                                     // of every cell's outer rings
 };

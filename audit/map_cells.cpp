@@ -39,9 +39,12 @@ MapCells map_cells(std::span<const CoverageCell> map, const cleaning::CleanedMap
   std::vector<double>& cy = out.cy;
   area.assign(n, 0.0), cx.assign(n, 0.0), cy.assign(n, 0.0);
   Box& box = out.box;
+  out.names.resize(n);
   for (const CoverageCell& cell : map) {
     const int s = index.count(cell.sensor) ? index[cell.sensor] : kNone;
     out.cell_sensor.push_back(s);
+    // Cells of one sensor may disagree on its name; the first wins (io/coverage_map.h).
+    if (s != kNone && out.names[s].empty()) out.names[s] = cell.name;
     for (const CellPolygon& p : cell.polygons) {
       for (const Point& q : p.outer) box.add(q);
       if (s == kNone) continue;

@@ -230,13 +230,17 @@ std::vector<SensorAudit> sensor_audits(const cleaning::CleanedMap& cleaned, cons
       const double a = u.sigma_x * u.sigma_x, b = u.sigma_y * u.sigma_y, c = u.cov_xy;
       s.sigma_position_m = std::sqrt(0.5 * (a + b) + std::sqrt(0.25 * (a - b) * (a - b) + c * c));
     }
-    if (auto it = reported_of.find(static_cast<int>(i)); it != reported_of.end()) judge_reported(*it->second, i, u, context, s);
+    const auto it = reported_of.find(static_cast<int>(i));
+    // The operator's name for the sensor first: the map's is often an export's label.
+    s.name = it != reported_of.end() && !it->second->name.empty() ? it->second->name : cells.names[i];
+    if (it != reported_of.end()) judge_reported(*it->second, i, u, context, s);
     sensors.push_back(std::move(s));
   }
   for (const ReportedSensor& r : reported) {
     if (cells.index.count(r.id)) continue;
     SensorAudit s;
     s.id = r.id;
+    s.name = r.name;
     s.in_map = false;
     s.position = r.position;
     s.reported = r;

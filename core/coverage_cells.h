@@ -21,6 +21,7 @@ struct CoverageCell {
   std::string sensor;                 // the serving sensor's id
   int feature = 0;                    // index in the input file, for messages
   std::vector<CellPolygon> polygons;
+  std::string name;                   // the sensor's human name as the feature gives it; may be empty
 };
 
 }  // namespace covmap

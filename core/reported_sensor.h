@@ -11,6 +11,7 @@ namespace covmap {
 
 struct ReportedSensor {
   std::string id;
+  std::string name;                        // a human name as read ("Zollikofen"); empty when absent
   Point position;                          // planar map units (metres; projected if geographic)
   std::optional<double> lon, lat;          // as read, for geographic input
   std::optional<double> weight;            // as read, or derived from the power and alpha

@@ -31,10 +31,13 @@ struct FeatureDraft {
   int index = 0;
   std::string label;  // "features[3] (sensor 'a')", or "features[3]" until the sensor is known
   std::string sensor;
+  std::string name;    // properties.name, or the sensor id when that is the sensor property
   bool multi = false;  // a MultiPolygon: messages then name the polygon
   std::vector<RawPolygon> polygons;
   std::vector<std::string> problems;
 };
+
+constexpr const char* kNameProperty = "name";  // the feature property holding a sensor's human name
 
 std::string quoted(const std::string& text) { return "\"" + text + "\""; }
 
@@ -45,6 +48,19 @@ std::string pair_text(Point p) {
   out += detail::format_number(p.y);
   out += ')';
   return out;
+}
+
+// The sensor's human name from properties.name: a string, or absent or null (no name). When the
+// sensor property is itself "name", that value is the id and also the name.
+void read_name(const Json& properties, const std::string& sensor_property, FeatureDraft& draft) {
+  if (sensor_property == kNameProperty) {
+    draft.name = draft.sensor;
+    return;
+  }
+  const Json* value = detail::optional_member(properties, kNameProperty);
+  if (!value || value->is_null()) return;
+  if (value->is_string()) draft.name = value->get<std::string>();
+  else draft.problems.push_back("property " + quoted(kNameProperty) + " must be a string (got " + detail::describe(*value) + ")");
 }
 
 // The sensor named by `property`, or a problem saying why there is none.
@@ -78,6 +94,7 @@ void read_sensor(const Json& feature, const std::string& property, FeatureDraft&
   } catch (const FieldError& e) {
     draft.problems.push_back("property " + quoted(property) + " " + e.message);
   }
+  read_name(*properties, property, draft);
 }
 
 // Reads one ring into `out`. Stops at the first malformed position; reports lon/lat out of range
@@ -304,6 +321,7 @@ CoverageMap parse_coverage_map(std::string_view text, const std::string& file, c
     if (check_geometry && usable(d)) {
       MapCell cell;
       cell.sensor = d.sensor;
+      cell.name = d.name;
       cell.feature = d.index;
       for (std::size_t k = 0; k < d.polygons.size(); ++k) {
         std::vector<detail::RingInput> rings;

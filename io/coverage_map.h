@@ -4,9 +4,13 @@
 // feature's geometry is a Polygon or MultiPolygon; its properties name the serving sensor under
 // options.sensor_property (a non-empty string, or an integer, kept as its decimal text). Several
 // features may name the same sensor (a sensor's area may come in pieces); they stay separate
-// MapCells. Positions are [lon, lat] in degrees (extra values such as altitude are ignored), or
-// planar [x, y] with options.planar. A legacy "crs" member is accepted only as described in
-// io/geojson_crs.h. Unknown members are ignored.
+// MapCells. A feature may give the sensor's human name as the string property "name" (null or
+// absent: no name), kept in the cell's `name`; with sensor_property "name" the id is the name.
+// Names are not checked across features: when the cells of one sensor give different names, the
+// map is read all the same and the audit uses the first non-empty one in file order. Positions
+// are [lon, lat] in degrees (extra values such as altitude are ignored), or planar [x, y] with
+// options.planar. A legacy "crs" member is accepted only as described in io/geojson_crs.h.
+// Unknown members are ignored.
 //
 // Guaranteed on success: at least one cell; every cell has at least one polygon; every ring has at
 // least 3 vertices, finite coordinates, no two consecutive vertices equal, no repeated closing
@@ -27,7 +31,8 @@
 // a double, the only way a JSON file can hold a non-finite coordinate); a top level that is not a
 // FeatureCollection; no features; a feature that is not a Feature or has no Polygon/MultiPolygon
 // geometry (other geometry types are named); a missing, empty, or non-string/non-integer sensor
-// property (the message lists the properties that do exist); malformed coordinates; rings not
+// property (the message lists the properties that do exist); a "name" property that is not a
+// string; malformed coordinates; rings not
 // closed (RFC 7946: the last position repeats the first); rings with fewer than 3 distinct
 // vertices, zero area, or doubling back at their lowest vertex; lon/lat out of range without
 // --planar ("coordinates look planar (x=...); use --planar"); self-crossing rings; and mixed or

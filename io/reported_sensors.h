@@ -4,13 +4,13 @@
 // Accepted (docs/FORMATS.md, "Coverage maps and reported sensors", has the full grammar):
 //   JSON     {"format":"covmap.sites/1","sites":[{"id":"a","x":0,"y":0,"weight":1}, ...]}, where
 //            each entry may give lon/lat instead of x/y, and tx_power_dbm instead of or besides
-//            weight, and optionally position_sigma_m and power_sigma_db (null = not given).
+//            weight, and optionally name, position_sigma_m and power_sigma_db (null = not given).
 //   CSV      a header naming id; x and y, or lon and lat; weight and/or tx_power_dbm; optionally
-//            position_sigma_m and power_sigma_db (any order, case-insensitive, other columns
+//            name, position_sigma_m and power_sigma_db (any order, case-insensitive, other columns
 //            ignored); then one sensor per row. An empty optional field is "not given". Blank lines
 //            and lines starting with # are skipped; fields may be double-quoted.
 //   GeoJSON  a FeatureCollection of Point features; the id is properties.id, else properties.sensor,
-//            else the feature's "id" member; weight, tx_power_dbm and the sigmas are properties.
+//            else the feature's "id" member; name, weight, tx_power_dbm and the sigmas are properties.
 //            Positions are [lon, lat] unless options.planar ([x, y]); crs as in io/geojson_crs.h.
 // Chosen by extension (.csv, .geojson, .json), otherwise by content: JSON with a "format" member is
 // covmap.sites/1, JSON with a "type" is GeoJSON, anything else CSV.
@@ -25,13 +25,18 @@
 // set; x/y input is used as is and requires a planar map (options.projection null): mixing a
 // planar sensor file with a lon/lat map would silently put the sensors in the wrong place.
 //
+// Names: a sensor's human name ("Zollikofen") is optional text kept as read in ReportedSensor::name
+// (empty when absent, null or an empty field); names need not be unique and are never used to
+// match sensors (ids are). In JSON it must be a string: a number or anything else is a problem.
+//
 // Guaranteed on success: at least one sensor; ids unique and non-empty; positions finite, lon/lat
 // in range, and no two sensors at the same position as read; weight set, finite and > 0; powers
 // finite; sigmas finite and > 0. Sensors keep file order.
 //
 // Rejected with one InputError listing every problem, each naming the line (CSV) or JSON path
 // ("sites[3]", "features[3]") and the sensor id: unreadable file, invalid JSON, wrong format tag,
-// bad header, missing or malformed fields, values out of range, "tx_power_dbm needs --alpha",
+// bad header, missing or malformed fields (a JSON name that is not a string, text that is not
+// UTF-8), values out of range, "tx_power_dbm needs --alpha",
 // lon/lat without a projection, x/y against a lon/lat map, duplicate ids and duplicate positions
 // (naming both sensors). Invalid options (alpha not finite and > 0, or planar together with a
 // projection) are a caller's mistake and throw std::invalid_argument.

@@ -11,9 +11,9 @@
 namespace covmap::io::detail {
 namespace {
 
-enum Column : std::size_t { kId, kX, kY, kLon, kLat, kWeight, kPower, kPositionSigma, kPowerSigma, kColumnCount };
+enum Column : std::size_t { kId, kName, kX, kY, kLon, kLat, kWeight, kPower, kPositionSigma, kPowerSigma, kColumnCount };
 constexpr std::array<std::string_view, kColumnCount> kNames = {
-    "id", "x", "y", "lon", "lat", "weight", "tx_power_dbm", "position_sigma_m", "power_sigma_db"};
+    "id", "name", "x", "y", "lon", "lat", "weight", "tx_power_dbm", "position_sigma_m", "power_sigma_db"};
 constexpr std::size_t kAbsent = static_cast<std::size_t>(-1);
 
 // Splits one line at commas into trimmed fields; a field may be double-quoted ("" is a quote) to
@@ -138,6 +138,10 @@ SensorDraft read_row(const std::vector<std::string>& fields, const ColumnIndex& 
   if (const std::string* id = required(kId)) {
     if (valid_utf8(*id)) d.sensor.id = *id;
     else d.problems.push_back("id is not valid UTF-8");
+  }
+  if (const std::string* name = field(kName)) {  // optional; empty is "not given"
+    if (valid_utf8(*name)) d.sensor.name = *name;
+    else d.problems.push_back("name is not valid UTF-8");
   }
   if (at[kX] != kAbsent) {
     const auto x = number(kX, true), y = number(kY, true);

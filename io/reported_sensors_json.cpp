@@ -20,6 +20,15 @@ std::optional<double> optional_number(const Json& object, const char* key, const
   }
 }
 
+// The optional human name: a string, or left out or null (no name). Anything else is a problem
+// rather than text made up from it: a number where a name belongs usually means shifted columns.
+void read_name(const Json& object, const std::string& prefix, SensorDraft& d) {
+  const Json* value = optional_member(object, "name");
+  if (!value || value->is_null()) return;
+  if (value->is_string()) d.sensor.name = value->get<std::string>();
+  else d.problems.push_back(member_path(prefix, "name") + " must be a string (got " + describe(*value) + ")");
+}
+
 void read_strengths(const Json& object, const std::string& prefix, SensorDraft& d) {
   d.sensor.weight = optional_number(object, "weight", prefix, d);
   d.sensor.tx_power_dbm = optional_number(object, "tx_power_dbm", prefix, d);
@@ -120,6 +129,7 @@ std::vector<SensorDraft> parse_sensors_sites_json(const Json& root, const std::s
     } catch (const FieldError& e) {
       d.problems.push_back(phrase(e));
     }
+    read_name(entry, "", d);
     read_position(entry, d);
     read_strengths(entry, "", d);
   }
@@ -165,7 +175,10 @@ std::vector<SensorDraft> parse_sensors_geojson(const Json& root, const std::stri
     if (properties && properties->is_null()) properties = nullptr;
     read_geojson_id(feature, properties, d);
     read_point(feature, planar, d);
-    if (properties) read_strengths(*properties, "properties", d);
+    if (properties) {
+      read_name(*properties, "properties", d);
+      read_strengths(*properties, "properties", d);
+    }
   }
   file_problems = crs.problems(planar);
   return drafts;

@@ -53,6 +53,7 @@ json sensor_properties(const audit::SensorAudit& s, const io::CoverageMap& map) 
   const bool sigma = s.in_map && s.uncertainty_available;
   json p = {{"kind", "sensor"},
             {"id", s.id},
+            {"name", detail::name_or_null(s.name)},
             {"position_source", s.in_map ? "reconstructed" : "reported"},
             {"in_map", s.in_map},
             {"weight", s.in_map ? number_or_null(s.weight) : json()},

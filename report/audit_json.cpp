@@ -10,6 +10,8 @@ OrderedJson verdict_json(audit::SensorVerdict verdict) {
   return std::string(audit::to_string(verdict));
 }
 
+OrderedJson name_or_null(const std::string& name) { return name.empty() ? OrderedJson() : OrderedJson(name); }
+
 OrderedJson number_or_null(double value) { return std::isfinite(value) ? OrderedJson(value) : OrderedJson(); }
 
 OrderedJson number_or_null(const std::optional<double>& value) {

@@ -5,6 +5,7 @@
 #include <iosfwd>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <string>
 
 #include "audit/sensor_verdict.h"
 
@@ -17,6 +18,9 @@ using OrderedJson = nlohmann::ordered_json;
 OrderedJson number_or_null(double value);
 // The number, or null when absent, NaN or infinite.
 OrderedJson number_or_null(const std::optional<double>& value);
+
+// A sensor's human name, or null when it has none (the reports never write an empty name).
+OrderedJson name_or_null(const std::string& name);
 
 // A verdict as the reports write it: its name, or null for a sensor that was not reported.
 OrderedJson verdict_json(audit::SensorVerdict verdict);

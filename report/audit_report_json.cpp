@@ -11,6 +11,7 @@
 namespace covmap::report {
 namespace {
 
+using detail::name_or_null;
 using detail::number_or_null;
 using json = detail::OrderedJson;
 
@@ -36,6 +37,7 @@ void put_position(json& j, Point p, const io::CoverageMap& map) {
 
 json reported_json(const ReportedSensor& r, const io::CoverageMap& map) {
   json j = json::object();
+  j["name"] = name_or_null(r.name);
   put_position(j, r.position, map);
   j["weight"] = number_or_null(r.weight);
   j["tx_power_dbm"] = number_or_null(r.tx_power_dbm);
@@ -47,6 +49,7 @@ json reported_json(const ReportedSensor& r, const io::CoverageMap& map) {
 json sensor_json(const audit::SensorAudit& s, const io::CoverageMap& map) {
   json j = json::object();
   j["id"] = s.id;
+  j["name"] = name_or_null(s.name);
   j["in_map"] = s.in_map;
   // A sensor only reported has no reconstruction: its reconstructed members are null.
   const bool rebuilt = s.in_map;

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <regex>
 
@@ -144,6 +145,47 @@ TEST(CoverageMap, OtherSensorPropertyAndAltitudeIgnored) {
   const auto map = parse(collection({f}), options);
   EXPECT_EQ(map.cells[0].sensor, "north");
   EXPECT_EQ(map.cells[0].polygons[0].outer.size(), 3u);
+}
+
+// A feature with properties {"sensor": sensor, "name": name} (no name member when name is absent).
+Json named_feature(Json sensor, std::optional<Json> name, double x) {
+  Json f = feature(std::move(sensor), polygon({ring(square(x, 0, 1))}));
+  if (name) f["properties"]["name"] = *name;
+  return f;
+}
+
+TEST(CoverageMapNames, KeptPerCellAbsentOrNullIsEmptyAndDisagreementIsNoError) {
+  // Sensor "a" has two cells naming it differently: both are read as written (the audit takes the
+  // first); "b" has no name, "c" a null one.
+  const auto map = parse(collection({named_feature("a", "Bern", 0), named_feature("b", std::nullopt, 2),
+                                     named_feature("a", "Berne", 4), named_feature("c", nullptr, 6)}),
+                         planar());
+  ASSERT_EQ(map.cells.size(), 4u);
+  EXPECT_EQ(map.cells[0].name, "Bern");
+  EXPECT_EQ(map.cells[1].name, "");
+  EXPECT_EQ(map.cells[2].name, "Berne");
+  EXPECT_EQ(map.cells[3].name, "");
+  EXPECT_EQ(map.cells[2].sensor, "a");
+}
+
+TEST(CoverageMapNames, NamePropertyAsTheSensorPropertyIsTheId) {
+  // With --sensor-property name the name is the id (an integer kept as its decimal text too), and
+  // the default "sensor" property is then only another property.
+  Json f = feature("ignored", polygon({ring(square(0, 0, 1))}));
+  f["properties"]["name"] = 42;
+  CoverageMapOptions options = planar();
+  options.sensor_property = "name";
+  const auto map = parse(collection({f, named_feature("x", "Thun", 2)}), options);
+  EXPECT_EQ(map.cells[0].sensor, "42");
+  EXPECT_EQ(map.cells[0].name, "42");
+  EXPECT_EQ(map.cells[1].sensor, "Thun");
+  EXPECT_EQ(map.cells[1].name, "Thun");
+}
+
+TEST(CoverageMapNames, NonStringNameIsAnErrorNamingTheFeature) {
+  const auto e = error_of(collection({named_feature("a", "ok", 0), named_feature("b", 7, 2)}), planar());
+  EXPECT_EQ(e.item(), "features[1] (sensor 'b')");
+  EXPECT_EQ(e.message(), "property \"name\" must be a string (got number 7)");
 }
 
 TEST(CoverageMap, PinchedRingIsAccepted) {

@@ -272,6 +272,63 @@ TEST(ReportedSensorsGeoJson, ForeignCrs) {
   EXPECT_NE(e.message().find("\"EPSG:2056\""), std::string::npos);
 }
 
+// ---- names ----
+
+TEST(ReportedSensorNames, ReadFromEverySyntaxAndEmptyWhenAbsent) {
+  // The same three sensors in each syntax: a named one, one with an empty/null name, one without.
+  const std::string from_csv = "ID,x,y,weight,NAME\na,0,0,1,\"Bern, Bahnhof\"\nb,1,0,1,\nc,2,0,1\n";
+  const std::string from_json = R"({"format":"covmap.sites/1","sites":[
+      {"id":"a","name":"Bern, Bahnhof","x":0,"y":0,"weight":1},
+      {"id":"b","name":null,"x":1,"y":0,"weight":1},
+      {"id":"c","x":2,"y":0,"weight":1}]})";
+  const std::string from_geojson = R"({"type":"FeatureCollection","features":[
+      {"type":"Feature","properties":{"id":"a","name":"Bern, Bahnhof","weight":1},"geometry":{"type":"Point","coordinates":[0,0]}},
+      {"type":"Feature","properties":{"id":"b","name":null,"weight":1},"geometry":{"type":"Point","coordinates":[1,0]}},
+      {"type":"Feature","properties":{"id":"c","weight":1},"geometry":{"type":"Point","coordinates":[2,0]}}]})";
+  ReportedSensorOptions planar_geojson;
+  planar_geojson.planar = true;
+  const std::pair<std::string, SensorsFormat> inputs[] = {
+      {from_csv, SensorsFormat::kCsv}, {from_json, SensorsFormat::kSitesJson}, {from_geojson, SensorsFormat::kGeoJson}};
+  for (const auto& [text, format] : inputs) {
+    const auto s = parse_reported_sensors(text, "s", planar_geojson, format);
+    ASSERT_EQ(s.size(), 3u);
+    EXPECT_EQ(s[0].name, "Bern, Bahnhof");
+    EXPECT_EQ(s[1].name, "");
+    EXPECT_EQ(s[2].name, "");
+    EXPECT_EQ(s[0].id, "a");  // the name is a label, never the id
+  }
+}
+
+TEST(ReportedSensorNames, NonStringNameIsAProblemNamingTheEntry) {
+  const auto e = input_error_from([] {
+    parse_reported_sensors(R"({"format":"covmap.sites/1","sites":[
+        {"id":"a","name":"ok","x":0,"y":0,"weight":1},
+        {"id":"b","name":17,"x":1,"y":0,"weight":1}]})",
+                           "s.json", planar_map());
+  });
+  ASSERT_EQ(e.problems.size(), 1u);
+  EXPECT_EQ(e.problems[0].item, "sites[1] (sensor 'b')");
+  EXPECT_EQ(e.problems[0].message, "name must be a string (got number 17)");
+
+  ReportedSensorOptions planar;
+  planar.planar = true;
+  const auto g = input_error_from([&] {
+    parse_reported_sensors(R"({"type":"FeatureCollection","features":[
+        {"type":"Feature","properties":{"id":"a","name":["x"],"weight":1},"geometry":{"type":"Point","coordinates":[0,0]}}]})",
+                           "s.geojson", planar);
+  });
+  ASSERT_EQ(g.problems.size(), 1u);
+  EXPECT_EQ(g.problems[0].item, "features[0] (sensor 'a')");
+  EXPECT_EQ(g.problems[0].message, "properties.name must be a string (got an array)");
+}
+
+TEST(ReportedSensorNames, CsvNameMustBeUtf8) {
+  const auto e = csv_error("id,x,y,weight,name\na,0,0,1,Z\xFCrich\n", planar_map());
+  ASSERT_EQ(e.problems.size(), 1u);
+  EXPECT_EQ(e.problems[0].line, 2);
+  EXPECT_EQ(e.problems[0].message, "name is not valid UTF-8");
+}
+
 // ---- files ----
 
 TEST(ReportedSensors, ReadsEachFormatByExtension) {

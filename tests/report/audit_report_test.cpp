@@ -180,6 +180,29 @@ TEST(AuditJson, SensorsCarryReconstructionReportAndComparison) {
 
 // Issue 12: the summary dropped undetermined sensors (counted them as "other"), so its verdict
 // counts did not add up. Every verdict of the enumeration is a member, counted here by hand.
+TEST(AuditJson, NamesAreWrittenAsGivenAndNullWhenEmpty) {
+  AuditFixture f = audit_fixture(false);
+  ASSERT_TRUE(f.result.sensors[0].reported.has_value());
+  f.result.sensors[0].name = "Zollikofen";
+  f.result.sensors[0].reported->name = "Zollikofen";
+  f.result.sensors[2].name = "Münsingen";  // e.g. a name from the map only (c is unreported)
+  const json j = audit_json(context_of(f));
+  const json g = sensors_geojson(context_of(f));
+  const auto points = features_of_kind(g, "sensor");
+  ASSERT_EQ(j["sensors"].size(), f.result.sensors.size());
+  ASSERT_EQ(points.size(), f.result.sensors.size());
+  for (std::size_t i = 0; i < f.result.sensors.size(); ++i) {
+    SCOPED_TRACE(f.result.sensors[i].id);
+    const json want = i == 0 ? json("Zollikofen") : i == 2 ? json("Münsingen") : json();
+    EXPECT_EQ(j["sensors"][i]["name"], want);
+    EXPECT_EQ(points[i]["properties"]["name"], want);
+    const json& reported = j["sensors"][i]["reported"];
+    if (!reported.is_null()) {
+      EXPECT_EQ(reported["name"], i == 0 ? json("Zollikofen") : json());
+    }
+  }
+}
+
 TEST(AuditJson, SummaryCountsEveryVerdictAndAddsUp) {
   const AuditFixture f = testing::audit_fixture_with_undetermined(true);
   const json s = audit_json(context_of(f))["summary"];
