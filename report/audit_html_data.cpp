@@ -31,9 +31,6 @@ Json number(const std::optional<double>& v) {
 }
 Json number_if(bool known, double v) { return number(known ? std::optional<double>(v) : std::nullopt); }
 
-// The sensor's name for people (issue 13); empty when no input gave one.
-std::string sensor_name(const audit::SensorAudit&) { return {}; }
-
 Json grid_xy(const GridFrame& f, bool drawn, Point p, const char* key_x, const char* key_y, Json& into) {
   const bool ok = drawn && f.drawable(p);
   const GridPoint g = ok ? f.at(p) : GridPoint{};
@@ -45,7 +42,7 @@ Json grid_xy(const GridFrame& f, bool drawn, Point p, const char* key_x, const c
 Json sensor_entry(const GridFrame& f, const audit::SensorAudit& s, std::size_t input_index) {
   const bool compared = s.reported && s.in_map;
   Json j = {{"id", s.id},
-            {"name", sensor_name(s)},
+            {"name", s.name},
             {"verdict", 0},
             {"attention", needs_attention(s.verdict)},
             {"basis", std::string(basis_words(s.basis))},
@@ -139,12 +136,14 @@ std::string audit_page_data(const AuditReportContext& c) {
 
   const std::vector<std::size_t> order = sensors_by_severity(r.sensors);
   std::unordered_map<std::string, std::size_t> position_of;  // sensor id -> index in `order`
-  Json sensors = Json::array();
+  // By column: each member name once rather than once per sensor (a third of the page at 10^4).
+  Json columns = Json::object();
   for (std::size_t k = 0; k < order.size(); ++k) {
-    sensors.push_back(sensor_entry(f, r.sensors[order[k]], order[k]));
+    const Json entry = sensor_entry(f, r.sensors[order[k]], order[k]);
+    for (const auto& [key, value] : entry.items()) columns[key].push_back(value);
     position_of.emplace(r.sensors[order[k]].id, k);
   }
-  data["sensors"] = std::move(sensors);
+  data["sensors"] = std::move(columns);
 
   Json cells = Json::array();
   for (const auto& cell : c.map.cells) {

@@ -11,10 +11,11 @@
 //              south, east, north, x[], y[]}: grid coordinates at the (n+1)² nodes of an n × n
 //              lon/lat grid over the map's extent, row by row from the north-west
 //   verdicts   [{key, words, colour}] in audit::kAllSensorVerdicts order
-//   sensors    in the order of attention (sensors_by_severity), each {id, name, verdict (index
+//   sensors    by column: {id: [...], name: [...], ...}, every column one value per sensor, in
+//              the order of attention (sensors_by_severity). Columns: id, name, verdict (index
 //              into verdicts), attention, basis, colour, x, y, rx, ry (grid; null when not drawn),
 //              moved, sigma, power_error, chi2, weight, power, reported_weight, reported_power,
-//              iou, iou_reported, fit_ratio (null when unknown), reason}
+//              iou, iou_reported, fit_ratio (null when unknown; six significant digits), reason
 //   cells      [[sensor index or -1, ring, ring, ...]] (rings encoded as in audit_html_map.h)
 //   boundaries, frame, reported_boundaries: polylines of the recomputed diagram's bisectors, of its
 //              frame, and of the reported sensors' diagram (null when there is none)

@@ -174,6 +174,7 @@ void attention_list(std::ostream& out, const AuditReportContext& c) {
     const std::string_view words = verdict_words(s.verdict);
     out << "<li class=\"" << detail::verdict_class(s.verdict) << "\" data-sensor-id=\"" << html_escape(s.id) << "\"><b>"
         << html_escape(s.id) << "</b>";
+    if (!s.name.empty()) out << " <span class=\"name\">" << html_escape(s.name) << "</span>";
     if (s.reason.rfind(words, 0) != 0) out << " <span class=\"verdict-words\">" << html_escape(words) << "</span>";
     out << "<div class=\"why\">" << html_escape(s.reason) << "</div></li>\n";
   }

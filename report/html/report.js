@@ -4,7 +4,14 @@
 (function () {
   'use strict';
   const data = JSON.parse(document.getElementById('report-data').textContent);
-  const sensors = data.sensors, verdicts = data.verdicts, G = data.grid;
+  // The data lists sensors by column (audit_html_data.h); the page works with one object each.
+  const columns = Object.keys(data.sensors);
+  const sensors = columns.length ? data.sensors[columns[0]].map((_, i) => {
+    const s = {};
+    for (const c of columns) s[c] = data.sensors[c][i];
+    return s;
+  }) : [];
+  const verdicts = data.verdicts, G = data.grid;
   const byId = new Map(sensors.map((s, i) => [s.id, i]));
 
   // ------------------------------------------------------------------ numbers for people

@@ -72,7 +72,21 @@ nlohmann::json page_data(const std::string& html) {
   const std::string open = "<script type=\"application/json\" id=\"report-data\">";
   const std::string text = between(html, open, "</script>");
   EXPECT_FALSE(text.empty()) << "no data block";
-  return nlohmann::json::parse(text);
+  nlohmann::json data = nlohmann::json::parse(text);
+  // Sensors come by column; the tests read them as one object per sensor.
+  nlohmann::json rows = nlohmann::json::array();
+  const nlohmann::json& columns = data["sensors"];
+  const std::size_t n = columns.empty() ? 0 : columns.begin()->size();
+  for (std::size_t i = 0; i < n; ++i) {
+    nlohmann::json row;
+    for (const auto& [key, values] : columns.items()) {
+      EXPECT_EQ(values.size(), n) << key;
+      row[key] = values.at(i);
+    }
+    rows.push_back(row);
+  }
+  data["sensors"] = rows;
+  return data;
 }
 
 std::size_t verdict_index(audit::SensorVerdict v) {
@@ -153,6 +167,18 @@ TEST(AuditHtml, EverySensorInTheDataWorstFirst) {
     }
     if (s["id"] == "c") EXPECT_TRUE(s["chi2"].is_null());  // unreported
   }
+}
+
+// Issue 13: a sensor's name, when the input gives one, is shown beside its id in the list and in
+// the data the map's labels, hover and search use.
+TEST(AuditHtml, NamesBesideIds) {
+  AuditFixture f = audit_fixture(false);
+  f.result.sensors[1].name = "Bern <Nord> & Co";  // b, inconsistent: listed
+  const std::string html = html_of(context_of(f));
+  const std::string item = between(html, "data-sensor-id=\"b\">", "</li>");
+  EXPECT_NE(item.find("<span class=\"name\">Bern &lt;Nord&gt; &amp; Co</span>"), std::string::npos) << item;
+  const nlohmann::json data = page_data(html);
+  for (const auto& s : data["sensors"]) EXPECT_EQ(s["name"], s["id"] == "b" ? "Bern <Nord> & Co" : "") << s["id"];
 }
 
 TEST(AuditHtml, SummaryCountsVerdicts) {
