@@ -2,22 +2,18 @@
 //
 // Usage: node tests/browser/report_test.mjs path/to/covmap path/to/datasets path/to/artefact-dir
 //
-// Audits the bundled Bern map as a user would (scripts/demo.sh: its sensors file, --alpha from its
-// generator), opens report.html at each width in WIDTHS (height FIRST_SCREEN_HEIGHT, the "first
-// screen") and checks, each separately (lib/checks.mjs): no console errors, no uncaught page
-// errors, no request other than file: and data: URLs, no sideways scrolling, the verdict counts
-// (elements with ids `count-…`) equal to the verdicts listed in report.json and inside the first
-// screen, the map (#map) mostly inside the first screen. Screenshots of the first screen and of the
+// Audits the bundled Bern map as a user would (lib/covmap.mjs), opens report.html at each width in
+// WIDTHS (height FIRST_SCREEN_HEIGHT, the "first screen") and checks, each separately
+// (lib/checks.mjs): no console errors, no uncaught page errors, no request other than file: and
+// data: URLs, no sideways scrolling, the verdict counts (elements with ids `count-…`) equal to the
+// verdicts listed in report.json and inside the first screen, the map (#map) mostly inside the first screen. Screenshots of the first screen and of the
 // whole page at each width go to the artefact directory, kept for people to look at.
 //
 // EXPECTED_TO_FAIL_UNTIL_REDESIGN lists the checks today's page fails (issue 13); they are
 // reported XFAIL, and as an error once they pass, so the list can only shrink.
-import { execFileSync } from 'node:child_process';
-import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
-import { tmpdir } from 'node:os';
-import { join } from 'node:path';
 import { launchBrowser, openPage, screenshot, ToolMissing } from './lib/browser.mjs';
 import { CheckRunner, expect } from './lib/checks.mjs';
+import { auditBundledMap, removeAudit } from './lib/covmap.mjs';
 
 // A laptop and a desktop screen, as issue 13 asks the page to be read at.
 const WIDTHS = [1280, 1920];
@@ -35,21 +31,15 @@ export const EXPECTED_TO_FAIL_UNTIL_REDESIGN = [
   '1920px: map in the first screen',
 ];
 
-function audit(covmap, datasets, out) {
-  const folder = join(datasets, 'maps', MAP);
-  const truth = JSON.parse(readFileSync(join(folder, 'truth.json'), 'utf8'));
-  const args = ['audit', join(folder, 'map.geojson'), '--sensors', join(folder, 'sensors.geojson'),
-                '--alpha', String(truth.generator.alpha), '-o', out, '-q'];
-  execFileSync(covmap, args, { stdio: ['ignore', 'ignore', 'pipe'] });
-  return JSON.parse(readFileSync(join(out, 'report.json'), 'utf8'));
-}
-
 // The oracle: counts by verdict from the sensors listed in report.json (null = "unreported"),
 // every verdict of the summary's closed set present, zero or not, and the total.
 function expectedCounts(report) {
   const counts = { sensors: report.sensors.length };
   for (const name of Object.keys(report.summary)) if (!SUMMARY_TOTALS.has(name)) counts[name] = 0;
-  for (const sensor of report.sensors) counts[sensor.verdict ?? 'unreported'] += 1;
+  for (const sensor of report.sensors) {
+    const verdict = sensor.verdict ?? 'unreported';
+    counts[verdict] = (counts[verdict] ?? 0) + 1;
+  }
   return counts;
 }
 
@@ -125,19 +115,18 @@ async function main([covmap, datasets, artefacts]) {
     return 2;
   }
   const run = new CheckRunner({ expectedToFail: EXPECTED_TO_FAIL_UNTIL_REDESIGN });
-  const out = mkdtempSync(join(tmpdir(), 'covmap-browser-'));
   let browser = null;
+  let audit = null;
   try {
     browser = await launchBrowser();
-    let report;
     try {
-      report = audit(covmap, datasets, out);
+      audit = auditBundledMap(covmap, datasets, MAP);
     } catch (error) {
-      run.fatal(`covmap audit of the bundled ${MAP} map failed: ${error.stderr || error.message}`);
+      run.fatal(`covmap audit of the bundled ${MAP} map failed: ${error.message}`);
       return run.finish();
     }
-    const expected = expectedCounts(report);
-    for (const width of WIDTHS) await checkWidth(run, browser, join(out, 'report.html'), expected, artefacts, width);
+    const expected = expectedCounts(audit.report);
+    for (const width of WIDTHS) await checkWidth(run, browser, audit.html, expected, artefacts, width);
     console.log(`screenshots: ${artefacts}`);
     return run.finish();
   } catch (error) {
@@ -146,7 +135,7 @@ async function main([covmap, datasets, artefacts]) {
     return 1;
   } finally {
     if (browser) await browser.close();
-    rmSync(out, { recursive: true, force: true });
+    removeAudit(audit);
   }
 }
 
