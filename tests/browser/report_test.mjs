@@ -28,11 +28,7 @@ const MAP = 'bern';
 // The member names of report.json's summary that are totals, not verdicts (docs/FORMATS.md).
 const SUMMARY_TOTALS = new Set(['sensors', 'in_map', 'reported']);
 
-export const EXPECTED_TO_FAIL_UNTIL_REDESIGN = [
-  '1280px: no horizontal overflow',
-  '1280px: map in the first screen',
-  '1920px: map in the first screen',
-];
+export const EXPECTED_TO_FAIL_UNTIL_REDESIGN = [];
 
 // The oracle: counts by verdict from the sensors listed in report.json (null = "unreported") and
 // their total, keyed as the page's ids are: count-<verdict>, with the verdict's `_` written `-`
