@@ -99,6 +99,17 @@
     const path = ringsPath(c.slice(1), true, bbox);
     return {sensor: c[0], path, bbox};
   });
+  // Cells of one tint (verdict, flagged or not; unknown sensors apart) in one path each.
+  const cellGroups = (() => {
+    const groups = new Map();
+    cells.forEach((c, i) => {
+      const key = c.sensor < 0 ? 'none' : sensors[c.sensor].verdict + (sensors[c.sensor].attention ? '!' : '');
+      if (!groups.has(key)) groups.set(key, {cells: [], path: new Path2D()});
+      groups.get(key).cells.push(i);
+      groups.get(key).path.addPath(c.path);
+    });
+    return [...groups.values()];
+  })();
   const cellsOf = new Map();
   cells.forEach((c, i) => { if (!cellsOf.has(c.sensor)) cellsOf.set(c.sensor, []); cellsOf.get(c.sensor).push(i); });
   const lines = {
@@ -142,33 +153,61 @@
     const spacing = k * Math.sqrt(G.w * G.h / drawn);
     return Math.max(1.5, Math.min(4.5, 0.18 * spacing));
   }
-  function visible(b) {
-    const [x0, y0] = toGrid(0, 0), [x1, y1] = toGrid(W, H);
-    return b[2] >= x0 && b[0] <= x1 && b[3] >= y0 && b[1] <= y1;
+  // The map's cells and lines are drawn into an off-screen canvas half a view larger on every side;
+  // while the zoom and the layers stay the same, panning only moves that picture (at 10^4 cells a
+  // full drawing takes a good part of a second in a software-rendering browser).
+  const cache = document.createElement('canvas');
+  let cached = null;  // {key, k, cx, cy, mx, my}
+
+  function drawStatic(g, basemapOn, mx, my) {
+    g.setTransform(dpr * k, 0, 0, dpr * k, dpr * (W / 2 + mx - cx * k), dpr * (H / 2 + my - cy * k));
+    const [x0, y0] = toGrid(-mx, -my), [x1, y1] = toGrid(W + mx, H + my);
+    const visible = b => b[2] >= x0 && b[0] <= x1 && b[3] >= y0 && b[1] <= y1;
+    if (layerOn('cells')) {
+      if (cellColouring && cellColouring.value === 'sensor') {
+        for (const c of cells) {
+          if (!visible(c.bbox)) continue;
+          g.fillStyle = cellFill(c, basemapOn);
+          g.fill(c.path, 'evenodd');
+        }
+      } else {
+        // One fill per tint. Nonzero, not even-odd: a hole of one cell may hold another cell of the
+        // same tint, and the rings' orientations (outer counter-clockwise, holes clockwise) keep it filled.
+        for (const group of cellGroups) {
+          g.fillStyle = cellFill(cells[group.cells[0]], basemapOn);
+          g.fill(group.path, 'nonzero');
+        }
+      }
+    }
+    g.lineJoin = 'round';
+    if (layerOn('diagram')) {
+      g.lineWidth = 1 / k; g.strokeStyle = '#777'; g.stroke(lines.frame);
+      g.lineWidth = 1.2 / k; g.strokeStyle = '#1d1d1d'; g.stroke(lines.boundaries);
+    }
+    if (lines.reported && layerOn('reported-diagram')) {
+      g.setLineDash([5 / k, 3 / k]); g.lineWidth = 1.4 / k; g.strokeStyle = '#6a3d9a';
+      g.stroke(lines.reported); g.setLineDash([]);
+    }
   }
 
   function draw() {
     ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
     ctx.clearRect(0, 0, W, H);
     const basemapOn = drawBasemap();
-    ctx.setTransform(dpr * k, 0, 0, dpr * k, dpr * (W / 2 - cx * k), dpr * (H / 2 - cy * k));
-    if (layerOn('cells')) {
-      for (const c of cells) {
-        if (!visible(c.bbox)) continue;
-        ctx.fillStyle = cellFill(c, basemapOn);
-        ctx.fill(c.path, 'evenodd');
-      }
+    const key = [W, H, dpr, basemapOn, cellColouring ? cellColouring.value : '',
+                 ...Array.from(document.querySelectorAll('input[data-layer]'), b => b.checked)].join();
+    const fits = cached && cached.key === key && cached.k === k &&
+                 Math.abs(cx - cached.cx) * k <= cached.mx && Math.abs(cy - cached.cy) * k <= cached.my;
+    if (!fits) {
+      const mx = Math.round(W / 2), my = Math.round(H / 2);
+      cache.width = Math.round((W + 2 * mx) * dpr); cache.height = Math.round((H + 2 * my) * dpr);
+      drawStatic(cache.getContext('2d'), basemapOn, mx, my);
+      cached = {key, k, cx, cy, mx, my};
     }
-    ctx.lineJoin = 'round';
-    if (layerOn('diagram')) {
-      ctx.lineWidth = 1 / k; ctx.strokeStyle = '#777'; ctx.stroke(lines.frame);
-      ctx.lineWidth = 1.2 / k; ctx.strokeStyle = '#1d1d1d'; ctx.stroke(lines.boundaries);
-    }
-    if (lines.reported && layerOn('reported-diagram')) {
-      ctx.setLineDash([5 / k, 3 / k]); ctx.lineWidth = 1.4 / k; ctx.strokeStyle = '#6a3d9a';
-      ctx.stroke(lines.reported); ctx.setLineDash([]);
-    }
+    ctx.setTransform(1, 0, 0, 1, 0, 0);
+    ctx.drawImage(cache, Math.round(dpr * ((cached.cx - cx) * k - cached.mx)), Math.round(dpr * ((cached.cy - cy) * k - cached.my)));
     if (selected >= 0) {
+      ctx.setTransform(dpr * k, 0, 0, dpr * k, dpr * (W / 2 - cx * k), dpr * (H / 2 - cy * k));
       for (const i of cellsOf.get(selected) || []) {
         ctx.lineWidth = 5 / k; ctx.strokeStyle = '#111'; ctx.stroke(cells[i].path);
         ctx.lineWidth = 2.5 / k; ctx.strokeStyle = '#ffd400'; ctx.stroke(cells[i].path);
@@ -179,49 +218,73 @@
     updateScaleBar();
   }
 
-  function arrow(x0, y0, x1, y1, colour) {
+  function arrow(shaft, head, x0, y0, x1, y1) {
     const len = Math.hypot(x1 - x0, y1 - y0);
     if (len < 2) return;
-    ctx.strokeStyle = colour; ctx.fillStyle = colour; ctx.lineWidth = 1.6;
-    ctx.beginPath(); ctx.moveTo(x0, y0); ctx.lineTo(x1, y1); ctx.stroke();
+    shaft.moveTo(x0, y0); shaft.lineTo(x1, y1);
     const h = Math.min(9, len / 2), ux = (x1 - x0) / len, uy = (y1 - y0) / len;
-    ctx.beginPath(); ctx.moveTo(x1, y1);
-    ctx.lineTo(x1 - h * ux - 0.5 * h * uy, y1 - h * uy + 0.5 * h * ux);
-    ctx.lineTo(x1 - h * ux + 0.5 * h * uy, y1 - h * uy - 0.5 * h * ux);
-    ctx.closePath(); ctx.fill();
+    head.moveTo(x1, y1);
+    head.lineTo(x1 - h * ux - 0.5 * h * uy, y1 - h * uy + 0.5 * h * ux);
+    head.lineTo(x1 - h * ux + 0.5 * h * uy, y1 - h * uy - 0.5 * h * ux);
+    head.closePath();
   }
   function inView(x, y, pad) { return x >= -pad && y >= -pad && x <= W + pad && y <= H + pad; }
 
+  // Marks are batched: one path per colour and kind, so 10^4 sensors cost a few dozen draw calls.
+  function batches() { return verdicts.map(() => new Path2D()); }
+  // Below this dot radius (px) the map is dense: dots become squares without outline, and only
+  // flagged sensors keep their rings and arrows (the others' would be a few pixels of clutter).
+  const kDenseRadius = 2.5;
   function drawMarks() {
-    const r = dotRadius();
+    const r = dotRadius(), dense = r < kDenseRadius;
     if (layerOn('shifts')) {
+      const shafts = batches(), heads = batches();
       for (const s of sensors) {
-        if (s.x === null || s.rx === null) continue;
+        if (s.x === null || s.rx === null || (dense && !s.attention)) continue;
         const [x0, y0] = toScreen(s.rx, s.ry), [x1, y1] = toScreen(s.x, s.y);
         if (!inView(x0, y0, 50) && !inView(x1, y1, 50)) continue;
-        arrow(x0, y0, x1, y1, verdicts[s.verdict].colour);
+        arrow(shafts[s.verdict], heads[s.verdict], x0, y0, x1, y1);
       }
+      ctx.lineWidth = 1.6;
+      verdicts.forEach((v, i) => {
+        ctx.strokeStyle = v.colour; ctx.fillStyle = v.colour;
+        ctx.stroke(shafts[i]); ctx.fill(heads[i]);
+      });
     }
     if (!layerOn('sensors')) return;
-    ctx.lineWidth = 1.5;
+    const rings = batches(), ringRadius = Math.max(2, 0.8 * r);
     for (const s of sensors) {  // reported positions: rings
-      if (s.rx === null) continue;
+      if (s.rx === null || (dense && !s.attention)) continue;
       const [x, y] = toScreen(s.rx, s.ry);
       if (!inView(x, y, 10)) continue;
-      ctx.strokeStyle = verdicts[s.verdict].colour; ctx.fillStyle = '#fff';
-      ctx.beginPath(); ctx.arc(x, y, Math.max(2, 0.8 * r), 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
+      rings[s.verdict].moveTo(x + ringRadius, y);
+      rings[s.verdict].arc(x, y, ringRadius, 0, 2 * Math.PI);
     }
-    ctx.lineWidth = 1; ctx.strokeStyle = '#fff';
-    for (let i = sensors.length - 1; i >= 0; --i) {  // worst drawn last, on top
-      const s = sensors[i];
+    ctx.lineWidth = 1.5; ctx.fillStyle = '#fff';
+    verdicts.forEach((v, i) => { ctx.strokeStyle = v.colour; ctx.fill(rings[i]); ctx.stroke(rings[i]); });
+    // Dots, the worst verdicts drawn last (on top), flagged ones a little larger.
+    const dots = batches();
+    for (const s of sensors) {
       if (s.x === null) continue;
       const [x, y] = toScreen(s.x, s.y);
       if (!inView(x, y, 10)) continue;
-      ctx.fillStyle = verdicts[s.verdict].colour;
-      ctx.beginPath(); ctx.arc(x, y, s.attention ? r + 1 : r, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
+      const radius = s.attention ? r + 1 : r;
+      if (dense && !s.attention) {
+        dots[s.verdict].rect(x - radius, y - radius, 2 * radius, 2 * radius);
+      } else {
+        dots[s.verdict].moveTo(x + radius, y);
+        dots[s.verdict].arc(x, y, radius, 0, 2 * Math.PI);
+      }
     }
+    ctx.lineWidth = 1; ctx.strokeStyle = '#fff';
+    verdicts.map((v, i) => i).sort((a, b) => SEVERITY_RANK[verdicts[b].key] - SEVERITY_RANK[verdicts[a].key]).forEach((i) => {
+      ctx.fillStyle = verdicts[i].colour; ctx.fill(dots[i]);
+      if (!dense) ctx.stroke(dots[i]);
+    });
     drawLabels(r);
   }
+  // Lower is worse (report/audit_report.h, sensors_by_severity).
+  const SEVERITY_RANK = {inconsistent: 0, model_misfit: 1, not_in_map: 2, unreported: 3, undetermined: 4, consistent: 5};
 
   // Flagged sensors get their label, worst first, where it does not cover another label.
   const kMaxLabels = 400;
