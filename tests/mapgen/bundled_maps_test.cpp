@@ -3,10 +3,14 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
 #include <set>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include "io/local_projection.h"
 #include "tools/mapgen/reported_sensors.h"
@@ -106,6 +110,38 @@ TEST_P(BundledMap, AgreesWithItsTruth) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Maps, BundledMap, ::testing::Values("bern", "ticino", "switzerland"));
+
+// The town list's name column, read here by hand (the oracle): id -> name.
+std::map<std::string, std::string> town_names(const std::filesystem::path& csv) {
+  std::istringstream lines(read_text(csv));
+  std::map<std::string, std::string> names;
+  std::vector<std::string> header;
+  for (std::string line; std::getline(lines, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::vector<std::string> fields;
+    std::istringstream cells(line);
+    for (std::string field; std::getline(cells, field, ',');) fields.push_back(field);
+    if (header.empty()) {
+      header = fields;
+      continue;
+    }
+    const auto column = [&](const std::string& name) { return fields.at(std::find(header.begin(), header.end(), name) - header.begin()); };
+    names[column("id")] = column("name");
+  }
+  return names;
+}
+
+TEST(BundledMaps, BernSensorsCarryTheirTownNamesInEveryFile) {
+  const auto names = town_names(kMaps / "bern_towns.csv");
+  const json map = json::parse(read_text(kMaps / "bern" / "map.geojson"));
+  const json sensors = json::parse(read_text(kMaps / "bern" / "sensors.geojson"));
+  const json truth = json::parse(read_text(kMaps / "bern" / "truth.json"));
+  ASSERT_EQ(truth["sensors"].size(), names.size());
+  for (const json& t : truth["sensors"]) EXPECT_EQ(t["name"], names.at(t["id"]));
+  for (const json& f : sensors["features"]) EXPECT_EQ(f["properties"]["name"], names.at(f["properties"]["id"]));
+  for (const json& f : map["features"]) EXPECT_EQ(f["properties"]["name"], names.at(f["properties"]["sensor"]));
+  EXPECT_EQ(names.at("2657913"), "Zollikofen");  // the list's first town, as GeoNames spells it
+}
 
 TEST(BundledMaps, TotalSizeUnderOneMegabyte) {
   std::uintmax_t total = 0;

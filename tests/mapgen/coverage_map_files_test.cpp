@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include <fstream>
+#include <map>
 
 #include "mapgen_test_util.h"
 
@@ -101,6 +102,40 @@ TEST(CoverageMapFiles, WrittenFilesHoldTheMapExactly) {
     }
     EXPECT_EQ(gross, 3u);
   }
+}
+
+TEST(CoverageMapFiles, TownNamesReachEveryFileAndNamelessSensorsHaveNone) {
+  // Lon/lat sensors, every other one named (with a quote and non-ASCII letters to survive JSON).
+  std::vector<LonLatSite> sites;
+  for (const Site& s : random_test_sites(10, 8'000.0, 4.0, 32)) {
+    const std::size_t k = sites.size();
+    sites.push_back({.id = s.id, .lon = 7.4 + s.x / 7.6e4, .lat = 46.9 + s.y / 1.1e5, .weight = s.weight,
+                     .name = k % 2 ? "" : "Saint-\"Ours\" Ré " + s.id});
+  }
+  CoverageMapOptions o;
+  o.frame = OutputFrame::kLonLat;
+  const CoverageMap map = generate_coverage_map(std::span<const LonLatSite>(sites), o);
+  TempDir dir;
+  write_coverage_map(map, dir.path());
+  std::map<std::string, std::string> name_of;
+  for (const LonLatSite& s : sites) name_of[s.id] = s.name;
+  // A file's entry carries the site's name exactly when the site has one.
+  const auto check = [&](const json& entry, const std::string& id) {
+    SCOPED_TRACE(id);
+    EXPECT_EQ(entry.contains("name"), !name_of.at(id).empty());
+    if (entry.contains("name")) {
+      EXPECT_EQ(entry["name"], name_of.at(id));
+    }
+  };
+  const json geo = json::parse(read_text(dir.path() / kMapFileName));
+  ASSERT_FALSE(geo["features"].empty());
+  for (const auto& f : geo["features"]) check(f["properties"], f["properties"]["sensor"]);
+  const json sensors = json::parse(read_text(dir.path() / kSensorsFileName));
+  ASSERT_EQ(sensors["features"].size(), sites.size());
+  for (const auto& f : sensors["features"]) check(f["properties"], f["properties"]["id"]);
+  const json truth = json::parse(read_text(dir.path() / kTruthFileName));
+  ASSERT_EQ(truth["sensors"].size(), sites.size());
+  for (const auto& s : truth["sensors"]) check(s, s["id"]);
 }
 
 TEST(CoverageMapFiles, FailureLeavesExistingFilesAndNoTemporary) {

@@ -32,6 +32,16 @@ TEST(LonLatSitesCsv, ReadsColumnsInAnyOrderAndSkipsComments) {
   EXPECT_EQ(table.sites[0].lat, 46.94809);
   EXPECT_EQ(table.sites[0].weight, 1.5);
   EXPECT_EQ(table.line, (std::vector<int>{4, 6}));
+  EXPECT_EQ(table.sites[0].name, "Bern");
+  EXPECT_EQ(table.sites[1].name, "Thun");
+}
+
+TEST(LonLatSitesCsv, NameColumnIsOptional) {
+  const auto table = parse_lonlat_sites_csv("id,lon,lat,weight\na,7.4,46.9,1\n", "towns.csv");
+  EXPECT_EQ(table.sites[0].name, "");
+  const auto empty = parse_lonlat_sites_csv("id,lon,lat,weight,Name\na,7.4,46.9,1,\nb,7.5,46.9,1\n", "towns.csv");
+  EXPECT_EQ(empty.sites[0].name, "");
+  EXPECT_EQ(empty.sites[1].name, "");  // a short row has no name
 }
 
 TEST(LonLatSitesCsv, ReportsEveryBadLineWithFileLineAndId) {
@@ -58,6 +68,7 @@ TEST(LonLatSitesCsv, ReportsEveryBadLineWithFileLineAndId) {
 TEST(LonLatSitesCsv, RejectsBadHeadersAndEmptyFiles) {
   EXPECT_NE(error_of("id,x,y,weight\n1,2,3,4\n").message().find("missing column 'lon'"), std::string::npos);
   EXPECT_NE(error_of("id,lon,lat,weight,lon\n").message().find("repeated column 'lon'"), std::string::npos);
+  EXPECT_NE(error_of("id,lon,lat,weight,name,NAME\n").message().find("repeated column 'name'"), std::string::npos);
   EXPECT_NE(error_of("# nothing\n").message().find("no header"), std::string::npos);
   EXPECT_NE(error_of("id,lon,lat,weight\n").message().find("no sensors"), std::string::npos);
   EXPECT_NE(error_of("id,lon,lat,weight\n\"a\",1,2,3\n").message().find("quoted"), std::string::npos);

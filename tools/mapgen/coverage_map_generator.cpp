@@ -371,7 +371,9 @@ CoverageMap generate_coverage_map(std::span<const LonLatSite> sites, const Cover
   // Same positions in lon/lat are same positions in the plane; the planar check names them.
   check_sites(planar, problems);
   problems.throw_if_any();
-  return Generator(planar, resolved, given).run();
+  CoverageMap map = Generator(planar, resolved, given).run();
+  for (std::size_t k = 0; k < sites.size(); ++k) map.truth[k].name = sites[k].name;  // labels only
+  return map;
 }
 
 }  // namespace covmap::mapgen

@@ -118,6 +118,7 @@ struct CoverageMapOptions {
 
 struct TrueSensor {
   std::string id;
+  std::string name;     // lon/lat input's name (LonLatSite::name), else empty; written to every file
   Point position;       // plane, metres
   std::optional<io::LonLat> lonlat;  // when a projection centre is known
   double weight = 1.0;           // scaled: the strongest sensor has weight 1

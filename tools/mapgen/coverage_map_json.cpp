@@ -120,9 +120,10 @@ OrderedJson map_geojson(const CoverageMap& map) {
       for (const auto& cell : f.cells) polygons.push_back(polygon_json(cell));
       geometry = {{"type", "MultiPolygon"}, {"coordinates", std::move(polygons)}};
     }
-    features.push_back({{"type", "Feature"},
-                        {"properties", {{"sensor", map.truth[static_cast<std::size_t>(f.sensor)].id}}},
-                        {"geometry", std::move(geometry)}});
+    const TrueSensor& t = map.truth[static_cast<std::size_t>(f.sensor)];
+    OrderedJson properties = {{"sensor", t.id}};
+    if (!t.name.empty()) properties["name"] = t.name;
+    features.push_back({{"type", "Feature"}, {"properties", std::move(properties)}, {"geometry", std::move(geometry)}});
   }
   collection["features"] = std::move(features);
   return collection;
@@ -132,14 +133,16 @@ OrderedJson sensors_geojson(const CoverageMap& map) {
   OrderedJson collection = {{"type", "FeatureCollection"}};
   add_frame(map, collection);
   OrderedJson features = OrderedJson::array();
-  for (const auto& r : map.reported) {
+  for (std::size_t k = 0; k < map.reported.size(); ++k) {
+    const ReportedSensor& r = map.reported[k];
+    OrderedJson properties = {{"id", r.id}};
+    if (!map.truth[k].name.empty()) properties["name"] = map.truth[k].name;  // reported in truth's order
+    properties["tx_power_dbm"] = r.tx_power_dbm;
+    properties["weight"] = r.weight;
+    properties["position_sigma_m"] = map.options.errors.position_sigma_m;
+    properties["power_sigma_db"] = map.options.errors.power_sigma_db;
     features.push_back({{"type", "Feature"},
-                        {"properties",
-                         {{"id", r.id},
-                          {"tx_power_dbm", r.tx_power_dbm},
-                          {"weight", r.weight},
-                          {"position_sigma_m", map.options.errors.position_sigma_m},
-                          {"power_sigma_db", map.options.errors.power_sigma_db}}},
+                        {"properties", std::move(properties)},
                         {"geometry", {{"type", "Point"}, {"coordinates", position(r.output)}}}});
   }
   collection["features"] = std::move(features);
@@ -183,7 +186,10 @@ OrderedJson truth_json(const CoverageMap& map) {
   for (std::size_t k = 0; k < map.truth.size(); ++k) {
     const TrueSensor& t = map.truth[k];
     const ReportedSensor& r = map.reported[k];
-    OrderedJson s = {{"id", t.id}, {"x", t.position.x}, {"y", t.position.y}};
+    OrderedJson s = {{"id", t.id}};
+    if (!t.name.empty()) s["name"] = t.name;
+    s["x"] = t.position.x;
+    s["y"] = t.position.y;
     s["lon"] = t.lonlat ? OrderedJson(t.lonlat->lon) : OrderedJson(nullptr);
     s["lat"] = t.lonlat ? OrderedJson(t.lonlat->lat) : OrderedJson(nullptr);
     s["weight"] = t.weight;

@@ -11,6 +11,7 @@ struct LonLatSite {
   double lon = 0.0;
   double lat = 0.0;
   double weight = 1.0;
+  std::string name;  // a human name ("Zollikofen"), written to the map's files; may be empty
 };
 
 }  // namespace covmap::mapgen

@@ -19,6 +19,8 @@ using io::InputError;
 using io::InputProblem;
 
 constexpr std::array<std::string_view, 4> kColumns = {"id", "lon", "lat", "weight"};
+constexpr std::string_view kNameColumn = "name";  // optional: the town's name, kept as written
+constexpr std::size_t kAbsent = static_cast<std::size_t>(-1);
 
 std::string_view trim(std::string_view text) {
   const auto not_space = [](char c) { return c != ' ' && c != '\t' && c != '\r'; };
@@ -68,6 +70,7 @@ std::string shown(double v) {
 LonLatSiteTable parse_lonlat_sites_csv(std::string_view text, const std::string& file) {
   if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // UTF-8 byte order mark
   std::optional<std::array<std::size_t, 4>> column;
+  std::size_t name_column = kAbsent;
   LonLatSiteTable table;
   std::vector<InputProblem> problems;
   std::map<std::string, int> id_line;
@@ -94,6 +97,11 @@ LonLatSiteTable parse_lonlat_sites_csv(std::string_view text, const std::string&
             fields.begin());
       }
       column = found;
+      const auto is_name = [](const std::string& f) { return lower(f) == kNameColumn; };
+      if (std::count_if(fields.begin(), fields.end(), is_name) > 1)
+        throw InputError(file, line_number, "header", "repeated column 'name'");
+      if (const auto it = std::find_if(fields.begin(), fields.end(), is_name); it != fields.end())
+        name_column = static_cast<std::size_t>(it - fields.begin());
       continue;
     }
     if (line.find('"') != std::string_view::npos) {
@@ -119,6 +127,7 @@ LonLatSiteTable parse_lonlat_sites_csv(std::string_view text, const std::string&
         else messages.push_back(error);
       }
     }
+    if (name_column < fields.size()) site.name = fields[name_column];
     if (messages.empty()) {
       if (!(std::abs(site.lon) <= 180.0)) messages.push_back("lon must be in [-180, 180] (got " + shown(site.lon) + ")");
       if (!(std::abs(site.lat) < 90.0)) messages.push_back("lat must be in (-90, 90) (got " + shown(site.lat) + ")");
