@@ -99,23 +99,95 @@
     const path = ringsPath(c.slice(1), true, bbox);
     return {sensor: c[0], path, bbox};
   });
-  // Cells of one tint (verdict, flagged or not; unknown sensors apart) in one path each.
-  const cellGroups = (() => {
-    const groups = new Map();
-    cells.forEach((c, i) => {
-      const key = c.sensor < 0 ? 'none' : sensors[c.sensor].verdict + (sensors[c.sensor].attention ? '!' : '');
-      if (!groups.has(key)) groups.set(key, {cells: [], path: new Path2D()});
-      groups.get(key).cells.push(i);
-      groups.get(key).path.addPath(c.path);
-    });
-    return [...groups.values()];
-  })();
   const cellsOf = new Map();
   cells.forEach((c, i) => { if (!cellsOf.has(c.sensor)) cellsOf.set(c.sensor, []); cellsOf.get(c.sensor).push(i); });
+
+  // ---- level of detail. Zoomed in, cells are filled one by one (those in view) and lines drawn
+  // by buckets in view. The whole map at once is drawn from coarse copies: rings simplified to
+  // kCoarseTolerancePx at that zoom, the cells of one tint in one path. At 10^4 cells this halves
+  // what the browser rasterises and turns 10^4 fills into a dozen.
+  const kCoarseTolerancePx = 0.6;
+  const kCoarseUpTo = 1.5;  // times the whole-map zoom
+  const kBuckets = 8;       // lines are cut into kBuckets² buckets by position
+
+  // Douglas-Peucker on a polyline of [x, y] pairs: the points to keep, every dropped one within tol.
+  function simplifyPoints(pts, tol) {
+    if (pts.length <= 2) return pts;
+    const keep = new Uint8Array(pts.length);
+    keep[0] = keep[pts.length - 1] = 1;
+    const stack = [[0, pts.length - 1]];
+    while (stack.length) {
+      const [a, b] = stack.pop();
+      const [ax, ay] = pts[a], dx = pts[b][0] - ax, dy = pts[b][1] - ay, len2 = dx * dx + dy * dy;
+      let worst = -1, at = -1;
+      for (let i = a + 1; i < b; ++i) {
+        const px = pts[i][0] - ax, py = pts[i][1] - ay;
+        const t = len2 ? Math.max(0, Math.min(1, (px * dx + py * dy) / len2)) : 0;
+        const d = Math.hypot(px - t * dx, py - t * dy);
+        if (d > worst) { worst = d; at = i; }
+      }
+      if (at < 0 || worst <= tol) continue;
+      keep[at] = 1;
+      stack.push([a, at], [at, b]);
+    }
+    return pts.filter((_, i) => keep[i]);
+  }
+  function decode(r) {
+    const pts = [[r[0], r[1]]];
+    for (let i = 2; i < r.length; i += 2) pts.push([pts[pts.length - 1][0] + r[i], pts[pts.length - 1][1] + r[i + 1]]);
+    return pts;
+  }
+  function addPoints(path, pts, closed) {
+    path.moveTo(pts[0][0], pts[0][1]);
+    for (let i = 1; i < pts.length; ++i) path.lineTo(pts[i][0], pts[i][1]);
+    if (closed) path.closePath();
+  }
+  function coarsePath(rings, closed, tol) {
+    const p = new Path2D();
+    for (const r of rings) {
+      const pts = decode(r);
+      const kept = closed ? simplifyPoints(pts.concat([pts[0]]), tol).slice(0, -1) : simplifyPoints(pts, tol);
+      if (kept.length >= (closed ? 3 : 2)) addPoints(p, kept, closed);
+    }
+    return p;
+  }
+  let coarse = null;  // built for one whole-map zoom
+  function coarseCopies() {
+    if (coarse && coarse.homeK === homeK) return coarse;
+    const tol = kCoarseTolerancePx / homeK;
+    const groups = new Map();  // cells of one tint (verdict, flagged or not; unknown sensors apart)
+    data.cells.forEach((c, i) => {
+      const key = c[0] < 0 ? 'none' : sensors[c[0]].verdict + (sensors[c[0]].attention ? '!' : '');
+      if (!groups.has(key)) groups.set(key, {cell: i, rings: []});
+      groups.get(key).rings.push(...c.slice(1));
+    });
+    coarse = {
+      homeK,
+      groups: [...groups.values()].map(g => ({cell: g.cell, path: coarsePath(g.rings, true, tol)})),
+      boundaries: coarsePath(data.boundaries, false, tol),
+      frame: coarsePath(data.frame, false, tol),
+      reported: data.reported_boundaries ? coarsePath(data.reported_boundaries, false, tol) : null,
+    };
+    return coarse;
+  }
+  // Full lines in buckets by where they start, each with the bounding box of its lines.
+  function buckets(polylines) {
+    const out = new Map();
+    for (const r of polylines) {
+      const pts = decode(r);
+      const key = Math.min(kBuckets - 1, Math.max(0, Math.floor(pts[0][0] / G.w * kBuckets))) * kBuckets +
+                  Math.min(kBuckets - 1, Math.max(0, Math.floor(pts[0][1] / G.h * kBuckets)));
+      if (!out.has(key)) out.set(key, {path: new Path2D(), bbox: [Infinity, Infinity, -Infinity, -Infinity]});
+      const b = out.get(key);
+      addPoints(b.path, pts, false);
+      for (const [x, y] of pts) { b.bbox[0] = Math.min(b.bbox[0], x); b.bbox[1] = Math.min(b.bbox[1], y); b.bbox[2] = Math.max(b.bbox[2], x); b.bbox[3] = Math.max(b.bbox[3], y); }
+    }
+    return [...out.values()];
+  }
   const lines = {
-    boundaries: ringsPath(data.boundaries, false),
-    frame: ringsPath(data.frame, false),
-    reported: data.reported_boundaries ? ringsPath(data.reported_boundaries, false) : null,
+    boundaries: buckets(data.boundaries),
+    frame: buckets(data.frame),
+    reported: data.reported_boundaries ? buckets(data.reported_boundaries) : null,
   };
   const layerOn = name => { const box = document.querySelector('input[data-layer="' + name + '"]'); return !box || box.checked; };
 
@@ -153,9 +225,10 @@
     const spacing = k * Math.sqrt(G.w * G.h / drawn);
     return Math.max(1.5, Math.min(4.5, 0.18 * spacing));
   }
-  // The map's cells and lines are drawn into an off-screen canvas half a view larger on every side;
+  // The map's cells and lines are drawn into an off-screen canvas CACHE_MARGIN views larger on every side;
   // while the zoom and the layers stay the same, panning only moves that picture (at 10^4 cells a
   // full drawing takes a good part of a second in a software-rendering browser).
+  const CACHE_MARGIN = 0.25;  // a drag of a quarter view redraws nothing; the drawing costs (1 + 2·0.25)² of a view
   const cache = document.createElement('canvas');
   let cached = null;  // {key, k, cx, cy, mx, my}
 
@@ -163,30 +236,35 @@
     g.setTransform(dpr * k, 0, 0, dpr * k, dpr * (W / 2 + mx - cx * k), dpr * (H / 2 + my - cy * k));
     const [x0, y0] = toGrid(-mx, -my), [x1, y1] = toGrid(W + mx, H + my);
     const visible = b => b[2] >= x0 && b[0] <= x1 && b[3] >= y0 && b[1] <= y1;
+    const whole = k <= kCoarseUpTo * homeK, lod = whole ? coarseCopies() : null;
+    const strokeLines = (set, coarsePath) => {
+      if (whole) { g.stroke(coarsePath); return; }
+      for (const b of set) if (visible(b.bbox)) g.stroke(b.path);
+    };
     if (layerOn('cells')) {
-      if (cellColouring && cellColouring.value === 'sensor') {
+      if (whole && !(cellColouring && cellColouring.value === 'sensor')) {
+        // One fill per tint. Nonzero, not even-odd: a hole of one cell may hold another cell of the
+        // same tint, and the rings' orientations (outer counter-clockwise, holes clockwise) keep it filled.
+        for (const group of lod.groups) {
+          g.fillStyle = cellFill(cells[group.cell], basemapOn);
+          g.fill(group.path, 'nonzero');
+        }
+      } else {
         for (const c of cells) {
           if (!visible(c.bbox)) continue;
           g.fillStyle = cellFill(c, basemapOn);
           g.fill(c.path, 'evenodd');
         }
-      } else {
-        // One fill per tint. Nonzero, not even-odd: a hole of one cell may hold another cell of the
-        // same tint, and the rings' orientations (outer counter-clockwise, holes clockwise) keep it filled.
-        for (const group of cellGroups) {
-          g.fillStyle = cellFill(cells[group.cells[0]], basemapOn);
-          g.fill(group.path, 'nonzero');
-        }
       }
     }
     g.lineJoin = 'round';
     if (layerOn('diagram')) {
-      g.lineWidth = 1 / k; g.strokeStyle = '#777'; g.stroke(lines.frame);
-      g.lineWidth = 1.2 / k; g.strokeStyle = '#1d1d1d'; g.stroke(lines.boundaries);
+      g.lineWidth = 1 / k; g.strokeStyle = '#777'; strokeLines(lines.frame, whole && lod.frame);
+      g.lineWidth = 1.2 / k; g.strokeStyle = '#1d1d1d'; strokeLines(lines.boundaries, whole && lod.boundaries);
     }
     if (lines.reported && layerOn('reported-diagram')) {
       g.setLineDash([5 / k, 3 / k]); g.lineWidth = 1.4 / k; g.strokeStyle = '#6a3d9a';
-      g.stroke(lines.reported); g.setLineDash([]);
+      strokeLines(lines.reported, whole && lod.reported); g.setLineDash([]);
     }
   }
 
@@ -199,7 +277,7 @@
     const fits = cached && cached.key === key && cached.k === k &&
                  Math.abs(cx - cached.cx) * k <= cached.mx && Math.abs(cy - cached.cy) * k <= cached.my;
     if (!fits) {
-      const mx = Math.round(W / 2), my = Math.round(H / 2);
+      const mx = Math.round(W * CACHE_MARGIN), my = Math.round(H * CACHE_MARGIN);
       cache.width = Math.round((W + 2 * mx) * dpr); cache.height = Math.round((H + 2 * my) * dpr);
       drawStatic(cache.getContext('2d'), basemapOn, mx, my);
       cached = {key, k, cx, cy, mx, my};
