@@ -22,12 +22,16 @@ namespace covmap::cli {
 CLI::App* setup_diagram(CLI::App& app, DiagramOptions& options) {
   CLI::App* cmd = app.add_subcommand(
       "diagram", "Compute the multiplicatively weighted Voronoi diagram of a site file");
-  cmd->add_option("sites", options.sites_path, "sites as covmap.sites/1 JSON or CSV (id,x,y,weight)")
+  cmd->add_option("sites", options.sites_path, "sites as covmap.sites/1 JSON or CSV (id,x,y,weight, optionally name)")
       ->required()
       ->check(input_file());
   cmd->add_option("-o,--output", options.output_path, "write the diagram (covmap.arcgraph/1)")
       ->required();
-  cmd->add_option("--svg", options.svg_path, "also draw the diagram as SVG");
+  cmd->add_option("--svg", options.svg_path,
+                  "also draw the diagram as SVG (labels: the sites' names, else ids, where they fit; a scale bar)");
+  cmd->add_option("--svg-width", options.svg_width,
+                  "width of the SVG picture in pixels (default: from the sites' spacing, 800 to 4000)")
+      ->check(positive_number());
   cmd->add_option("--clip", options.clip,
                   "clip to a rectangle 'xmin,ymin,xmax,ymax' or a polygon file (covmap.polygon/1 "
                   "or GeoJSON Polygon)");
@@ -62,7 +66,9 @@ int run_diagram(const DiagramOptions& options) {
     io::write_diagram_json(diagram, json);
     std::vector<io::FileText> outputs = {{io::normalized_output_path(options.output_path), json.str()}};
     if (!options.svg_path.empty()) {
-      report::write_svg(diagram, svg);
+      report::SvgOptions so;
+      if (options.svg_width > 0) so.width_px = options.svg_width;
+      report::write_svg(diagram, svg, so);
       outputs.push_back({io::normalized_output_path(options.svg_path), svg.str()});
     }
     io::write_files_atomically(outputs);

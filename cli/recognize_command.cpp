@@ -28,7 +28,12 @@ CLI::App* setup_recognize(CLI::App& app, RecognizeOptions& options) {
       ->required()
       ->check(input_file());
   cmd->add_option("-o,--output", options.output_path, "write covmap.reconstruction/1 JSON");
-  cmd->add_option("--svg", options.svg_path, "draw the recomputed diagram of the reconstruction");
+  cmd->add_option("--svg", options.svg_path,
+                  "draw the recomputed diagram of the reconstruction (sites named and coloured as in the "
+                  "graph's own sites when it has them)");
+  cmd->add_option("--svg-width", options.svg_width,
+                  "width of the SVG picture in pixels (default: from the sites' spacing, 800 to 4000)")
+      ->check(positive_number());
   cmd->add_flag("--no-voronoi-check", options.no_voronoi_check,
                 "skip recomputing the MWVD of the reconstruction");
   cmd->add_option("--tolerance", options.tolerance, "relative tolerance (times the graph's extent)")
@@ -59,6 +64,7 @@ int run_recognize(const RecognizeOptions& options) {
     if (!options.svg_path.empty()) plan.files.push_back(options.svg_path);
     io::check_output_plan(plan);
     Diagram graph = io::read_diagram_json(options.graph_path, io::ArcLabels::kOptional);
+    const std::vector<Site> input_sites = options.svg_path.empty() ? std::vector<Site>{} : graph.sites;
     const auto repairs = recognition::prepare_input_graph(graph);
     for (const auto& r : repairs) std::cerr << "covmap: repaired: " << r.what << "\n";
     recognition::RecognitionOptions ro;
@@ -74,7 +80,13 @@ int run_recognize(const RecognizeOptions& options) {
     }
     if (!options.svg_path.empty() && r.bisector_graph) {
       std::ostringstream svg;
-      report::write_svg(voronoi::build_diagram(r.sites), svg);
+      report::SvgOptions so;
+      if (options.svg_width > 0) so.width_px = options.svg_width;
+      // The input's ids where its labels pair them with the reconstruction: the same site then has
+      // the same label and colour as in the picture of the diagram the graph came from.
+      const std::vector<Site> sites =
+          r.input_sites ? recognition::named_as_input(r.sites, input_sites, *r.input_sites) : r.sites;
+      report::write_svg(voronoi::build_diagram(sites), svg, so);
       outputs.push_back({io::normalized_output_path(options.svg_path), svg.str()});
     }
     io::write_files_atomically(outputs);

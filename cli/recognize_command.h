@@ -1,4 +1,4 @@
-// covmap recognize GRAPH.json [-o RECONSTRUCTION.json] [--svg PIC.svg] [--no-voronoi-check]:
+// covmap recognize GRAPH.json [-o RECONSTRUCTION.json] [--svg PIC.svg [--svg-width PX]] [--no-voronoi-check]:
 // is the graph a weighted bisector graph / an MWVD, and which sites drew it?
 // Exit 0: bisector graph; 3: not a bisector graph; 2: bad input (5, not handled yet, is reserved).
 #pragma once
@@ -13,6 +13,7 @@ struct RecognizeOptions {
   std::string graph_path;
   std::string output_path;
   std::string svg_path;
+  double svg_width = 0;  // the picture's width in pixels; 0 (not given): chosen from the data
   bool no_voronoi_check = false;
   double tolerance = 1e-7;
 };

@@ -25,12 +25,14 @@ struct Point {
   double y = 0.0;
 };
 
-// A sensor: distance to it is Euclidean distance divided by weight.
+// A sensor: distance to it is Euclidean distance divided by weight. The id identifies it (unique in
+// a list); the name is only for people (labels in pictures), empty when the input gave none.
 struct Site {
   std::string id;
   double x = 0.0;
   double y = 0.0;
   double weight = 1.0;
+  std::string name{};  // initialized so that {id, x, y, weight} stays a complete initializer
 };
 
 struct Node {

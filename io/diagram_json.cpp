@@ -209,6 +209,7 @@ void write_diagram_json(const Diagram& d, std::ostream& out) {
     const std::string at = detail::element_path("sites", i);
     sites.push_back(Out{{"id", s.id}, {"x", checked(s.x, at + ".x")}, {"y", checked(s.y, at + ".y")},
                         {"weight", checked(s.weight, at + ".weight")}});
+    if (!s.name.empty()) sites.back()["name"] = s.name;
   }
   for (std::size_t i = 0; i < d.nodes.size(); ++i) {
     const std::string at = detail::element_path("nodes", i);

@@ -13,6 +13,8 @@ namespace covmap::io::detail {
 namespace {
 
 constexpr std::array<std::string_view, 4> kColumns = {"id", "x", "y", "weight"};
+// An optional column: a name for people (labels in pictures); absent or empty: no name.
+constexpr std::string_view kNameColumn = "name";
 
 struct Fields {
   std::vector<std::string> values;
@@ -91,12 +93,21 @@ std::optional<double> parse_number(std::string_view field, std::string_view name
   return value;
 }
 
+// Where the header names `column` (case-insensitively): the field indices, in order.
+std::vector<std::size_t> columns_named(const std::vector<std::string>& header, std::string_view column) {
+  std::vector<std::size_t> found;
+  for (std::size_t f = 0; f < header.size(); ++f)
+    if (lower(header[f]) == column) found.push_back(f);
+  return found;
+}
+
 }  // namespace
 
 SiteTable parse_sites_csv(std::string_view text, const std::string& file) {
   if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // UTF-8 byte order mark
 
   std::optional<std::array<std::size_t, 4>> column;  // index of id, x, y, weight; set by the header
+  std::optional<std::size_t> name_column;            // index of the optional name column
   std::vector<SiteDraft> drafts;
   int line_number = 0;
   std::size_t pos = 0;
@@ -112,20 +123,19 @@ SiteTable parse_sites_csv(std::string_view text, const std::string& file) {
       if (!fields.error.empty()) throw InputError(file, line_number, "header", fields.error);
       std::array<std::size_t, 4> found{};
       for (std::size_t c = 0; c < kColumns.size(); ++c) {
-        std::size_t count = 0;
-        for (std::size_t f = 0; f < fields.values.size(); ++f) {
-          if (lower(fields.values[f]) == kColumns[c]) {
-            found[c] = f;
-            ++count;
-          }
-        }
-        if (count != 1) {
+        const auto at = columns_named(fields.values, kColumns[c]);
+        if (at.size() != 1) {
           throw InputError(file, line_number, "header",
-                           std::string(count == 0 ? "missing" : "repeated") + " column '" + std::string(kColumns[c]) +
+                           std::string(at.empty() ? "missing" : "repeated") + " column '" + std::string(kColumns[c]) +
                                "' (the header must name id, x, y and weight once each, in any order)");
         }
+        found[c] = at.front();
       }
       column = found;
+      const auto names = columns_named(fields.values, kNameColumn);
+      if (names.size() > 1)
+        throw InputError(file, line_number, "header", "repeated column 'name' (name is optional, but at most once)");
+      if (!names.empty()) name_column = names.front();
       continue;
     }
 
@@ -161,6 +171,11 @@ SiteTable parse_sites_csv(std::string_view text, const std::string& file) {
       } else {
         draft.problems.push_back(error);
       }
+    }
+    // A row shorter than the header has no name: the name is optional, so that is no problem.
+    if (name_column && *name_column < fields.values.size()) {
+      if (valid_utf8(fields.values[*name_column])) draft.site.name = fields.values[*name_column];
+      else draft.problems.push_back("name is not valid UTF-8");
     }
     if (draft.usable()) check_site_values(draft);
     drafts.push_back(std::move(draft));

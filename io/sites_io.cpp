@@ -51,7 +51,8 @@ void write_sites_json(const std::vector<Site>& sites, std::ostream& out) {
       // file that read_sites rejects.
       if (!std::isfinite(v)) throw std::invalid_argument("write_sites_json: site '" + s.id + "' has a non-finite value");
     }
-    const nlohmann::ordered_json site = {{"id", s.id}, {"x", s.x}, {"y", s.y}, {"weight", s.weight}};
+    nlohmann::ordered_json site = {{"id", s.id}, {"x", s.x}, {"y", s.y}, {"weight", s.weight}};
+    if (!s.name.empty()) site["name"] = s.name;
     out << (i == 0 ? "\n  " : ",\n  ") << site.dump();
   }
   out << (sites.empty() ? "]}\n" : "\n]}\n");

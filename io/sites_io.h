@@ -3,8 +3,9 @@
 // Accepted input (docs/FORMATS.md has the full grammar):
 //   JSON  {"format":"covmap.sites/1","sites":[{"id":"a","x":0,"y":0,"weight":1}, ...]}
 //         id is a non-empty string or an integer; x, y, weight are numbers; all four required.
-//   CSV   a header naming the columns id, x, y, weight in any order (extra columns are ignored),
-//         then one site per row. Fields are trimmed; blank lines and lines starting with # are
+//         An optional "name" (a string; anything else is rejected) is kept in Site::name.
+//   CSV   a header naming the columns id, x, y, weight in any order, optionally name (extra
+//         columns are ignored), then one site per row; an empty name field means no name. Fields are trimmed; blank lines and lines starting with # are
 //         skipped; a field may be double-quoted ("a,b", "" for a quote).
 // The format is chosen by extension (.json / .csv), otherwise by content (a leading '{' is JSON).
 //
@@ -41,7 +42,8 @@ SiteTable read_sites(const std::filesystem::path& path, SitesFormat format = Sit
 // Parses text already in memory; `file` is only used in error messages.
 SiteTable parse_sites(std::string_view text, const std::string& file, SitesFormat format = SitesFormat::kDetect);
 
-// Writes covmap.sites/1, one site per line; doubles are written so they read back bit-exactly.
+// Writes covmap.sites/1, one site per line; doubles are written so they read back bit-exactly;
+// "name" only for sites that have one.
 void write_sites_json(const std::vector<Site>& sites, std::ostream& out);
 
 }  // namespace covmap::io

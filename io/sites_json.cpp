@@ -38,6 +38,11 @@ SiteTable sites_from_json(const Json& sites, const std::string& path, const std:
         draft.problems.push_back(phrase(e));
       }
     }
+    // The name is optional; when given it must be a string (a label for people, not an identity).
+    if (const Json* name = optional_member(entry, "name")) {
+      if (name->is_string()) draft.site.name = name->get<std::string>();
+      else draft.problems.push_back("name must be a string (got " + describe(*name) + "; leave it out for no name)");
+    }
     if (draft.usable()) check_site_values(draft);
     drafts.push_back(std::move(draft));
   }

@@ -77,6 +77,14 @@ Pairing pair_sites(const InputLabels& in, const Reconstruction& r) {
   return p;
 }
 
+// (input, reconstructed) pairs that name each other only (conflicts are reported as label faults).
+std::vector<std::pair<int, int>> one_to_one(const Pairing& p) {
+  std::vector<std::pair<int, int>> pairs;
+  for (const auto& [label, sites] : p.of_input)
+    if (sites.size() == 1 && p.of_reconstructed.at(*sites.begin()).size() == 1) pairs.emplace_back(label, *sites.begin());
+  return pairs;
+}
+
 // Swapped labels are looked for (by a scan of the sites) for this many position differences; the
 // rest are reported as positions (a graph whose labels are all wrong needs no more evidence).
 constexpr std::size_t kSwapLookups = 1000;
@@ -99,9 +107,7 @@ double distance_from(const Box& box, const Site& s) {
 // The pairs against one solution's sites (`sites`, indexed as Reconstruction::sites).
 void compare_positions_and_weights(const InputLabels& in, const std::vector<Site>& sites, const Box& box,
                                    const Pairing& p, double tol, double tau, std::vector<SiteDifference>& out) {
-  std::vector<std::pair<int, int>> pairs;  // one-to-one pairs only (conflicts are reported already)
-  for (const auto& [label, sites] : p.of_input)
-    if (sites.size() == 1 && p.of_reconstructed.at(*sites.begin()).size() == 1) pairs.emplace_back(label, *sites.begin());
+  const std::vector<std::pair<int, int>> pairs = one_to_one(p);
   std::vector<double> ratios;
   for (const auto& [label, site] : pairs) ratios.push_back(in.sites[label].weight / sites[site].weight);
   if (ratios.empty()) return;
@@ -154,6 +160,9 @@ InputSitesComparison compare_input_sites(const InputLabels& in, const Reconstruc
   Pairing p = pair_sites(in, r);
   out.differences = std::move(p.label_faults);
   out.positions_compared = r.unique;
+  out.input_site.assign(r.sites.size(), kNone);
+  for (const auto& [label, site] : one_to_one(p))
+    if (site >= 0 && static_cast<std::size_t>(site) < r.sites.size()) out.input_site[site] = label;
   if (r.unique) {
     // Where two solutions survive (Lemma 6) the input's sites may be either: the one they fit best.
     const Box box = graph_extent(r.graph);
@@ -173,4 +182,16 @@ InputSitesComparison compare_input_sites(const InputLabels& in, const Reconstruc
 }
 
 }  // namespace stages
+
+std::vector<Site> named_as_input(std::vector<Site> reconstructed, const std::vector<Site>& input,
+                                 const InputSitesComparison& comparison) {
+  for (std::size_t k = 0; k < reconstructed.size() && k < comparison.input_site.size(); ++k) {
+    const int paired = comparison.input_site[k];
+    if (paired == kNone || static_cast<std::size_t>(paired) >= input.size()) continue;
+    reconstructed[k].id = input[paired].id;
+    reconstructed[k].name = input[paired].name;
+  }
+  return reconstructed;
+}
+
 }  // namespace covmap::recognition

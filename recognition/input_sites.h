@@ -50,6 +50,9 @@ struct InputSitesComparison {
   bool agree = true;
   bool positions_compared = true;  // false when the reconstruction is not unique
   std::vector<SiteDifference> differences;
+  // Per reconstructed site: the input site whose labels name its faces, when the two pair one to
+  // one (whatever their positions); kNone when no label or several name it.
+  std::vector<int> input_site;
 };
 
 // The input's sites and arc labels as recognize() received them.
@@ -57,5 +60,12 @@ struct InputLabels {
   std::vector<Site> sites;
   std::vector<int> left, right;  // per arc
 };
+
+// The reconstructed sites called as the input calls them: each one paired with an input site
+// (comparison.input_site) takes that site's id and name, so that pictures and messages of the
+// reconstruction name (and colour) a site as the input did. Positions and weights stay the
+// reconstruction's; unpaired sites keep their own ids.
+std::vector<Site> named_as_input(std::vector<Site> reconstructed, const std::vector<Site>& input,
+                                 const InputSitesComparison& comparison);
 
 }  // namespace covmap::recognition

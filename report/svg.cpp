@@ -2,55 +2,21 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <ostream>
 #include <stdexcept>
 
+#include <numeric>
+#include <vector>
+
 #include "report/svg_geometry.h"
+#include "report/svg_layout.h"
 
 namespace covmap::report {
 namespace {
 
 using detail::svg_number;
-
-// The golden angle in degrees: successive multiples never come close to repeating a hue.
-constexpr double kGoldenAngle = 137.50776405003785;
-
-std::string hex_colour(double hue_degrees, double saturation, double lightness) {
-  // HSL to RGB (CSS Color 3 algorithm); hex because SVG 1.1 viewers need not understand hsl().
-  const auto channel = [&](double n) {
-    const double k = std::fmod(n + hue_degrees / 30.0, 12.0);
-    const double a = saturation * std::min(lightness, 1 - lightness);
-    return lightness - a * std::max(-1.0, std::min({k - 3, 9 - k, 1.0}));
-  };
-  char buffer[8];
-  std::snprintf(buffer, sizeof buffer, "#%02x%02x%02x", static_cast<int>(std::lround(channel(0) * 255)),
-                static_cast<int>(std::lround(channel(8) * 255)), static_cast<int>(std::lround(channel(4) * 255)));
-  return buffer;
-}
-
-std::string dot_colour(std::size_t i) { return hex_colour(std::fmod(i * kGoldenAngle, 360.0), 0.6, 0.35); }
-
-// Text for XML content and attribute values. Control characters other than tab, newline and
-// carriage return are not allowed in XML 1.0 at all, so they become '?'.
-std::string xml_escape(const std::string& text) {
-  std::string out;
-  out.reserve(text.size());
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r') out += '?';
-        else out += c;
-    }
-  }
-  return out;
-}
+using detail::xml_escape;
 
 Box bounding_box(const auto& points) {
   Box b{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
@@ -77,16 +43,118 @@ Box view_box(const Diagram& d, const SvgOptions& o) {
   return {b.xmin - pad - grow_x, b.ymin - pad - grow_y, b.xmax + pad + grow_x, b.ymax + pad + grow_y};
 }
 
-}  // namespace
+// How the picture maps the world: pixels per world unit, and the picture's size.
+struct Frame {
+  Box view;
+  Box far;
+  double scale = 1.0;  // pixels per world unit
+  double width_px = 0.0;
+  double height_px = 0.0;
+  Point pixel(double x, double y) const { return {(x - view.xmin) * scale, (view.ymax - y) * scale}; }
+};
 
-std::string site_colour(std::size_t i) { return hex_colour(std::fmod(i * kGoldenAngle, 360.0), 0.55, 0.80); }
+// The attributes of a stroke `pixels` wide (svg.h: world units unless non_scaling_stroke).
+std::string stroke_width(const SvgOptions& o, const Frame& f, double pixels) {
+  return o.non_scaling_stroke ? "stroke-width=\"" + svg_number(pixels) + "\" vector-effect=\"non-scaling-stroke\""
+                              : "stroke-width=\"" + svg_number(pixels / f.scale) + "\"";
+}
+
+// What a label says: the site's name, else its id.
+const std::string& label_text(const Site& s) { return s.name.empty() ? s.id : s.name; }
+
+// "north (North mast)": the id, and the name when there is one.
+std::string id_and_name(const Site& s) { return s.id + (s.name.empty() ? "" : " (" + s.name + ")"); }
+
+void write_faces(const Diagram& d, const Frame& f, std::ostream& out) {
+  out << "<g class=\"faces\" fill-rule=\"evenodd\" stroke=\"none\">\n";
+  for (const auto& face : d.faces) {
+    const bool known = face.site >= 0 && static_cast<std::size_t>(face.site) < d.sites.size();
+    const std::string name = known ? xml_escape(id_and_name(d.sites[face.site])) : "?";
+    out << "<path class=\"face" << (face.orphan ? " orphan" : "") << "\" fill=\""
+        << (known ? site_colour_for(d.sites[face.site].id) : "#dddddd") << "\" d=\"" << detail::face_path(d, face, f.far)
+        << "\"><title>site " << name << (face.orphan ? " (orphan face)" : "") << "</title></path>\n";
+  }
+  out << "</g>\n";
+}
+
+void write_arcs(const Diagram& d, const SvgOptions& o, const Frame& f, std::ostream& out) {
+  out << "<g class=\"arcs\" fill=\"none\" stroke=\"#333333\" stroke-linecap=\"round\">\n";
+  for (std::size_t i = 0; i < d.arcs.size(); ++i) {
+    const bool frame = d.arcs[i].frame;
+    out << "<path" << (frame ? " class=\"frame\" stroke=\"#000000\" " : " ")
+        << stroke_width(o, f, frame ? o.frame_width_px : o.arc_width_px) << " d=\""
+        << detail::arc_path(d, static_cast<int>(i), f.far) << "\"/>\n";
+  }
+  out << "</g>\n";
+}
+
+// A site's dot radius in pixels: area proportional to weight reads naturally; capped at 4 times
+// the lightest's radius so that one heavy site cannot hide the map.
+double dot_radius_px(const Site& s, double lightest, const SvgOptions& o) {
+  return o.site_radius_px * (lightest > 0 ? std::clamp(std::sqrt(s.weight / lightest), 1.0, 4.0) : 1.0);
+}
+
+double lightest_weight(const Diagram& d) {
+  double lightest = std::numeric_limits<double>::infinity();
+  for (const auto& s : d.sites) lightest = std::min(lightest, s.weight);
+  return lightest;
+}
+
+void write_nodes_and_sites(const Diagram& d, const SvgOptions& o, const Frame& f, std::ostream& out) {
+  if (o.show_nodes && !d.nodes.empty()) {
+    out << "<g class=\"nodes\" fill=\"#333333\">\n";
+    for (const auto& n : d.nodes)
+      out << "<circle cx=\"" << svg_number(n.x) << "\" cy=\"" << svg_number(n.y) << "\" r=\""
+          << svg_number(o.node_radius_px / f.scale) << "\"/>\n";
+    out << "</g>\n";
+  }
+  if (!o.show_sites || d.sites.empty()) return;
+  const double lightest = lightest_weight(d);
+  out << "<g class=\"sites\" stroke=\"#ffffff\">\n";
+  for (const auto& s : d.sites) {
+    out << "<circle cx=\"" << svg_number(s.x) << "\" cy=\"" << svg_number(s.y) << "\" r=\""
+        << svg_number(dot_radius_px(s, lightest, o) / f.scale) << "\" fill=\"" << detail::site_dot_colour_for(s.id)
+        << "\" " << stroke_width(o, f, 1.0) << "><title>" << xml_escape(id_and_name(s)) << " (weight "
+        << svg_number(s.weight) << ")</title></circle>\n";
+  }
+  out << "</g>\n";
+}
+
+// Labels sit outside the flipped group, or the text would be upside down: (x, y) is written (x, -y).
+void write_labels(const Diagram& d, const SvgOptions& o, const Frame& f, std::ostream& out) {
+  if (!o.show_sites || d.sites.empty() || o.max_labels == 0) return;
+  // Heaviest first (svg.h), ties in input order.
+  std::vector<std::size_t> order(d.sites.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return d.sites[a].weight > d.sites[b].weight; });
+  const double lightest = lightest_weight(d);
+  std::vector<detail::LabelRequest> requests;
+  requests.reserve(order.size());
+  for (const std::size_t i : order) {
+    const Site& s = d.sites[i];
+    requests.push_back({f.pixel(s.x, s.y), dot_radius_px(s, lightest, o), label_text(s)});
+  }
+  const auto placed = detail::place_labels(requests, o.font_px, f.width_px, f.height_px, o.max_labels);
+  out << "<g class=\"labels\" font-family=\"sans-serif\" font-size=\"" << svg_number(o.font_px / f.scale)
+      << "\" fill=\"#111111\" stroke=\"#ffffff\" stroke-width=\"" << svg_number(detail::kHaloEm * o.font_px / f.scale)
+      << "\" paint-order=\"stroke\">\n";
+  for (const auto& p : placed) {
+    out << "<text x=\"" << svg_number(f.view.xmin + p.baseline.x / f.scale) << "\" y=\""
+        << svg_number(p.baseline.y / f.scale - f.view.ymax) << "\">" << xml_escape(requests[p.request].text)
+        << "</text>\n";
+  }
+  out << "</g>\n";
+}
+
+}  // namespace
 
 bool SvgOptions::is_valid(std::string* why) const {
   const auto fail = [&](const char* reason) {
     if (why) *why = reason;
     return false;
   };
-  if (!(width_px > 0) || !std::isfinite(width_px)) return fail("width_px must be positive and finite");
+  if (width_px && (!(*width_px > 0) || !std::isfinite(*width_px))) return fail("width_px must be positive and finite");
   if (!(margin >= 0) || !std::isfinite(margin)) return fail("margin must be non-negative and finite");
   if (view) {
     const auto& v = *view;
@@ -101,21 +169,19 @@ bool SvgOptions::is_valid(std::string* why) const {
 
 void write_svg(const Diagram& d, std::ostream& out, const SvgOptions& o) {
   if (std::string why; !o.is_valid(&why)) throw std::invalid_argument("write_svg: " + why);
-  const Box view = view_box(d, o);
-  const Box far = detail::far_box(d, view);
-  const double scale = o.width_px / view.width();  // pixels per world unit
-  const double height_px = view.height() * scale;
-  const auto px = [&](double pixels) { return svg_number(pixels / scale); };  // pixels -> world units
-  const auto stroke_width = [&](double pixels) {
-    return o.non_scaling_stroke ? "stroke-width=\"" + svg_number(pixels) + "\" vector-effect=\"non-scaling-stroke\""
-                                : "stroke-width=\"" + px(pixels) + "\"";
-  };
+  Frame f;
+  f.view = view_box(d, o);
+  f.far = detail::far_box(d, f.view);
+  f.width_px = o.width_px ? *o.width_px : detail::automatic_width_px(d.sites, f.view);
+  f.scale = f.width_px / f.view.width();
+  f.height_px = f.view.height() * f.scale;
+  const Box& view = f.view;
 
   // The viewBox is in world units with y negated, so world point (x, y) sits at (x, -y); the
   // scale(1,-1) group below lets everything inside use world coordinates directly.
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << svg_number(o.width_px) << "\" height=\""
-      << svg_number(height_px) << "\" viewBox=\"" << svg_number(view.xmin) << ' ' << svg_number(-view.ymax) << ' '
+      << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << svg_number(f.width_px) << "\" height=\""
+      << svg_number(f.height_px) << "\" viewBox=\"" << svg_number(view.xmin) << ' ' << svg_number(-view.ymax) << ' '
       << svg_number(view.width()) << ' ' << svg_number(view.height()) << "\">\n"
       << "<title>covmap diagram: " << d.sites.size() << " sites, " << d.nodes.size() << " nodes, " << d.arcs.size()
       << " arcs, " << d.faces.size() << " faces</title>\n";
@@ -125,65 +191,36 @@ void write_svg(const Diagram& d, std::ostream& out, const SvgOptions& o) {
         << xml_escape(o.background) << "\"/>\n";
   }
   out << "<g transform=\"scale(1,-1)\">\n";
-
-  if (o.fill_faces && !d.faces.empty()) {
-    out << "<g class=\"faces\" fill-rule=\"evenodd\" stroke=\"none\">\n";
-    for (const auto& face : d.faces) {
-      const bool known = face.site >= 0 && static_cast<std::size_t>(face.site) < d.sites.size();
-      const std::string name = known ? xml_escape(d.sites[face.site].id) : "?";
-      out << "<path class=\"face" << (face.orphan ? " orphan" : "") << "\" fill=\""
-          << (known ? site_colour(face.site) : "#dddddd") << "\" d=\"" << detail::face_path(d, face, far)
-          << "\"><title>site " << name << (face.orphan ? " (orphan face)" : "") << "</title></path>\n";
-    }
-    out << "</g>\n";
-  }
-
-  out << "<g class=\"arcs\" fill=\"none\" stroke=\"#333333\" stroke-linecap=\"round\">\n";
-  for (std::size_t i = 0; i < d.arcs.size(); ++i) {
-    const bool frame = d.arcs[i].frame;
-    out << "<path" << (frame ? " class=\"frame\" stroke=\"#000000\" " : " ")
-        << stroke_width(frame ? o.frame_width_px : o.arc_width_px) << " d=\"" << detail::arc_path(d, static_cast<int>(i), far)
-        << "\"/>\n";
-  }
+  if (o.fill_faces && !d.faces.empty()) write_faces(d, f, out);
+  write_arcs(d, o, f, out);
+  write_nodes_and_sites(d, o, f, out);
   out << "</g>\n";
-
-  if (o.show_nodes && !d.nodes.empty()) {
-    out << "<g class=\"nodes\" fill=\"#333333\">\n";
-    for (const auto& n : d.nodes) {
-      out << "<circle cx=\"" << svg_number(n.x) << "\" cy=\"" << svg_number(n.y) << "\" r=\"" << px(o.node_radius_px)
-          << "\"/>\n";
-    }
-    out << "</g>\n";
-  }
-
-  if (o.show_sites && !d.sites.empty()) {
-    double lightest = std::numeric_limits<double>::infinity();
-    for (const auto& s : d.sites) lightest = std::min(lightest, s.weight);
-    out << "<g class=\"sites\" stroke=\"#ffffff\">\n";
-    for (std::size_t i = 0; i < d.sites.size(); ++i) {
-      const auto& s = d.sites[i];
-      // Area proportional to weight reads naturally; capped so one heavy site cannot hide the map.
-      const double grow = lightest > 0 ? std::clamp(std::sqrt(s.weight / lightest), 1.0, 4.0) : 1.0;
-      out << "<circle cx=\"" << svg_number(s.x) << "\" cy=\"" << svg_number(s.y) << "\" r=\""
-          << px(o.site_radius_px * grow) << "\" fill=\"" << dot_colour(i) << "\" " << stroke_width(1.0) << "><title>" << xml_escape(s.id) << " (weight "
-          << svg_number(s.weight) << ")</title></circle>\n";
-    }
-    out << "</g>\n";
-  }
-  out << "</g>\n";
-
-  // Labels sit outside the flipped group, or the text would be upside down.
-  if (o.show_sites && !d.sites.empty() && d.sites.size() <= o.max_labels) {
-    out << "<g class=\"labels\" font-family=\"sans-serif\" font-size=\"" << px(o.font_px)
-        << "\" fill=\"#111111\" stroke=\"#ffffff\" stroke-width=\"" << px(o.font_px / 4)
-        << "\" paint-order=\"stroke\">\n";
-    for (const auto& s : d.sites) {
-      out << "<text x=\"" << svg_number(s.x + (o.site_radius_px + 2) / scale) << "\" y=\""
-          << svg_number(-s.y - (o.site_radius_px + 2) / scale) << "\">" << xml_escape(s.id) << "</text>\n";
-    }
-    out << "</g>\n";
-  }
+  write_labels(d, o, f, out);
+  if (o.show_scale_bar) detail::write_scale_bar(out, view, f.scale, o.font_px, o.units);
   out << "</svg>\n";
 }
 
+namespace detail {
+
+// Control characters other than tab, newline and carriage return are not allowed in XML 1.0 at
+// all, so they become '?'.
+std::string xml_escape(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (const char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&apos;"; break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r') out += '?';
+        else out += c;
+    }
+  }
+  return out;
+}
+
+}  // namespace detail
 }  // namespace covmap::report

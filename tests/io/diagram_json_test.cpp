@@ -22,6 +22,7 @@ void expect_identical(const Diagram& a, const Diagram& b) {
   ASSERT_EQ(a.sites.size(), b.sites.size());
   for (std::size_t i = 0; i < a.sites.size(); ++i) {
     EXPECT_EQ(a.sites[i].id, b.sites[i].id);
+    EXPECT_EQ(a.sites[i].name, b.sites[i].name);
     EXPECT_TRUE(same(a.sites[i].x, b.sites[i].x) && same(a.sites[i].y, b.sites[i].y) &&
                 same(a.sites[i].weight, b.sites[i].weight)) << "site " << i;
   }
@@ -72,6 +73,7 @@ void expect_identical(const Diagram& a, const Diagram& b) {
 Diagram sample() {
   Diagram d;
   d.sites = {{"a", 0.1, -0.0, 1.0 / 3.0}, {"b", 5e-324, 1e300, 2.0}, {"c & <d>", -7.25, std::nextafter(1.0, 2.0), DBL_MAX}};
+  d.sites[1].name = "Mast \"b\", north";  // names are optional: one site has one
   d.nodes = {{1.0 / 3.0, 2.0 / 3.0}, {-1e-300, 123456789.123456789}, {0.30000000000000004, 0.0}};
   d.arcs = {
       {kNone, kNone, Circle{-1, 0, 2}, true, 0, 1, false},                   // full circle

@@ -150,6 +150,35 @@ TEST(SitesCsv, ByteOrderMarkIsSkipped) {
   EXPECT_EQ(csv("\xEF\xBB\xBFid,x,y,weight\na,0,0,1\n").sites[0].id, "a");
 }
 
+TEST(SitesCsv, OptionalNameColumnIsKept) {
+  const auto t = csv("id,x,y,weight,Name,note\n"
+                     "a,0,0,1,North mast,x\n"
+                     "b,1,0,1,\"Gate, west\",y\n"
+                     "c,2,0,1,,z\n"
+                     "d,3,0,1\n");  // a short row: the name is optional, so no name
+  ASSERT_EQ(t.sites.size(), 4u);
+  EXPECT_EQ(t.sites[0].name, "North mast");
+  EXPECT_EQ(t.sites[1].name, "Gate, west");
+  EXPECT_EQ(t.sites[2].name, "");
+  EXPECT_EQ(t.sites[3].name, "");
+  EXPECT_EQ(t.sites[0].id, "a");  // the name does not replace the id
+}
+
+TEST(SitesCsv, WithoutNameColumnNamesAreEmpty) {
+  const auto t = csv("id,x,y,weight,note\na,0,0,1,North mast\n");
+  ASSERT_EQ(t.sites.size(), 1u);
+  EXPECT_EQ(t.sites[0].name, "");
+}
+
+TEST(SitesCsv, NameProblems) {
+  const auto repeated = csv_error("id,x,y,weight,name,NAME\na,0,0,1,p,q\n");
+  EXPECT_EQ(repeated.line(), 1);
+  EXPECT_NE(std::string(repeated.what()).find("repeated column 'name'"), std::string::npos) << repeated.what();
+  const auto bad = csv_error("id,x,y,weight,name\na,0,0,1,\xff\n");
+  EXPECT_EQ(bad.line(), 2);
+  EXPECT_EQ(bad.message(), "name is not valid UTF-8");
+}
+
 // ---- JSON ----
 
 TEST(SitesJson, ReadsStringAndIntegerIds) {
@@ -193,6 +222,26 @@ TEST(SitesJson, MissingAndMistypedFieldsNameIndexAndId) {
   EXPECT_EQ(format_problem(e.file, e.problems[2]), "sites.json: sites[3]: id must be a string or an integer (got number 1.5)");
   EXPECT_EQ(format_problem(e.file, e.problems[3]), "sites.json: sites[4]: missing id");
   EXPECT_EQ(format_problem(e.file, e.problems[4]), "sites.json: sites[5]: must be an object (got number 42)");
+}
+
+TEST(SitesJson, OptionalNameIsKept) {
+  const auto t = json(json_sites(R"({"id":"a","x":0,"y":0,"weight":1,"name":"North \u00e9"},)"
+                                 R"({"id":"b","x":1,"y":0,"weight":1},)"
+                                 R"({"id":"c","x":2,"y":0,"weight":1,"name":""})"));
+  ASSERT_EQ(t.sites.size(), 3u);
+  EXPECT_EQ(t.sites[0].name, "North \xC3\xA9");
+  EXPECT_EQ(t.sites[1].name, "");
+  EXPECT_EQ(t.sites[2].name, "");
+}
+
+TEST(SitesJson, NameThatIsNotAStringIsAnErrorNamingTheSite) {
+  const auto e = json_error(json_sites(R"({"id":"a","x":0,"y":0,"weight":1,"name":17},)"
+                                       R"({"id":"b","x":1,"y":0,"weight":1,"name":null})"));
+  ASSERT_EQ(e.problems.size(), 2u) << e.what();
+  EXPECT_EQ(format_problem(e.file, e.problems[0]),
+            "sites.json: sites[0] (site 'a'): name must be a string (got number 17; leave it out for no name)");
+  EXPECT_EQ(format_problem(e.file, e.problems[1]),
+            "sites.json: sites[1] (site 'b'): name must be a string (got null; leave it out for no name)");
 }
 
 TEST(SitesJson, ValueProblems) {
@@ -260,6 +309,18 @@ TEST(WriteSitesJson, RoundTripsBitExactly) {
     EXPECT_EQ(std::bit_cast<std::uint64_t>(back[i].y), std::bit_cast<std::uint64_t>(sites[i].y)) << i;
     EXPECT_EQ(std::bit_cast<std::uint64_t>(back[i].weight), std::bit_cast<std::uint64_t>(sites[i].weight)) << i;
   }
+}
+
+TEST(WriteSitesJson, NamesRoundTripAndEmptyNamesAreLeftOut) {
+  std::vector<Site> sites = {{"a", 0, 0, 1}, {"b", 1, 0, 1}};
+  sites[0].name = "North \"mast\" \xC3\xA9";
+  std::ostringstream out;
+  write_sites_json(sites, out);
+  EXPECT_EQ(out.str().find("\"name\":\"\""), std::string::npos) << out.str();
+  const auto back = json(out.str()).sites;
+  ASSERT_EQ(back.size(), 2u);
+  EXPECT_EQ(back[0].name, sites[0].name);
+  EXPECT_EQ(back[1].name, "");
 }
 
 TEST(WriteSitesJson, RefusesNonFiniteValues) {
