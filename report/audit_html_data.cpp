@@ -39,14 +39,14 @@ Json grid_xy(const GridFrame& f, bool drawn, Point p, const char* key_x, const c
   return into;
 }
 
-Json sensor_entry(const GridFrame& f, const audit::SensorAudit& s, std::size_t input_index) {
+Json sensor_entry(const GridFrame& f, const audit::SensorAudit& s) {
   const bool compared = s.reported && s.in_map;
   Json j = {{"id", s.id},
             {"name", s.name},
             {"verdict", 0},
             {"attention", needs_attention(s.verdict)},
             {"basis", std::string(basis_words(s.basis))},
-            {"colour", site_colour(input_index)},
+            {"colour", site_colour_for(s.id)},  // the same colour as in every --svg picture
             {"moved", number_if(compared, s.position_error_m)},
             {"sigma", number_if(s.in_map && s.uncertainty_available, s.sigma_position_m)},
             {"power_error", number(compared ? s.power_error_db : std::nullopt)},
@@ -139,7 +139,7 @@ std::string audit_page_data(const AuditReportContext& c) {
   // By column: each member name once rather than once per sensor (a third of the page at 10^4).
   Json columns = Json::object();
   for (std::size_t k = 0; k < order.size(); ++k) {
-    const Json entry = sensor_entry(f, r.sensors[order[k]], order[k]);
+    const Json entry = sensor_entry(f, r.sensors[order[k]]);
     for (const auto& [key, value] : entry.items()) columns[key].push_back(value);
     position_of.emplace(r.sensors[order[k]].id, k);
   }

@@ -464,7 +464,7 @@
         const sw = toScreen(...gridOfLonLat(tileLon(x, z), tileLat(y + 1, z)));
         const s = img.naturalWidth;
         ctx.setTransform(dpr * (ne[0] - nw[0]) / s, dpr * (ne[1] - nw[1]) / s, dpr * (sw[0] - nw[0]) / s, dpr * (sw[1] - nw[1]) / s, dpr * nw[0], dpr * nw[1]);
-        ctx.drawImage(img, 0, 0);
+        ctx.drawImage(img, 0, 0, s + 1, s + 1);  // one tile pixel of overlap: no seams between tiles
       }
     }
     ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
