@@ -38,6 +38,8 @@ std::string verdict_style() {
 }
 
 std::string count_text(std::size_t n) { return std::to_string(n); }
+// A value the user gave (an option), as short as it reads back exactly: "3.5", not "3.50000".
+std::string as_given(double v) { return detail::sort_key(v); }
 
 void row(std::ostream& out, const std::string& name, const std::string& value_html) {
   out << "<tr><th>" << name << "</th><td>" << value_html << "</td></tr>\n";
@@ -201,7 +203,7 @@ void sensor_table(std::ostream& out, const AuditReportContext& c) {
          "undetermined, consistent; within each, the largest &chi;&sup2; first\">sort worst first</button></div>\n"
       << "<p class=\"meta\" id=\"table-count\"></p>\n";
   const std::string chi2_limit =
-      c.options ? human_number(c.options->inconsistency_chi2, 4) : std::string("the threshold");
+      c.options ? as_given(c.options->inconsistency_chi2) : std::string("the threshold");
   out << "<table id=\"sensor-table\"><thead><tr>"
       << "<th data-key=\"sensor\" data-type=\"text\" title=\"The sensor's id, and its name when the input gives one\">sensor</th>"
       << "<th data-key=\"verdict\" data-type=\"text\" title=\"Sorted worst first by default\">verdict</th>"
@@ -250,7 +252,7 @@ void map_and_cleaning(std::ostream& out, const AuditReportContext& c) {
     row(out, "coordinates", "planar (metres)");
   }
   row(out, "sensors file", c.sensors_file.empty() ? "none" : "<code>" + html_escape(c.sensors_file) + "</code>");
-  row(out, "path-loss exponent &alpha;", c.alpha ? human_number(*c.alpha, 6) : "not given");
+  row(out, "path-loss exponent &alpha;", c.alpha ? as_given(*c.alpha) : "not given");
   out << "</table></div>\n";
 
   const cleaning::CleaningReport& k = c.result.cleaned.report;
@@ -275,12 +277,12 @@ void fit_and_thresholds(std::ostream& out, const AuditReportContext& c) {
   row(out, "least-squares fit", r.refinement_converged ? "converged"
                                                        : "stopped before converging: positions may be less precise than stated");
   if (c.options) {
-    row(out, "a sensor is inconsistent when", "&chi;&sup2; &gt; " + human_number(c.options->inconsistency_chi2, 6) +
+    row(out, "a sensor is inconsistent when", "&chi;&sup2; &gt; " + as_given(c.options->inconsistency_chi2) +
                                                    " (1 consistent sensor in 1000 is flagged by chance)");
     const double floor_bins = c.options->position_floor_bins;
-    row(out, "smallest uncertainty assumed", human_number(floor_bins * r.bin_size_m, 4) + " m (" + human_number(floor_bins, 4) +
+    row(out, "smallest uncertainty assumed", human_number(floor_bins * r.bin_size_m, 4) + " m (" + as_given(floor_bins) +
                                                  (floor_bins == 1 ? " raster cell" : " raster cells") + ") and " +
-                                                 human_number(c.options->power_floor_db, 4) + " dB");
+                                                 as_given(c.options->power_floor_db) + " dB");
   }
   out << "</table></div>\n";
 }

@@ -652,6 +652,10 @@
         if (key === 'sensor') {
           td.appendChild(el('code', {}, s.id));
           if (s.name) td.appendChild(el('div', {'class': 'name'}, s.name));
+        } else if (key === 'reason') {
+          // Two lines in the table (the numbers are in their columns); all of it on hover and when selected.
+          td.appendChild(el('div', {'class': 'clamp'}, s.reason));
+          td.title = s.reason;
         } else {
           td.textContent = cellText(s, key);
         }
