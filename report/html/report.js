@@ -409,8 +409,9 @@
   function lonlat(gx, gy) {
     const L = data.lonlat;
     if (!L) return null;
-    const n = L.n, u = Math.max(0, Math.min(n, gx / G.w * n)), v = Math.max(0, Math.min(n, gy / G.h * n));
-    const i = Math.min(n - 1, Math.floor(u)), j = Math.min(n - 1, Math.floor(v)), fu = u - i, fv = v - j;
+    // Outside the frame the nearest grid cell is extended (linear extrapolation), not clamped.
+    const n = L.n, u = gx / G.w * n, v = gy / G.h * n;
+    const i = Math.max(0, Math.min(n - 1, Math.floor(u))), j = Math.max(0, Math.min(n - 1, Math.floor(v))), fu = u - i, fv = v - j;
     const at = (a, ii, jj) => a[jj * (n + 1) + ii];
     const mix = a => (1 - fv) * ((1 - fu) * at(a, i, j) + fu * at(a, i + 1, j)) + fv * ((1 - fu) * at(a, i, j + 1) + fu * at(a, i + 1, j + 1));
     return [mix(L.lon), mix(L.lat)];
