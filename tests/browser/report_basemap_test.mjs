@@ -4,9 +4,9 @@
 // report.json's lon/lat with the tile formulas) and draws them under the cells.
 //
 // Usage: node tests/browser/report_basemap_test.mjs path/to/covmap path/to/datasets path/to/artefact-dir
-import { launchBrowser, openPage, screenshot, ToolMissing } from './lib/browser.mjs';
-import { CheckRunner, expect } from './lib/checks.mjs';
-import { auditBundledMap, removeAudit } from './lib/covmap.mjs';
+import { openPage, screenshot } from './lib/browser.mjs';
+import { expect } from './lib/checks.mjs';
+import { runAuditedPageTest } from './lib/main.mjs';
 
 const VIEWPORT = { width: 1280, height: 900 };
 const MAP = 'bern';
@@ -88,22 +88,8 @@ async function checks(run, page, log, report, artefacts) {
   });
 }
 
-async function main([covmap, datasets, artefacts]) {
-  if (!covmap || !datasets || !artefacts) {
-    console.error('usage: node report_basemap_test.mjs path/to/covmap path/to/datasets path/to/artefact-dir');
-    return 2;
-  }
-  const run = new CheckRunner();
-  let browser = null;
-  let audit = null;
-  try {
-    browser = await launchBrowser();
-    try {
-      audit = auditBundledMap(covmap, datasets, MAP, ['--basemap', TILE_URL]);
-    } catch (error) {
-      run.fatal(`covmap audit of the bundled ${MAP} map failed: ${error.message}`);
-      return run.finish();
-    }
+process.exitCode = await runAuditedPageTest('report_basemap_test.mjs', process.argv.slice(2),
+  { map: MAP, extraArgs: ['--basemap', TILE_URL] }, async (run, browser, audit, artefacts) => {
     const { page, context, log } = await openPage(browser, audit.html, VIEWPORT);
     try {
       await checks(run, page, log, audit.report, artefacts);
@@ -111,17 +97,7 @@ async function main([covmap, datasets, artefacts]) {
       run.fatal(`the checks stopped: ${error.message}`);
     }
     await run.check('no console or page errors', async () =>
-      expect(log.consoleErrors.length + log.pageErrors.length === 0, 'none', [...log.consoleErrors, ...log.pageErrors].join(' | ')));
+      expect(log.consoleErrors.length + log.pageErrors.length === 0, 'none',
+             [...log.consoleErrors, ...log.pageErrors].join(' | ')));
     await context.close();
-    return run.finish();
-  } catch (error) {
-    if (!(error instanceof ToolMissing)) throw error;
-    console.error(`browser tests cannot run: ${error.message}`);
-    return 1;
-  } finally {
-    if (browser) await browser.close();
-    removeAudit(audit);
-  }
-}
-
-process.exitCode = await main(process.argv.slice(2));
+  });

@@ -5,9 +5,9 @@
 // page's own data.
 //
 // Usage: node tests/browser/report_features_test.mjs path/to/covmap path/to/datasets path/to/artefact-dir
-import { launchBrowser, openPage, screenshot, ToolMissing } from './lib/browser.mjs';
-import { CheckRunner, expect, expectEqual } from './lib/checks.mjs';
-import { auditBundledMap, removeAudit } from './lib/covmap.mjs';
+import { openPage, screenshot } from './lib/browser.mjs';
+import { expect, expectEqual } from './lib/checks.mjs';
+import { runAuditedPageTest } from './lib/main.mjs';
 
 const VIEWPORT = { width: 1280, height: 900 };
 const MAP = 'bern';
@@ -191,22 +191,8 @@ async function checks(run, page, report, artefacts) {
   await screenshot(page, artefacts, 'report-features-after-interaction');
 }
 
-async function main([covmap, datasets, artefacts]) {
-  if (!covmap || !datasets || !artefacts) {
-    console.error('usage: node report_features_test.mjs path/to/covmap path/to/datasets path/to/artefact-dir');
-    return 2;
-  }
-  const run = new CheckRunner();
-  let browser = null;
-  let audit = null;
-  try {
-    browser = await launchBrowser();
-    try {
-      audit = auditBundledMap(covmap, datasets, MAP);
-    } catch (error) {
-      run.fatal(`covmap audit of the bundled ${MAP} map failed: ${error.message}`);
-      return run.finish();
-    }
+process.exitCode = await runAuditedPageTest('report_features_test.mjs', process.argv.slice(2), { map: MAP },
+  async (run, browser, audit, artefacts) => {
     const { page, context, log } = await openPage(browser, audit.html, VIEWPORT);
     try {
       await checks(run, page, audit.report, artefacts);
@@ -219,15 +205,4 @@ async function main([covmap, datasets, artefacts]) {
     await run.check('no request beyond file: and data:', async () =>
       expect(log.remoteRequests.length === 0, 'none', log.remoteRequests.join(' | ')));
     await context.close();
-    return run.finish();
-  } catch (error) {
-    if (!(error instanceof ToolMissing)) throw error;
-    console.error(`browser tests cannot run: ${error.message}`);
-    return 1;
-  } finally {
-    if (browser) await browser.close();
-    removeAudit(audit);
-  }
-}
-
-process.exitCode = await main(process.argv.slice(2));
+  });

@@ -11,9 +11,9 @@
 //
 // EXPECTED_TO_FAIL_UNTIL_REDESIGN lists the checks today's page fails (issue 13); they are
 // reported XFAIL, and as an error once they pass, so the list can only shrink.
-import { launchBrowser, openPage, screenshot, ToolMissing } from './lib/browser.mjs';
-import { CheckRunner, expect } from './lib/checks.mjs';
-import { auditBundledMap, removeAudit } from './lib/covmap.mjs';
+import { openPage, screenshot } from './lib/browser.mjs';
+import { expect } from './lib/checks.mjs';
+import { runAuditedPageTest } from './lib/main.mjs';
 
 // A laptop and a desktop screen, as issue 13 asks the page to be read at.
 const WIDTHS = [1280, 1920];
@@ -116,35 +116,10 @@ async function checkWidth(run, browser, reportHtml, expected, artefacts, width) 
   }
 }
 
-async function main([covmap, datasets, artefacts]) {
-  if (!covmap || !datasets || !artefacts) {
-    console.error('usage: node report_test.mjs path/to/covmap path/to/datasets path/to/artefact-dir');
-    return 2;
-  }
-  const start = performance.now();
-  const run = new CheckRunner({ expectedToFail: EXPECTED_TO_FAIL_UNTIL_REDESIGN });
-  let browser = null;
-  let audit = null;
-  try {
-    browser = await launchBrowser();
-    try {
-      audit = auditBundledMap(covmap, datasets, MAP);
-    } catch (error) {
-      run.fatal(`covmap audit of the bundled ${MAP} map failed: ${error.message}`);
-      return run.finish();
-    }
+process.exitCode = await runAuditedPageTest('report_test.mjs', process.argv.slice(2),
+  { map: MAP, expectedToFail: EXPECTED_TO_FAIL_UNTIL_REDESIGN }, async (run, browser, audit, artefacts) => {
+    const start = performance.now();
     const expected = expectedCounts(audit.report);
     for (const width of WIDTHS) await checkWidth(run, browser, audit.html, expected, artefacts, width);
     console.log(`screenshots: ${artefacts}; ${((performance.now() - start) / 1000).toFixed(1)} s`);
-    return run.finish();
-  } catch (error) {
-    if (!(error instanceof ToolMissing)) throw error;
-    console.error(`browser tests cannot run: ${error.message}`);
-    return 1;
-  } finally {
-    if (browser) await browser.close();
-    removeAudit(audit);
-  }
-}
-
-process.exitCode = await main(process.argv.slice(2));
+  });
