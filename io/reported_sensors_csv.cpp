@@ -1,10 +1,11 @@
 // The CSV syntax for reported sensors: a header naming the columns, then one sensor per line.
-// Lines, quoting and numbers follow the sites CSV (io/sites_csv.cpp); the columns differ.
+// Lines, delimiters, quoting and numbers follow the sites CSV (io/csv_fields.h); the columns differ.
 #include <algorithm>
 #include <array>
 #include <cctype>
 #include <charconv>
 
+#include "io/csv_fields.h"
 #include "io/reported_sensors_parsers.h"
 #include "io/text_util.h"
 
@@ -15,48 +16,6 @@ enum Column : std::size_t { kId, kName, kX, kY, kLon, kLat, kWeight, kPower, kPo
 constexpr std::array<std::string_view, kColumnCount> kNames = {
     "id", "name", "x", "y", "lon", "lat", "weight", "tx_power_dbm", "position_sigma_m", "power_sigma_db"};
 constexpr std::size_t kAbsent = static_cast<std::size_t>(-1);
-
-// Splits one line at commas into trimmed fields; a field may be double-quoted ("" is a quote) to
-// hold commas or spaces. Returns false with `error` set when a quote is left open or followed by text.
-bool split(std::string_view line, std::vector<std::string>& fields, std::string& error) {
-  fields.clear();
-  std::size_t i = 0;
-  while (true) {
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
-    std::string field;
-    if (i < line.size() && line[i] == '"') {
-      bool closed = false;
-      for (++i; i < line.size(); ++i) {
-        if (line[i] != '"') {
-          field += line[i];
-        } else if (i + 1 < line.size() && line[i + 1] == '"') {
-          field += '"';
-          ++i;
-        } else {
-          closed = true;
-          ++i;
-          break;
-        }
-      }
-      if (!closed) {
-        error = "unterminated quoted field";
-        return false;
-      }
-      while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
-      if (i < line.size() && line[i] != ',') {
-        error = "unexpected text after a quoted field";
-        return false;
-      }
-    } else {
-      const std::size_t end = std::min(line.find(',', i), line.size());
-      field = std::string(trim(line.substr(i, end - i)));
-      i = end;
-    }
-    fields.push_back(std::move(field));
-    if (i >= line.size()) return true;
-    ++i;  // the comma
-  }
-}
 
 // A number, or nullopt with `error` set. "inf" and "nan" parse, so the value checks can say
 // "must be finite" rather than "not a number".
@@ -111,7 +70,7 @@ ColumnIndex read_header(const std::vector<std::string>& fields, const std::strin
   return at;
 }
 
-SensorDraft read_row(const std::vector<std::string>& fields, const ColumnIndex& at, int line) {
+SensorDraft read_row(const std::vector<std::string>& fields, const ColumnIndex& at, int line, CsvDelimiter delimiter) {
   SensorDraft d;
   d.line = line;
   d.sensor.origin = "line " + std::to_string(line);
@@ -130,7 +89,7 @@ SensorDraft read_row(const std::vector<std::string>& fields, const ColumnIndex& 
     const std::string* f = is_required ? required(c) : field(c);
     if (!f || f->empty()) return std::nullopt;
     std::string error;
-    auto value = to_number(*f, kNames[c], error);
+    auto value = to_number(number_text(*f, delimiter), kNames[c], error);
     if (!value) d.problems.push_back(error);
     return value;
   };
@@ -163,7 +122,7 @@ std::vector<SensorDraft> parse_sensors_csv(std::string_view text, const std::str
   if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // UTF-8 byte order mark
   std::optional<ColumnIndex> columns;
   std::vector<SensorDraft> drafts;
-  std::vector<std::string> fields;
+  CsvDelimiter delimiter = CsvDelimiter::kComma;
   int line_number = 0;
   for (std::size_t pos = 0; pos < text.size();) {
     const std::size_t end = std::min(text.find('\n', pos), text.size());
@@ -171,21 +130,21 @@ std::vector<SensorDraft> parse_sensors_csv(std::string_view text, const std::str
     pos = end + 1;
     ++line_number;
     if (line.empty() || line.front() == '#') continue;
-    std::string error;
-    const bool ok = split(line, fields, error);
+    if (!columns) delimiter = detect_delimiter(line);
+    const CsvFields fields = split_csv_line(line, delimiter);
     if (!columns) {
-      if (!ok) throw InputError(file, line_number, "header", error);
-      columns = read_header(fields, file, line_number);
+      if (!fields.error.empty()) throw InputError(file, line_number, "header", fields.error);
+      columns = read_header(fields.values, file, line_number);
       continue;
     }
-    if (!ok) {
+    if (!fields.error.empty()) {
       SensorDraft& d = drafts.emplace_back();
       d.line = line_number;
       d.sensor.origin = "line " + std::to_string(line_number);
-      d.problems.push_back(error);
+      d.problems.push_back(fields.error);
       continue;
     }
-    drafts.push_back(read_row(fields, *columns, line_number));
+    drafts.push_back(read_row(fields.values, *columns, line_number, delimiter));
   }
   if (!columns) throw InputError(file, 0, "", "no header line (expected a line like: id,lon,lat,tx_power_dbm)");
   return drafts;

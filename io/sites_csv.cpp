@@ -1,10 +1,12 @@
-// The CSV syntax for site lists: a header line naming the columns, then one site per line.
+// The CSV syntax for site lists: a header line naming the columns, then one site per line; lines,
+// delimiters (comma, semicolon, tab or '|'), quoting and decimal commas as io/csv_fields.h reads them.
 #include <algorithm>
 #include <array>
 #include <cctype>
 #include <charconv>
 #include <optional>
 
+#include "io/csv_fields.h"
 #include "io/site_parsers.h"
 #include "io/site_validation.h"
 #include "io/text_util.h"
@@ -15,55 +17,6 @@ namespace {
 constexpr std::array<std::string_view, 4> kColumns = {"id", "x", "y", "weight"};
 // An optional column: a name for people (labels in pictures); absent or empty: no name.
 constexpr std::string_view kNameColumn = "name";
-
-struct Fields {
-  std::vector<std::string> values;
-  std::string error;  // non-empty if the line could not be split
-};
-
-// Splits one line at commas. Fields are trimmed; a field may be double-quoted so it can hold commas
-// or surrounding spaces, with "" standing for one quote inside the quotes.
-Fields split_fields(std::string_view line) {
-  Fields out;
-  std::size_t i = 0;
-  while (true) {
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
-    std::string field;
-    if (i < line.size() && line[i] == '"') {
-      ++i;
-      bool closed = false;
-      while (i < line.size()) {
-        if (line[i] == '"') {
-          if (i + 1 < line.size() && line[i + 1] == '"') {
-            field += '"';
-            i += 2;
-            continue;
-          }
-          ++i;
-          closed = true;
-          break;
-        }
-        field += line[i++];
-      }
-      if (!closed) {
-        out.error = "unterminated quoted field";
-        return out;
-      }
-      while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
-      if (i < line.size() && line[i] != ',') {
-        out.error = "unexpected text after a quoted field";
-        return out;
-      }
-    } else {
-      const std::size_t end = std::min(line.find(',', i), line.size());
-      field = std::string(trim(line.substr(i, end - i)));
-      i = end;
-    }
-    out.values.push_back(std::move(field));
-    if (i >= line.size()) return out;
-    ++i;  // the comma
-  }
-}
 
 std::string lower(std::string_view text) {
   std::string out(text);
@@ -109,6 +62,7 @@ SiteTable parse_sites_csv(std::string_view text, const std::string& file) {
   std::optional<std::array<std::size_t, 4>> column;  // index of id, x, y, weight; set by the header
   std::optional<std::size_t> name_column;            // index of the optional name column
   std::vector<SiteDraft> drafts;
+  CsvDelimiter delimiter = CsvDelimiter::kComma;  // set by the header (io/csv_fields.h)
   int line_number = 0;
   std::size_t pos = 0;
   while (pos < text.size()) {
@@ -118,7 +72,8 @@ SiteTable parse_sites_csv(std::string_view text, const std::string& file) {
     ++line_number;
     if (line.empty() || line.front() == '#') continue;
 
-    Fields fields = split_fields(line);
+    if (!column) delimiter = detect_delimiter(line);
+    const CsvFields fields = split_csv_line(line, delimiter);
     if (!column) {
       if (!fields.error.empty()) throw InputError(file, line_number, "header", fields.error);
       std::array<std::size_t, 4> found{};
@@ -166,7 +121,7 @@ SiteTable parse_sites_csv(std::string_view text, const std::string& file) {
         continue;
       }
       std::string error;
-      if (const auto number = parse_number(*value, kColumns[c], error)) {
+      if (const auto number = parse_number(number_text(*value, delimiter), kColumns[c], error)) {
         *targets[c] = *number;
       } else {
         draft.problems.push_back(error);
