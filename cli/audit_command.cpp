@@ -145,7 +145,10 @@ int run_audit(const AuditCommandOptions& options) {
       so.alpha = options.alpha;
       so.planar = options.planar;
       so.projection = map.projection ? &*map.projection : nullptr;
+      std::vector<std::string> notes;  // which reading the file's sensors got, when there was a choice
+      so.notes = &notes;
       reported = io::read_reported_sensors(options.sensors_path, so);
+      for (const std::string& note : notes) std::cerr << "covmap audit: note: " << note << "\n";
     }
     refuse_implausible_input(options, map, reported);
     say("map read: " + std::to_string(map.cells.size()) + " cells, " + std::to_string(map.vertex_count) + " vertices");

@@ -23,7 +23,9 @@
 //
 // Positions: lon/lat input is projected with options.projection (the map's), which must then be
 // set; x/y input is used as is and requires a planar map (options.projection null): mixing a
-// planar sensor file with a lon/lat map would silently put the sensors in the wrong place.
+// planar sensor file with a lon/lat map would silently put the sensors in the wrong place. A
+// sensor that gives both pairs (vendor exports do) is placed with the pair the map is in (lon/lat
+// for a lon/lat map, x/y for a planar one), and options.notes says so once per file.
 //
 // Names: a sensor's human name ("Zollikofen") is optional text kept as read in ReportedSensor::name
 // (empty when absent, null or an empty field); names need not be unique and are never used to
@@ -62,6 +64,9 @@ struct ReportedSensorOptions {
   const LocalProjection* projection = nullptr;
   // The map is planar (`--planar`): GeoJSON positions are [x, y]. Must not be set with a projection.
   bool planar = false;
+  // Where the reader says which of two readings it chose, for people ("used lon/lat, as the map is
+  // in lon/lat" when a sensor gives both x/y and lon/lat); null: not said.
+  std::vector<std::string>* notes = nullptr;
 };
 
 enum class SensorsFormat { kDetect, kCsv, kSitesJson, kGeoJson };

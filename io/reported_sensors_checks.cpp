@@ -104,6 +104,19 @@ std::vector<ReportedSensor> finish_sensors(std::vector<SensorDraft> drafts, cons
                                            const ReportedSensorOptions& options,
                                            std::vector<InputProblem> file_problems) {
   if (drafts.empty() && file_problems.empty()) throw InputError(file, 0, "", "no sensors");
+  // Sensors that give both pairs are placed with the one the map is in, and the notes say so.
+  std::size_t both = 0;
+  for (auto& d : drafts) {
+    if (!d.xy || !d.lon_lat) continue;
+    ++both;
+    if (options.projection) d.xy.reset();
+    else d.lon_lat.reset();
+  }
+  if (both > 0 && options.notes) {
+    options.notes->push_back(file + ": " + std::to_string(both) + (both == 1 ? " sensor gives" : " sensors give") +
+                             " both x/y and lon/lat; used " +
+                             (options.projection ? "lon/lat, as the map is in lon/lat" : "x/y, as the map is planar"));
+  }
   for (auto& d : drafts) {
     if (d.usable()) check_values(d);
   }

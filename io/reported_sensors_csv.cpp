@@ -56,13 +56,12 @@ ColumnIndex read_header(const std::vector<std::string>& fields, const std::strin
   const auto has = [&](Column c) { return at[c] != kAbsent; };
   std::string missing;
   if (!has(kId)) missing = "an id column";
+  // Both pairs are allowed (vendor exports give both); the map decides which one is used
+  // (finish_sensors). Each pair that is started must be complete.
   const bool planar = has(kX) || has(kY), geographic = has(kLon) || has(kLat);
-  if (planar && geographic) {
-    throw InputError(file, line, "header", "has both x/y and lon/lat columns; give one pair");
-  } else if (planar ? !(has(kX) && has(kY)) : !(has(kLon) && has(kLat))) {
-    missing += std::string(missing.empty() ? "" : ", ") +
-               (planar ? "both x and y" : geographic ? "both lon and lat" : "x and y (or lon and lat) columns");
-  }
+  if (planar && !(has(kX) && has(kY))) missing += std::string(missing.empty() ? "" : ", ") + "both x and y";
+  if (geographic && !(has(kLon) && has(kLat))) missing += std::string(missing.empty() ? "" : ", ") + "both lon and lat";
+  if (!planar && !geographic) missing += std::string(missing.empty() ? "" : ", ") + "x and y (or lon and lat) columns";
   if (!has(kWeight) && !has(kPower)) missing += std::string(missing.empty() ? "" : ", ") + "a weight or tx_power_dbm column";
   if (!missing.empty()) {
     throw InputError(file, line, "header", "needs " + missing + " (for example: id,lon,lat,tx_power_dbm)");
@@ -105,7 +104,8 @@ SensorDraft read_row(const std::vector<std::string>& fields, const ColumnIndex& 
   if (at[kX] != kAbsent) {
     const auto x = number(kX, true), y = number(kY, true);
     if (x && y) d.xy = Point{*x, *y};
-  } else {
+  }
+  if (at[kLon] != kAbsent) {
     const auto lon = number(kLon, true), lat = number(kLat, true);
     if (lon && lat) d.lon_lat = LonLat{*lon, *lat};
   }

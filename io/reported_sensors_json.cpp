@@ -38,23 +38,16 @@ void read_strengths(const Json& object, const std::string& prefix, SensorDraft& 
 
 // x/y or lon/lat members of a covmap.sites/1 entry.
 void read_position(const Json& entry, SensorDraft& d) {
+  // Both pairs may be given (vendor exports do); the map decides which one is used (finish_sensors).
   const bool planar = entry.contains("x") || entry.contains("y");
   const bool geographic = entry.contains("lon") || entry.contains("lat");
-  if (planar && geographic) {
-    d.problems.push_back("gives both x/y and lon/lat; give one pair");
-    return;
-  }
   if (!planar && !geographic) {
     d.problems.push_back("missing x and y (or lon and lat)");
     return;
   }
-  const char* first = planar ? "x" : "lon";
-  const char* second = planar ? "y" : "lat";
   try {
-    const double a = number(member(entry, first, ""), first);
-    const double b = number(member(entry, second, ""), second);
-    if (planar) d.xy = Point{a, b};
-    else d.lon_lat = LonLat{a, b};
+    if (planar) d.xy = Point{number(member(entry, "x", ""), "x"), number(member(entry, "y", ""), "y")};
+    if (geographic) d.lon_lat = LonLat{number(member(entry, "lon", ""), "lon"), number(member(entry, "lat", ""), "lat")};
   } catch (const FieldError& e) {
     d.problems.push_back(phrase(e));
   }

@@ -181,9 +181,41 @@ TEST(ReportedSensorsCsv, HeaderProblems) {
   EXPECT_EQ(csv_error("id,x,weight\n", planar_map()).message(), "needs both x and y (for example: id,lon,lat,tx_power_dbm)");
   EXPECT_EQ(csv_error("name,lon,lat\n", planar_map()).message(),
             "needs an id column, a weight or tx_power_dbm column (for example: id,lon,lat,tx_power_dbm)");
-  EXPECT_EQ(csv_error("id,x,y,lon,lat,weight\n", planar_map()).message(), "has both x/y and lon/lat columns; give one pair");
+  EXPECT_EQ(csv_error("id,x,y,lon,weight\n", planar_map()).message(), "needs both lon and lat (for example: id,lon,lat,tx_power_dbm)");
   EXPECT_EQ(csv_error("id,x,y,weight,Weight\n", planar_map()).message(), "repeated column 'weight'");
   EXPECT_EQ(csv_error("id,x,y,weight\n", planar_map()).message(), "no sensors");
+}
+
+// Issue 14: vendor exports give projected x/y and lon/lat for each sensor. The pair the map is in
+// is used (the oracle: the projection of the lon/lat, or the x/y as written), and a note says so.
+TEST(ReportedSensorsCsv, BothPairsGivenThePairOfTheMapIsUsed) {
+  const std::string text = "id;x;y;lon;lat;weight\na;1000,5;-200;8,1;47,1;1\nb;30;40;7,9;46,95;2\n";
+  std::vector<std::string> notes;
+  ReportedSensorOptions geographic = geographic_map();
+  geographic.notes = &notes;
+  const auto g = csv(text, geographic);
+  ASSERT_EQ(g.size(), 2u);
+  EXPECT_EQ(g[0].position.x, swiss().forward(8.1, 47.1).x);
+  EXPECT_EQ(g[1].position.y, swiss().forward(7.9, 46.95).y);
+  EXPECT_EQ(g[0].lon, 8.1);
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_EQ(notes[0], "sensors.csv: 2 sensors give both x/y and lon/lat; used lon/lat, as the map is in lon/lat");
+  notes.clear();
+  ReportedSensorOptions planar = planar_map();
+  planar.notes = &notes;
+  const auto p = csv(text, planar);
+  EXPECT_EQ(p[0].position.x, 1000.5);
+  EXPECT_EQ(p[1].position.y, 40.0);
+  EXPECT_FALSE(p[0].lon.has_value());
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_EQ(notes[0], "sensors.csv: 2 sensors give both x/y and lon/lat; used x/y, as the map is planar");
+  // The same in covmap.sites/1 JSON, one sensor with both.
+  notes.clear();
+  const auto j = parse_reported_sensors(R"({"format":"covmap.sites/1","sites":[{"id":"a","x":5,"y":6,"lon":8.1,"lat":47.1,"weight":1},
+      {"id":"b","lon":8.2,"lat":47.2,"weight":1}]})", "sensors.json", geographic);
+  EXPECT_EQ(j[0].position.x, swiss().forward(8.1, 47.1).x);
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_EQ(notes[0], "sensors.json: 1 sensor gives both x/y and lon/lat; used lon/lat, as the map is in lon/lat");
 }
 
 // ---- JSON (covmap.sites/1) ----
@@ -217,7 +249,7 @@ TEST(ReportedSensorsJson, LonLatEntriesAndErrorsNameThePath) {
   });
   ASSERT_EQ(e.problems.size(), 2u);
   EXPECT_EQ(e.problems[0].item, "sites[0] (sensor 'a')");
-  EXPECT_EQ(e.problems[0].message, "gives both x/y and lon/lat; give one pair");
+  EXPECT_EQ(e.problems[0].message, "missing y");  // x started, so the x/y pair must be complete
   EXPECT_EQ(e.problems[1].message, "x must be a number (got string \"1\")");
 }
 
