@@ -59,6 +59,8 @@ CLI::App* setup_audit(CLI::App& app, AuditCommandOptions& options) {
         return "";
       })
       ->excludes("--planar");
+  cmd->add_flag("--full-precision", options.full_precision,
+                "write GeoJSON coordinates with every bit (default: 1e-8 degrees or 1 mm, what any map carries)");
   return cmd;
 }
 
@@ -161,6 +163,7 @@ int run_audit(const AuditCommandOptions& options) {
     report::AuditReportContext context{result, map, options.map_path, options.sensors_path, options.alpha,
                                    options.command_line, &ao};
     context.render.basemap_url = options.basemap_url;
+    context.render.full_precision = options.full_precision;
     std::ostringstream json, html, sensors, diagram;
     say("writing report.json");
     report::write_audit_json(context, json);

@@ -25,6 +25,7 @@ struct AuditCommandOptions {
   bool fail_on_inconsistent = false; // exit 1 when a reported sensor is inconsistent
   int threads = 2;                   // covariance threads (same reports whatever the count)
   std::string basemap_url;           // report.html's optional tile layer (empty: none, the page stays offline)
+  bool full_precision = false;       // GeoJSON coordinates with every bit, not at 1e-8 degrees / 1 mm
   std::string command_line;          // recorded in the reports
 };
 

@@ -17,30 +17,51 @@ using json = detail::OrderedJson;
 
 bool finite(Point p) { return std::isfinite(p.x) && std::isfinite(p.y); }
 
+// Where positions go: the map's frame, and whether they keep every bit (AuditRenderOptions).
+struct Positions {
+  const io::CoverageMap& map;
+  bool full_precision = false;
+};
+
+// Coordinates at the precision the data carry (issue 14): 1e-8 degrees (about a millimetre) or a
+// millimetre in metres, unless full precision was asked for. A 17-digit coordinate only lengthens
+// the file (a 166 KB map gave a 2.4 MB diagram).
+// Steps per unit. Dividing the rounded count by the power of ten (not multiplying by its inverse)
+// gives the double nearest the decimal, which the shortest round-trip form writes as that decimal.
+constexpr double kDegreeSteps = 1e8;
+constexpr double kMetreSteps = 1e3;
+
+double rounded(double v, double steps, bool full) { return full ? v : std::round(v * steps) / steps; }
+
+json pair(double a, double b, bool geographic, bool full) {
+  const double steps = geographic ? kDegreeSteps : kMetreSteps;
+  return json::array({rounded(a, steps, full), rounded(b, steps, full)});
+}
+
 // A point feature's position: lon in [-180, 180].
-json point_position(Point p, const io::CoverageMap& map) {
-  if (!map.projection) return json::array({p.x, p.y});
-  const io::LonLat g = detail::to_lonlat(*map.projection, p);
-  return json::array({g.lon, g.lat});
+json point_position(Point p, const Positions& at) {
+  if (!at.map.projection) return pair(p.x, p.y, false, at.full_precision);
+  const io::LonLat g = detail::to_lonlat(*at.map.projection, p);
+  return pair(g.lon, g.lat, true, at.full_precision);
 }
 
 // A vertex of a line or ring: lon kept continuous across the antimeridian.
-json vertex_position(Point p, const io::CoverageMap& map) {
-  if (!map.projection) return json::array({p.x, p.y});
-  const io::LonLat g = detail::to_lonlat_continuous(*map.projection, p);
-  return json::array({g.lon, g.lat});
+json vertex_position(Point p, const Positions& at) {
+  if (!at.map.projection) return pair(p.x, p.y, false, at.full_precision);
+  const io::LonLat g = detail::to_lonlat_continuous(*at.map.projection, p);
+  return pair(g.lon, g.lat, true, at.full_precision);
 }
 
-json closed_ring(const Ring& ring, const io::CoverageMap& map) {
+json closed_ring(const Ring& ring, const Positions& at) {
   json a = json::array();
-  for (const Point& p : ring) a.push_back(vertex_position(p, map));
-  a.push_back(vertex_position(ring.front(), map));  // RFC 7946: the last position repeats the first
+  for (const Point& p : ring) a.push_back(vertex_position(p, at));
+  a.push_back(vertex_position(ring.front(), at));  // RFC 7946: the last position repeats the first
   return a;
 }
 
-json polygon_coordinates(const io::MapPolygon& polygon, const io::CoverageMap& map) {
-  json rings = json::array({closed_ring(polygon.outer, map)});
-  for (const Ring& hole : polygon.holes) rings.push_back(closed_ring(hole, map));
+json polygon_coordinates(const io::MapPolygon& polygon, const Positions& at) {
+  json rings = json::array({closed_ring(polygon.outer, at)});
+  for (const Ring& hole : polygon.holes) rings.push_back(closed_ring(hole, at));
   return rings;
 }
 
@@ -48,7 +69,7 @@ json feature(json geometry, json properties) {
   return {{"type", "Feature"}, {"geometry", std::move(geometry)}, {"properties", std::move(properties)}};
 }
 
-json sensor_properties(const audit::SensorAudit& s, const io::CoverageMap& map) {
+json sensor_properties(const audit::SensorAudit& s, const Positions& where) {
   const bool compared = s.reported && s.in_map;
   const bool sigma = s.in_map && s.uncertainty_available;
   json p = {{"kind", "sensor"},
@@ -68,10 +89,10 @@ json sensor_properties(const audit::SensorAudit& s, const io::CoverageMap& map) 
             {"iou_refined", number_or_null(s.iou_refined)},
             {"iou_reported", number_or_null(s.iou_reported)}};
   // Reported position under the names a GIS user expects for the map's coordinates.
-  const char* kx = map.projection ? "reported_lon" : "reported_x";
-  const char* ky = map.projection ? "reported_lat" : "reported_y";
+  const char* kx = where.map.projection ? "reported_lon" : "reported_x";
+  const char* ky = where.map.projection ? "reported_lat" : "reported_y";
   if (s.reported && finite(s.reported->position)) {
-    const json at = point_position(s.reported->position, map);
+    const json at = point_position(s.reported->position, where);
     p[kx] = at[0];
     p[ky] = at[1];
   } else {
@@ -90,6 +111,7 @@ void check_options(const AuditReportContext& c, const char* who) {
 }  // namespace
 
 void write_sensors_geojson(const AuditReportContext& c, std::ostream& out) {
+  const Positions where{c.map, c.render.full_precision};
   check_options(c, "write_sensors_geojson");
   json features = json::array();
   for (const auto& s : c.result.sensors) {
@@ -97,15 +119,15 @@ void write_sensors_geojson(const AuditReportContext& c, std::ostream& out) {
     std::optional<Point> at;
     if (s.in_map && finite(s.position)) at = s.position;
     if (!s.in_map && s.reported && finite(s.reported->position)) at = s.reported->position;
-    json geometry = at ? json{{"type", "Point"}, {"coordinates", point_position(*at, c.map)}} : json();
-    features.push_back(feature(std::move(geometry), sensor_properties(s, c.map)));
+    json geometry = at ? json{{"type", "Point"}, {"coordinates", point_position(*at, where)}} : json();
+    features.push_back(feature(std::move(geometry), sensor_properties(s, where)));
   }
   if (c.render.shift_lines) {
     for (const auto& s : c.result.sensors) {
       if (!s.in_map || !s.reported || !finite(s.position) || !finite(s.reported->position)) continue;
       json line = {{"type", "LineString"},
-                   {"coordinates", json::array({vertex_position(s.reported->position, c.map),
-                                                vertex_position(s.position, c.map)})}};
+                   {"coordinates", json::array({vertex_position(s.reported->position, where),
+                                                vertex_position(s.position, where)})}};
       features.push_back(feature(std::move(line), {{"kind", "shift"},
                                                    {"id", s.id},
                                                    {"verdict", detail::verdict_json(s.verdict)},
@@ -116,6 +138,7 @@ void write_sensors_geojson(const AuditReportContext& c, std::ostream& out) {
 }
 
 void write_diagram_geojson(const AuditReportContext& c, std::ostream& out) {
+  const Positions where{c.map, c.render.full_precision};
   check_options(c, "write_diagram_geojson");
   const Diagram& d = c.result.refined_diagram;
   const detail::ArcSampling sampling =
@@ -125,10 +148,10 @@ void write_diagram_geojson(const AuditReportContext& c, std::ostream& out) {
   for (const auto& region : regions.regions) {
     json geometry;
     if (region.polygons.size() == 1) {
-      geometry = {{"type", "Polygon"}, {"coordinates", polygon_coordinates(region.polygons.front(), c.map)}};
+      geometry = {{"type", "Polygon"}, {"coordinates", polygon_coordinates(region.polygons.front(), where)}};
     } else {
       json polygons = json::array();
-      for (const auto& polygon : region.polygons) polygons.push_back(polygon_coordinates(polygon, c.map));
+      for (const auto& polygon : region.polygons) polygons.push_back(polygon_coordinates(polygon, where));
       geometry = {{"type", "MultiPolygon"}, {"coordinates", std::move(polygons)}};
     }
     const bool known = region.site >= 0 && static_cast<std::size_t>(region.site) < d.sites.size();

@@ -16,7 +16,8 @@
 //    map (all its faces bounded); unbounded faces are left out of diagram.geojson and the HTML and
 //    counted (diagram.geojson's "omitted_unbounded_faces").
 //  - Guaranteed: valid JSON (RFC 8259) and GeoJSON (RFC 7946) whose numbers are the doubles of the
-//    result in the shortest form that reads back to the same bits; a NaN or infinite value is
+//    result in the shortest form that reads back to the same bits, except the GeoJSON coordinates:
+//    rounded to 1e-8 degrees (geographic) or 1e-3 map units (planar) unless render.full_precision; a NaN or infinite value is
 //    written as null, never as a number. Strings that are not UTF-8 have the bad bytes replaced by
 //    U+FFFD. Geographic output is [lon, lat] on WGS84 through the map's LocalProjection; planar
 //    output is [x, y] in the map's metres. Polygon rings are closed (last position = first), outer
@@ -59,6 +60,9 @@ struct AuditRenderOptions {
   // sensors.geojson: also write one LineString per reported sensor from its reported to its
   // reconstructed position (property kind = "shift").
   bool shift_lines = true;
+  // sensors.geojson and diagram.geojson: coordinates with every bit (`--full-precision`) instead
+  // of rounded to 1e-8 degrees or a millimetre, the precision any coverage map carries.
+  bool full_precision = false;
   // report.html: width of the map picture in CSS pixels; the height follows the map's aspect ratio.
   double html_width_px = 960.0;
   // report.html: space around the map's bounding box, as a fraction of its larger side.

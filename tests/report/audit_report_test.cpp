@@ -650,3 +650,55 @@ TEST(AuditDiagramGeoJson, UnboundedFacesAreCountedNotWritten) {
 
 }  // namespace
 }  // namespace covmap::report
+
+namespace covmap::report {
+namespace {
+
+// Issue 14: coordinates at the precision the data carry: each is the double nearest a multiple of
+// 1e-8 degrees or of a millimetre, within half a step of the full-precision coordinate. (Written
+// by nlohmann's Grisu2, a few such doubles come out with 16 digits instead of their shortest form;
+// the file still shrinks by half: checked below.)
+bool on_the_grid(double v, double steps) { return std::round(v * steps) / steps == v; }
+
+void expect_rounded(const json& rounded, const json& full, double step, std::size_t& compared) {
+  if (rounded.is_array() && !rounded.empty() && rounded[0].is_number()) {
+    ASSERT_EQ(rounded.size(), full.size());
+    for (std::size_t i = 0; i < rounded.size(); ++i) {
+      EXPECT_LE(std::abs(rounded[i].get<double>() - full[i].get<double>()), 0.5 * step * (1 + 1e-6));
+      EXPECT_TRUE(on_the_grid(rounded[i].get<double>(), 1 / step)) << rounded[i].dump();
+      ++compared;
+    }
+    return;
+  }
+  if (rounded.is_array() || rounded.is_object()) {
+    ASSERT_EQ(rounded.size(), full.size());
+    auto a = rounded.begin();
+    auto b = full.begin();
+    for (; a != rounded.end(); ++a, ++b) expect_rounded(*a, *b, step, compared);
+  }
+}
+
+TEST(AuditGeoJsonPrecision, CoordinatesRoundedToWhatTheDataCarry) {
+  for (const bool geographic : {true, false}) {
+    const AuditFixture f = audit_fixture(geographic);
+    AuditReportContext full = context_of(f), rounded = context_of(f);
+    rounded.render.full_precision = false;
+    const double step = geographic ? 1e-8 : 1e-3;
+    for (const auto write : {&write_diagram_geojson, &write_sensors_geojson}) {
+      std::ostringstream a, b;
+      write(rounded, a);
+      write(full, b);
+      const json r = json::parse(a.str()), g = json::parse(b.str());
+      std::size_t compared = 0;
+      for (std::size_t i = 0; i < g["features"].size(); ++i)
+        expect_rounded(r["features"][i]["geometry"]["coordinates"], g["features"][i]["geometry"]["coordinates"], step,
+                       compared);
+      EXPECT_GT(compared, 10u);
+      if (geographic) EXPECT_LT(2 * a.str().size(), 3 * b.str().size());  // at least a third smaller
+      else EXPECT_LE(a.str().size(), b.str().size());  // the fixture's planar sensors sit on whole metres
+    }
+  }
+}
+
+}  // namespace
+}  // namespace covmap::report

@@ -166,14 +166,18 @@ inline AuditFixture audit_fixture_with_undetermined(bool geographic) {
   return f;
 }
 
+// With full-precision coordinates, so that the geometry tests compare positions bit for bit;
+// AuditGeoJsonPrecision checks the default rounding against it.
 inline AuditReportContext context_of(const AuditFixture& f) {
-  return AuditReportContext{.result = f.result,
-                            .map = f.map,
-                            .map_file = "maps/city.geojson",
-                            .sensors_file = "sensors.csv",
-                            .alpha = 3.5,
-                            .command_line = "covmap audit maps/city.geojson --sensors sensors.csv --alpha 3.5 -o out/",
-                            .options = &f.options};
+  AuditReportContext c{.result = f.result,
+                       .map = f.map,
+                       .map_file = "maps/city.geojson",
+                       .sensors_file = "sensors.csv",
+                       .alpha = 3.5,
+                       .command_line = "covmap audit maps/city.geojson --sensors sensors.csv --alpha 3.5 -o out/",
+                       .options = &f.options};
+  c.render.full_precision = true;
+  return c;
 }
 
 // Signed area of a GeoJSON ring (closed: last position = first), positive counter-clockwise.
