@@ -130,7 +130,7 @@ int run_audit(const AuditCommandOptions& options) {
     plan.inputs = {options.map_path};
     if (!options.sensors_path.empty()) plan.inputs.push_back(options.sensors_path);
     plan.folder = options.output_dir;
-    plan.folder_files = {"report.json", "report.html", "sensors.geojson", "diagram.geojson"};
+    plan.folder_files = {"report.json", "report.html", "sensors.geojson", "shifts.geojson", "diagram.geojson"};
     plan.force = options.force;
     io::check_output_plan(plan);
     std::error_code size_error;
@@ -164,19 +164,22 @@ int run_audit(const AuditCommandOptions& options) {
                                    options.command_line, &ao};
     context.render.basemap_url = options.basemap_url;
     context.render.full_precision = options.full_precision;
-    std::ostringstream json, html, sensors, diagram;
+    std::ostringstream json, html, sensors, shifts, diagram;
     say("writing report.json");
     report::write_audit_json(context, json);
     say("writing report.html");
     report::write_audit_html(context, html);
     say("writing sensors.geojson");
     report::write_sensors_geojson(context, sensors);
+    say("writing shifts.geojson");
+    report::write_shifts_geojson(context, shifts);
     say("writing diagram.geojson");
     report::write_diagram_geojson(context, diagram);
     say("moving the reports into place");
     io::write_report_folder(options.output_dir, {{"report.json", json.str()},
                                                  {"report.html", html.str()},
                                                  {"sensors.geojson", sensors.str()},
+                                                 {"shifts.geojson", shifts.str()},
                                                  {"diagram.geojson", diagram.str()}},
                             options.force);
     const report::AuditVerdictCounts counts = report::count_verdicts(result.sensors);

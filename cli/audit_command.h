@@ -1,5 +1,5 @@
 // covmap audit MAP.geojson [--sensors S] [--alpha 3.5] -o OUTDIR/: does a coverage map agree with
-// the sensors that drew it? Writes report.json, report.html, sensors.geojson and diagram.geojson
+// the sensors that drew it? Writes report.json, report.html, sensors.geojson, shifts.geojson and diagram.geojson
 // into OUTDIR (all or nothing) and prints a short summary.
 // Exit 0: audited (whatever the verdicts, unless --fail-on-inconsistent: then 1 when a reported
 // sensor is inconsistent); 2: bad input or an output that may not be written; 4: internal error.

@@ -122,17 +122,22 @@ void write_sensors_geojson(const AuditReportContext& c, std::ostream& out) {
     json geometry = at ? json{{"type", "Point"}, {"coordinates", point_position(*at, where)}} : json();
     features.push_back(feature(std::move(geometry), sensor_properties(s, where)));
   }
-  if (c.render.shift_lines) {
-    for (const auto& s : c.result.sensors) {
-      if (!s.in_map || !s.reported || !finite(s.position) || !finite(s.reported->position)) continue;
-      json line = {{"type", "LineString"},
-                   {"coordinates", json::array({vertex_position(s.reported->position, where),
-                                                vertex_position(s.position, where)})}};
-      features.push_back(feature(std::move(line), {{"kind", "shift"},
-                                                   {"id", s.id},
-                                                   {"verdict", detail::verdict_json(s.verdict)},
-                                                   {"position_error_m", number_or_null(s.position_error_m)}}));
-    }
+  detail::write_json({{"type", "FeatureCollection"}, {"features", std::move(features)}}, out, -1);
+}
+
+void write_shifts_geojson(const AuditReportContext& c, std::ostream& out) {
+  const Positions where{c.map, c.render.full_precision};
+  check_options(c, "write_shifts_geojson");
+  json features = json::array();
+  for (const auto& s : c.result.sensors) {
+    if (!s.in_map || !s.reported || !finite(s.position) || !finite(s.reported->position)) continue;
+    json line = {{"type", "LineString"},
+                 {"coordinates", json::array({vertex_position(s.reported->position, where),
+                                              vertex_position(s.position, where)})}};
+    features.push_back(feature(std::move(line), {{"kind", "shift"},
+                                                 {"id", s.id},
+                                                 {"verdict", detail::verdict_json(s.verdict)},
+                                                 {"position_error_m", number_or_null(s.position_error_m)}}));
   }
   detail::write_json({{"type", "FeatureCollection"}, {"features", std::move(features)}}, out, -1);
 }

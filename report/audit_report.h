@@ -1,10 +1,12 @@
-// covmap::io audit reports: the four files `covmap audit MAP -o OUTDIR/` writes from an
+// covmap::io audit reports: the five files `covmap audit MAP -o OUTDIR/` writes from an
 // AuditResult (audit/audit.h) and the map it audited (io/coverage_map.h). docs/FORMATS.md,
 // "Audit reports", documents every member and property.
 //
 //   report.json      write_audit_json       covmap.audit/1: every number of the audit, for programs
-//   sensors.geojson  write_sensors_geojson  reconstructed sensors (Points) and their shifts from the
-//                                           reported positions (LineStrings), for GIS
+//   sensors.geojson  write_sensors_geojson  reconstructed sensors (Points), for GIS
+//   shifts.geojson   write_shifts_geojson   reported → reconstructed positions (LineStrings): a file
+//                                           of its own, as formats like the Shapefile take one
+//                                           geometry type per layer (issue 14)
 //   diagram.geojson  write_diagram_geojson  the recomputed diagram, one (Multi)Polygon per sensor
 //   report.html      write_audit_html       one self-contained page for people
 //
@@ -57,9 +59,6 @@ struct AuditRenderOptions {
   // Geographic output only: straight arcs are cut into pieces no longer than this fraction of the
   // extent, because a straight line of the projection plane is slightly curved in lon/lat.
   double geographic_line_step = 0.01;
-  // sensors.geojson: also write one LineString per reported sensor from its reported to its
-  // reconstructed position (property kind = "shift").
-  bool shift_lines = true;
   // sensors.geojson and diagram.geojson: coordinates with every bit (`--full-precision`) instead
   // of rounded to 1e-8 degrees or a millimetre, the precision any coverage map carries.
   bool full_precision = false;
@@ -101,6 +100,7 @@ struct AuditReportContext {
 void write_audit_json(const AuditReportContext& context, std::ostream& out);       // report.json
 void write_audit_html(const AuditReportContext& context, std::ostream& out);       // report.html
 void write_sensors_geojson(const AuditReportContext& context, std::ostream& out);  // sensors.geojson
+void write_shifts_geojson(const AuditReportContext& context, std::ostream& out);   // shifts.geojson
 void write_diagram_geojson(const AuditReportContext& context, std::ostream& out);  // diagram.geojson
 
 // How the audited sensors came out, as report.json, report.html and `covmap audit`'s summary line

@@ -37,7 +37,7 @@ audit 2 t2-again
 audit 4 t4
 for run in t1 t2 t2-again t4; do strip_run "$run"; done
 for run in t2 t2-again t4; do
-  for f in sensors.geojson diagram.geojson report.stripped.json report.stripped.html; do
+  for f in sensors.geojson shifts.geojson diagram.geojson report.stripped.json report.stripped.html; do
     cmp -s "$work/t1/$f" "$work/$run/$f" || fail "$f differs between --threads 1 and $run: $(cmp "$work/t1/$f" "$work/$run/$f")"
   done
 done

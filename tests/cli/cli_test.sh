@@ -118,11 +118,11 @@ JSON
 code=$?
 [ "$code" -eq 0 ] && grep -q '"region":{' "$work/nested_rec.json" && ok || fail "nested circles: exit $code, $(cat "$work/nested.txt")"
 
-# 10. audit: a bundled map with its reported sensors writes the four reports; a broken map is
+# 10. audit: a bundled map with its reported sensors writes the five reports; a broken map is
 #     named with its feature and leaves no output directory.
 map="$data/maps/bern"
 if "$covmap" audit "$map/map.geojson" --sensors "$map/sensors.geojson" --alpha 3.5 -o "$work/audit" -q >"$work/audit.txt"; then
-  for f in report.json report.html sensors.geojson diagram.geojson; do
+  for f in report.json report.html sensors.geojson shifts.geojson diagram.geojson; do
     [ -s "$work/audit/$f" ] && ok || fail "audit did not write $f"
   done
   grep -q '"format": *"covmap.audit/1"' "$work/audit/report.json" && ok || fail "audit report format tag"
