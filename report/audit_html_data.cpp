@@ -43,7 +43,7 @@ Json sensor_entry(const GridFrame& f, const audit::SensorAudit& s) {
   const bool compared = s.reported && s.in_map;
   Json j = {{"id", s.id},
             {"name", s.name},
-            {"verdict", 0},
+            {"verdict", verdict_index(s.verdict)},
             {"attention", needs_attention(s.verdict)},
             {"basis", std::string(basis_words(s.basis))},
             {"colour", site_colour_for(s.id)},  // the same colour as in every --svg picture
@@ -59,8 +59,6 @@ Json sensor_entry(const GridFrame& f, const audit::SensorAudit& s) {
             {"iou_reported", number(s.iou_reported)},
             {"fit_ratio", number(s.model_fit_ratio)},
             {"reason", s.reason}};
-  for (std::size_t v = 0; v < std::size(audit::kAllSensorVerdicts); ++v)
-    if (audit::kAllSensorVerdicts[v] == s.verdict) j["verdict"] = v;
   grid_xy(f, s.in_map, s.position, "x", "y", j);
   grid_xy(f, s.reported.has_value(), s.reported ? s.reported->position : Point{}, "rx", "ry", j);
   return j;

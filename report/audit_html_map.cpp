@@ -203,6 +203,12 @@ std::string verdict_colour(audit::SensorVerdict verdict) {
   throw std::logic_error("verdict_colour: a verdict outside the enumeration");
 }
 
+std::size_t verdict_index(audit::SensorVerdict verdict) {
+  for (std::size_t v = 0; v < std::size(audit::kAllSensorVerdicts); ++v)
+    if (audit::kAllSensorVerdicts[v] == verdict) return v;
+  throw std::logic_error("verdict_index: a verdict outside the enumeration");
+}
+
 std::string verdict_class(audit::SensorVerdict verdict) {
   std::string c = "v-" + std::string(audit::to_string(verdict));
   std::replace(c.begin(), c.end(), '_', '-');

@@ -59,6 +59,8 @@ std::vector<std::vector<std::int64_t>> diagram_arcs(const GridFrame& f, const Au
 // Verdict colours shared by the map, the cards, the legend and the table: green consistent, red
 // inconsistent, grey undetermined, orange not in map, blue unreported, purple model misfit.
 std::string verdict_colour(audit::SensorVerdict verdict);
+// The verdict's position in audit::kAllSensorVerdicts (the page's data refers to verdicts by it).
+std::size_t verdict_index(audit::SensorVerdict verdict);
 // A CSS class name for the verdict: "v-" and its report name with '-' for '_' ("v-consistent",
 // "v-not-in-map", ...).
 std::string verdict_class(audit::SensorVerdict verdict);

@@ -80,8 +80,7 @@ Drawn drawn_marks(const AuditReportContext& c) {
   const detail::GridFrame f = detail::grid_frame(c);
   Drawn d;
   for (const auto& s : c.result.sensors) {
-    std::size_t v = 0;
-    while (audit::kAllSensorVerdicts[v] != s.verdict) ++v;
+    const std::size_t v = detail::verdict_index(s.verdict);
     const bool dot = s.in_map && f.drawable(s.position);
     const bool ring = s.reported && f.drawable(s.reported->position);
     d.dot[v] = d.dot[v] || dot;

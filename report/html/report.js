@@ -79,24 +79,28 @@
   const coords = document.getElementById('map-coords');
   const scaleBar = document.getElementById('scale-bar');
 
-  function ringsPath(rings, closed, bbox) {
+  // Widens bbox [xmin, ymin, xmax, ymax] to hold the box [x0, y0, x1, y1] (a point: x1 = x0, y1 = y0).
+  function grow(bbox, x0, y0, x1 = x0, y1 = y0) {
+    bbox[0] = Math.min(bbox[0], x0); bbox[1] = Math.min(bbox[1], y0); bbox[2] = Math.max(bbox[2], x1); bbox[3] = Math.max(bbox[3], y1);
+  }
+  function ringsPath(rings, bbox) {  // closed rings, widening bbox by their points
     const p = new Path2D();
     for (const r of rings) {
       let x = r[0], y = r[1];
       p.moveTo(x, y);
-      if (bbox) { bbox[0] = Math.min(bbox[0], x); bbox[1] = Math.min(bbox[1], y); bbox[2] = Math.max(bbox[2], x); bbox[3] = Math.max(bbox[3], y); }
+      grow(bbox, x, y);
       for (let i = 2; i < r.length; i += 2) {
         x += r[i]; y += r[i + 1];
         p.lineTo(x, y);
-        if (bbox) { bbox[0] = Math.min(bbox[0], x); bbox[1] = Math.min(bbox[1], y); bbox[2] = Math.max(bbox[2], x); bbox[3] = Math.max(bbox[3], y); }
+        grow(bbox, x, y);
       }
-      if (closed) p.closePath();
+      p.closePath();
     }
     return p;
   }
   const cells = data.cells.map(c => {
     const bbox = [Infinity, Infinity, -Infinity, -Infinity];
-    const path = ringsPath(c.slice(1), true, bbox);
+    const path = ringsPath(c.slice(1), bbox);
     return {sensor: c[0], path, bbox};
   });
   const cellsOf = new Map();
@@ -180,7 +184,7 @@
       if (!out.has(key)) out.set(key, {path: new Path2D(), bbox: [Infinity, Infinity, -Infinity, -Infinity]});
       const b = out.get(key);
       addPoints(b.path, pts, false);
-      for (const [x, y] of pts) { b.bbox[0] = Math.min(b.bbox[0], x); b.bbox[1] = Math.min(b.bbox[1], y); b.bbox[2] = Math.max(b.bbox[2], x); b.bbox[3] = Math.max(b.bbox[3], y); }
+      for (const [x, y] of pts) grow(b.bbox, x, y);
     }
     return [...out.values()];
   }
@@ -355,14 +359,15 @@
       }
     }
     ctx.lineWidth = 1; ctx.strokeStyle = '#fff';
-    verdicts.map((v, i) => i).sort((a, b) => SEVERITY_RANK[verdicts[b].key] - SEVERITY_RANK[verdicts[a].key]).forEach((i) => {
+    dotOrder.forEach((i) => {
       ctx.fillStyle = verdicts[i].colour; ctx.fill(dots[i]);
       if (!dense) ctx.stroke(dots[i]);
     });
     drawLabels(r);
   }
-  // Lower is worse (report/audit_report.h, sensors_by_severity).
-  const SEVERITY_RANK = {inconsistent: 0, model_misfit: 1, not_in_map: 2, unreported: 3, undetermined: 4, consistent: 5};
+  // Verdicts from the least to the most severe, for drawing the worst dots last: the data lists the
+  // sensors worst first (sensors_by_severity), so the order of first appearance is the severity.
+  const dotOrder = [...new Set(sensors.map(s => s.verdict))].reverse();
 
   // Flagged sensors get their label, worst first, where it does not cover another label.
   const kMaxLabels = 400;
@@ -511,7 +516,7 @@
     const bbox = [Infinity, Infinity, -Infinity, -Infinity];
     for (const c of cellsOf.get(i) || []) {
       const b = cells[c].bbox;
-      bbox[0] = Math.min(bbox[0], b[0]); bbox[1] = Math.min(bbox[1], b[1]); bbox[2] = Math.max(bbox[2], b[2]); bbox[3] = Math.max(bbox[3], b[3]);
+      grow(bbox, ...b);
     }
     const gx = s.x !== null ? s.x : s.rx, gy = s.x !== null ? s.y : s.ry;
     if (gx !== null) { cx = gx; cy = gy; }
