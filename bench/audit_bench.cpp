@@ -146,7 +146,7 @@ void audit_one(const BenchOptions& b, const mapgen::CoverageMap& generated, Tall
   io::ReportedSensorOptions so;
   so.alpha = b.alpha;
   so.planar = !b.lonlat;
-  so.projection = map.projection ? &*map.projection : nullptr;
+  so.frame = map.frame ? &*map.frame : nullptr;
   const std::vector<ReportedSensor> reported = io::read_reported_sensors(dir / mapgen::kSensorsFileName, so);
   fs::remove_all(dir);
   tally.cells += map.cells.size();
@@ -197,8 +197,8 @@ void audit_one(const BenchOptions& b, const mapgen::CoverageMap& generated, Tall
     }
     if (t.bins >= 20) {
       Point p = s.position;
-      if (map.projection) {
-        const auto ll = map.projection->inverse(p);
+      if (map.frame) {
+        const auto ll = map.frame->inverse(p);
         p = generated.projection->forward(ll.lon, ll.lat);
       }
       const double e = std::hypot(p.x - t.position.x, p.y - t.position.y);

@@ -16,22 +16,42 @@
 #include "io/output_plan.h"
 #include "io/plausibility.h"
 #include "io/reported_sensors.h"
+#include "gis/map_reader.h"
+#include "gis/sensor_reader.h"
 #include "audit/audit.h"
 
 namespace covmap::cli {
 
 CLI::App* setup_audit(CLI::App& app, AuditCommandOptions& options) {
   CLI::App* cmd = app.add_subcommand("audit", "Audit a coverage map against its sensors; write reports to a directory");
-  cmd->add_option("map", options.map_path, "coverage map: GeoJSON FeatureCollection of (Multi)Polygon cells")
+  cmd->add_option("map", options.map_path,
+                  "coverage map: GeoJSON or any GDAL vector layer of (Multi)Polygon cells (GeoPackage, Shapefile, "
+                  "FlatGeobuf, ...), or a best-server raster (GeoTIFF, ...); lon/lat or a projected CRS")
       ->required()
       ->check(input_file());
-  cmd->add_option("--sensors", options.sensors_path, "reported sensors: covmap.sites/1 JSON, CSV or GeoJSON Points")
+  cmd->add_option("--sensors", options.sensors_path,
+                  "reported sensors: CSV, covmap.sites/1 JSON, GeoJSON Points or any GDAL vector layer of Points")
       ->check(input_file());
+  cmd->add_option("--layer", options.layer, "the map's layer, in a file with several");
+  cmd->add_option("--band", options.band, "raster maps: the band holding the serving sensor")
+      ->check(whole_number_in(1, 65535))
+      ->capture_default_str();
+  cmd->add_option("--raster-table", options.raster_table,
+                  "raster maps: CSV with columns value, sensor[, name] naming the sensor of each raster value "
+                  "(default: the band's attribute table, else the value is the sensor id)")
+      ->check(input_file());
+  cmd->add_option("--sensor-crs", options.sensor_crs,
+                  "CRS of the sensor file's x/y (e.g. EPSG:2056), when the file does not declare one");
+  cmd->add_option("--sensor-layer", options.sensor_layer, "the sensors' layer, in a file with several");
+  cmd->add_option("--format", options.format, "GIS layers as three RFC 7946 GeoJSON files, or one GeoPackage in the map's CRS")
+      ->transform(CLI::CheckedTransformer(std::map<std::string, report::GisFormat>{
+          {"geojson", report::GisFormat::kGeoJson}, {"gpkg", report::GisFormat::kGeoPackage}}))
+      ->default_str("geojson");
   cmd->add_option("--alpha", options.alpha, "path-loss exponent (weight = 10^(P/(10·alpha))); enables dB")
       ->check(positive_number());
   cmd->add_option("--sensor-property", options.sensor_property, "feature property naming the serving sensor")
       ->capture_default_str();
-  cmd->add_flag("--planar", options.planar, "coordinates are planar metres, not lon/lat");
+  cmd->add_flag("--planar", options.planar, "the data have no CRS and their coordinates are planar metres");
   cmd->add_option("--snap", options.snap, "how far apart two cells' copies of a boundary may be (map units; 0 = estimate)")
       ->check(non_negative_number());
   cmd->add_option("-o,--output", options.output_dir,
@@ -70,8 +90,7 @@ namespace {
 void refuse_implausible_input(const AuditCommandOptions& options, const io::CoverageMap& map,
                               const std::vector<ReportedSensor>& reported) {
   std::vector<std::pair<std::string, std::string>> doubts;  // (file, finding)
-  if (options.planar)
-    if (auto finding = io::lon_lat_looking(map)) doubts.emplace_back(options.map_path, *finding);
+  if (auto finding = io::lon_lat_looking(map)) doubts.emplace_back(options.map_path, *finding);
   if (auto finding = io::sensors_far_outside(map, reported)) doubts.emplace_back(options.sensors_path, *finding);
   for (const auto& [file, finding] : doubts) {
     if (!options.force) throw io::InputError(file, 0, "", finding + " (pass --force to audit anyway)");
@@ -130,30 +149,38 @@ int run_audit(const AuditCommandOptions& options) {
     plan.inputs = {options.map_path};
     if (!options.sensors_path.empty()) plan.inputs.push_back(options.sensors_path);
     plan.folder = options.output_dir;
-    plan.folder_files = {"report.json", "report.html", "sensors.geojson", "shifts.geojson", "diagram.geojson"};
+    plan.folder_files = report::audit_report_file_names(options.format);
     plan.force = options.force;
     io::check_output_plan(plan);
     std::error_code size_error;
     const auto map_bytes = std::filesystem::file_size(options.map_path, size_error);
     say("reading the map (" + (size_error ? std::string("size unknown") : fixed(map_bytes / 1e6, 1) + " MB") + ")");
-    io::CoverageMapOptions mo;
-    mo.sensor_property = options.sensor_property;
-    mo.planar = options.planar;
-    mo.max_sensors = audit::kMaxSensors;
-    const io::CoverageMap map = io::read_coverage_map(options.map_path, mo);
+    gis::MapReadOptions mo;
+    mo.map.sensor_property = options.sensor_property;
+    mo.map.planar = options.planar;
+    mo.map.max_sensors = audit::kMaxSensors;
+    mo.layer = options.layer;
+    mo.band = options.band;
+    mo.raster_table = options.raster_table;
+    gis::MapSource source;
+    const io::CoverageMap map = gis::read_any_coverage_map(options.map_path, mo, &source);
     std::vector<ReportedSensor> reported;
     if (!options.sensors_path.empty()) {
-      io::ReportedSensorOptions so;
-      so.alpha = options.alpha;
-      so.planar = options.planar;
-      so.projection = map.projection ? &*map.projection : nullptr;
+      gis::SensorReadOptions so;
+      so.sensors.alpha = options.alpha;
+      so.sensors.planar = options.planar;
+      so.sensors.frame = map.frame.get();
+      so.sensor_crs = options.sensor_crs;
+      so.layer = options.sensor_layer;
       std::vector<std::string> notes;  // which reading the file's sensors got, when there was a choice
-      so.notes = &notes;
-      reported = io::read_reported_sensors(options.sensors_path, so);
+      so.sensors.notes = &notes;
+      reported = gis::read_any_sensors(options.sensors_path, so);
       for (const std::string& note : notes) std::cerr << "covmap audit: note: " << note << "\n";
     }
     refuse_implausible_input(options, map, reported);
-    say("map read: " + std::to_string(map.cells.size()) + " cells, " + std::to_string(map.vertex_count) + " vertices");
+    say("map read (" + source.reader + "): " + std::to_string(map.cells.size()) + " cells, " +
+        std::to_string(map.vertex_count) + " vertices" +
+        (map.frame ? ", in " + map.frame->description() : std::string(", planar")));
     audit::AuditOptions ao;
     ao.alpha = options.alpha;
     ao.cleaning.snap_distance = options.snap;
@@ -164,24 +191,10 @@ int run_audit(const AuditCommandOptions& options) {
                                    options.command_line, &ao};
     context.render.basemap_url = options.basemap_url;
     context.render.full_precision = options.full_precision;
-    std::ostringstream json, html, sensors, shifts, diagram;
-    say("writing report.json");
-    report::write_audit_json(context, json);
-    say("writing report.html");
-    report::write_audit_html(context, html);
-    say("writing sensors.geojson");
-    report::write_sensors_geojson(context, sensors);
-    say("writing shifts.geojson");
-    report::write_shifts_geojson(context, shifts);
-    say("writing diagram.geojson");
-    report::write_diagram_geojson(context, diagram);
+    const auto files = report::render_audit_reports(context, options.format,
+                                                    [&](const std::string& file) { say("writing " + file); });
     say("moving the reports into place");
-    io::write_report_folder(options.output_dir, {{"report.json", json.str()},
-                                                 {"report.html", html.str()},
-                                                 {"sensors.geojson", sensors.str()},
-                                                 {"shifts.geojson", shifts.str()},
-                                                 {"diagram.geojson", diagram.str()}},
-                            options.force);
+    io::write_report_folder(options.output_dir, files, options.force);
     const report::AuditVerdictCounts counts = report::count_verdicts(result.sensors);
     print_summary(options, result, counts);
     return options.fail_on_inconsistent && counts.of(audit::SensorVerdict::kInconsistent) > 0 ? kFindings : kOk;

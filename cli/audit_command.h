@@ -1,6 +1,8 @@
-// covmap audit MAP.geojson [--sensors S] [--alpha 3.5] -o OUTDIR/: does a coverage map agree with
-// the sensors that drew it? Writes report.json, report.html, sensors.geojson, shifts.geojson and diagram.geojson
-// into OUTDIR (all or nothing) and prints a short summary.
+// covmap audit MAP [--sensors S] [--alpha 3.5] -o OUTDIR/: does a coverage map agree with the
+// sensors that drew it? MAP is GeoJSON, any GDAL vector layer or a best-server raster, in lon/lat
+// or a projected CRS (gis/map_reader.h). Writes report.json, report.html and the GIS layers —
+// sensors.geojson, shifts.geojson and diagram.geojson, or with --format gpkg one audit.gpkg in the
+// map's CRS — into OUTDIR (all or nothing) and prints a short summary.
 // Exit 0: audited (whatever the verdicts, unless --fail-on-inconsistent: then 1 when a reported
 // sensor is inconsistent); 2: bad input or an output that may not be written; 4: internal error.
 #pragma once
@@ -9,6 +11,8 @@
 
 #include <optional>
 #include <string>
+
+#include "report/audit_report.h"
 
 namespace covmap::cli {
 
@@ -26,6 +30,12 @@ struct AuditCommandOptions {
   int threads = 2;                   // covariance threads (same reports whatever the count)
   std::string basemap_url;           // report.html's optional tile layer (empty: none, the page stays offline)
   bool full_precision = false;       // GeoJSON coordinates with every bit, not at 1e-8 degrees / 1 mm
+  std::string layer;                 // --layer: the map's layer in a multi-layer file
+  int band = 1;                      // --band: the raster band of serving sensors
+  std::string raster_table;          // --raster-table: CSV of raster value -> sensor
+  std::string sensor_crs;            // --sensor-crs: the CRS of the sensor file's x/y
+  std::string sensor_layer;          // --sensor-layer: the sensors' layer in a multi-layer file
+  report::GisFormat format = report::GisFormat::kGeoJson;  // --format: how the GIS layers are written
   std::string command_line;          // recorded in the reports
 };
 

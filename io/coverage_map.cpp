@@ -8,6 +8,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <optional>
+#include <stdexcept>
 #include <string_view>
 #include <unordered_set>
 
@@ -99,8 +102,16 @@ void read_sensor(const Json& feature, const std::string& property, FeatureDraft&
 
 // Reads one ring into `out`. Stops at the first malformed position; reports lon/lat out of range
 // only once per feature (`range_reported`), since a planar map would otherwise report every vertex.
+// What to do about positions that are not lon/lat: --planar, or (for data that declared a
+// geographic CRS) the right CRS.
+std::string not_lon_lat_advice(const CoverageMapOptions& options) {
+  if (options.declared_geographic_crs.empty()) return "use --planar";
+  return "the data declare " + quoted(options.declared_geographic_crs) +
+         ", a longitude/latitude CRS: assign the CRS the coordinates are really in (e.g. ogr2ogr -a_srs EPSG:2056)";
+}
+
 void read_ring(const Json& positions, const std::string& name, bool planar, FeatureDraft& draft, RawRing& out,
-               bool& range_reported) {
+               bool& range_reported, const std::string& advice) {
   if (!positions.is_array()) {
     draft.problems.push_back(name + " must be an array of positions (got " + detail::describe(positions) + ")");
     return;
@@ -131,7 +142,7 @@ void read_ring(const Json& positions, const std::string& name, bool planar, Feat
     }
     if (!planar && !range_reported && (std::abs(q.x) > 180.0 || std::abs(q.y) > 90.0)) {
       draft.problems.push_back(name + ", position " + std::to_string(i) + ": not a longitude/latitude; coordinates look planar (x=" +
-                               detail::format_number(q.x) + ", y=" + detail::format_number(q.y) + "); use --planar");
+                               detail::format_number(q.x) + ", y=" + detail::format_number(q.y) + "); " + advice);
       range_reported = true;
     }
     out.push_back(q);
@@ -144,7 +155,7 @@ void read_ring(const Json& positions, const std::string& name, bool planar, Feat
 }
 
 void read_polygon(const Json& rings, const detail::PolygonPlace& place, bool planar, FeatureDraft& draft,
-                  bool& range_reported) {
+                  bool& range_reported, const std::string& advice) {
   const std::string what = place.multi ? "polygon " + std::to_string(place.polygon) : "the polygon";
   if (!rings.is_array()) {
     draft.problems.push_back(what + " must be an array of rings (got " + detail::describe(rings) + ")");
@@ -156,13 +167,13 @@ void read_polygon(const Json& rings, const detail::PolygonPlace& place, bool pla
   }
   RawPolygon polygon(rings.size());
   for (std::size_t r = 0; r < rings.size(); ++r) {
-    read_ring(rings[r], detail::ring_name(place, r), planar, draft, polygon[r], range_reported);
+    read_ring(rings[r], detail::ring_name(place, r), planar, draft, polygon[r], range_reported, advice);
   }
   draft.polygons.push_back(std::move(polygon));
 }
 
 void read_geometry(const Json& feature, const std::string& path, bool planar, FeatureDraft& draft,
-                   detail::CrsDeclarations& crs) {
+                   detail::CrsDeclarations& crs, const std::string& advice) {
   const Json* geometry = detail::optional_member(feature, "geometry");
   if (!geometry || geometry->is_null()) {
     draft.problems.push_back(std::string(geometry ? "geometry is null" : "missing geometry") +
@@ -190,20 +201,21 @@ void read_geometry(const Json& feature, const std::string& path, bool planar, Fe
   }
   bool range_reported = false;
   if (name == "Polygon") {
-    read_polygon(*coordinates, {0, false}, planar, draft, range_reported);
+    read_polygon(*coordinates, {0, false}, planar, draft, range_reported, advice);
     return;
   }
   draft.multi = true;
   if (coordinates->empty()) draft.problems.push_back("the MultiPolygon has no polygons");
   for (std::size_t k = 0; k < coordinates->size(); ++k) {
-    read_polygon((*coordinates)[k], {k, true}, planar, draft, range_reported);
+    read_polygon((*coordinates)[k], {k, true}, planar, draft, range_reported, advice);
   }
 }
 
 // The first pass: every feature as written, or the reasons the file is not a coverage map at all
 // (thrown at once: nothing else can be read then).
+// `top` receives the frame of a CRS the file declares at its top, when options can resolve one.
 std::vector<FeatureDraft> read_features(const Json& root, const std::string& file, const CoverageMapOptions& options,
-                                        detail::CrsDeclarations& crs) {
+                                        detail::CrsDeclarations& crs, detail::TopLevelCrs& top) {
   constexpr const char* kExpected = "expected a GeoJSON FeatureCollection with one Feature per coverage cell";
   if (!root.is_object()) throw InputError(file, 0, "", std::string(kExpected) + " (got " + detail::describe(root) + ")");
   const Json* type = detail::optional_member(root, "type");
@@ -219,6 +231,11 @@ std::vector<FeatureDraft> read_features(const Json& root, const std::string& fil
                      std::to_string(features->size()) + " features; covmap audits at most " +
                          std::to_string(kMaxMapFeatures) + " per map (docs/RELIABILITY.md): split the map into regions");
   crs.add(root, "");
+  if (!options.crs_frame) top = detail::resolve_top_level(crs, options.resolve_crs, options.planar);
+  // Positions are x/y for --planar and for a declared CRS (usable or not: a refused one is reported
+  // once, not again as every position out of lon/lat range), lon/lat otherwise.
+  const bool planar = options.planar || options.crs_frame || top.frame || !top.problems.empty();
+  const std::string advice = not_lon_lat_advice(options);
 
   std::vector<FeatureDraft> drafts;
   drafts.reserve(features->size());
@@ -237,7 +254,7 @@ std::vector<FeatureDraft> read_features(const Json& root, const std::string& fil
     }
     crs.add(feature, draft.label);
     read_sensor(feature, options.sensor_property, draft);
-    read_geometry(feature, draft.label, options.planar, draft, crs);
+    read_geometry(feature, draft.label, planar, draft, crs, advice);
   }
   return drafts;
 }
@@ -266,6 +283,33 @@ double central_longitude(std::vector<double> lons) {
 
 bool usable(const FeatureDraft& d) { return d.problems.empty(); }
 
+// The worst |k/k_centre - 1| of a projected CRS over the bounding box of the usable vertices, on a
+// grid of kScaleGridSide² points: k varies smoothly over a regional map, so the grid finds its
+// extremes without asking PROJ about every vertex.
+constexpr int kScaleGridSide = 17;
+
+double crs_scale_distortion(const MapFrame& frame, const std::vector<FeatureDraft>& drafts) {
+  double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
+  for (const auto& d : drafts) {
+    if (!usable(d)) continue;
+    for (const auto& polygon : d.polygons)
+      for (const auto& ring : polygon)
+        for (const Point& p : ring) {
+          x0 = std::min(x0, p.x), x1 = std::max(x1, p.x);
+          y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+        }
+  }
+  if (!(x0 <= x1 && y0 <= y1)) return 0.0;
+  const double k_centre = frame.point_scale_at({(x0 + x1) / 2, (y0 + y1) / 2});
+  double worst = 0.0;
+  for (int i = 0; i < kScaleGridSide; ++i)
+    for (int j = 0; j < kScaleGridSide; ++j) {
+      const Point p{x0 + (x1 - x0) * i / (kScaleGridSide - 1), y0 + (y1 - y0) * j / (kScaleGridSide - 1)};
+      worst = std::max(worst, std::abs(frame.point_scale_at(p) / k_centre - 1.0));
+    }
+  return worst;
+}
+
 LocalProjection projection_for(const std::vector<FeatureDraft>& drafts) {
   std::vector<double> lons;
   double lat_lo = std::numeric_limits<double>::infinity(), lat_hi = -lat_lo;
@@ -287,12 +331,17 @@ LocalProjection projection_for(const std::vector<FeatureDraft>& drafts) {
 }  // namespace
 
 CoverageMap parse_coverage_map(std::string_view text, const std::string& file, const CoverageMapOptions& options) {
+  if (options.crs_frame && options.planar)
+    throw std::invalid_argument("CoverageMapOptions: planar and a CRS frame are mutually exclusive");
   detail::CrsDeclarations crs;
+  detail::TopLevelCrs top;
   std::vector<FeatureDraft> drafts;
   {
     const Json root = detail::parse_json(text, file);  // freed before the second pass
-    drafts = read_features(root, file, options, crs);
+    drafts = read_features(root, file, options, crs, top);
   }
+  const std::shared_ptr<const MapFrame> crs_frame = options.crs_frame ? options.crs_frame : top.frame;
+  const bool crs_judged = !top.problems.empty();  // the declaration was read and refused
   if (options.max_sensors > 0) {
     std::unordered_set<std::string_view> sensors;
     for (const auto& d : drafts) sensors.insert(d.sensor);
@@ -309,14 +358,26 @@ CoverageMap parse_coverage_map(std::string_view text, const std::string& file, c
     throw InputError(file, 0, "",
                      std::to_string(vertices) + " vertices; covmap audits at most " + std::to_string(kMaxMapVertices) +
                          " per map (docs/RELIABILITY.md): simplify the cells or split the map into regions");
-  std::vector<InputProblem> problems = crs.problems(options.planar);
+  std::vector<InputProblem> problems = std::move(top.problems);
+  if (!options.crs_frame) {
+    std::vector<InputProblem> declared = crs.problems(options.planar || crs_frame || crs_judged);
+    problems.insert(problems.end(), declared.begin(), declared.end());
+  }
   // A crs problem means the numbers are not what the reader takes them for; validating the
   // geometry of misread coordinates would only bury the one message that matters.
   const bool check_geometry = problems.empty() && std::any_of(drafts.begin(), drafts.end(), usable);
 
   CoverageMap map;
-  if (check_geometry && !options.planar) map.projection = projection_for(drafts);
-  const double k_centre = map.projection ? map.projection->point_scale(map.projection->lon0(), map.projection->lat0()) : 1.0;
+  // Set for lon/lat input only: the vertices are then projected, each with its point scale.
+  std::optional<LocalProjection> local;
+  if (check_geometry && crs_frame) {
+    map.frame = crs_frame;
+    map.max_scale_distortion = crs_scale_distortion(*crs_frame, drafts);
+  } else if (check_geometry && !options.planar) {
+    local = projection_for(drafts);
+    map.frame = std::make_shared<LocalProjection>(*local);
+  }
+  const double k_centre = local ? local->point_scale(local->lon0(), local->lat0()) : 1.0;
   for (auto& d : drafts) {
     if (check_geometry && usable(d)) {
       MapCell cell;
@@ -331,11 +392,11 @@ CoverageMap parse_coverage_map(std::string_view text, const std::string& file, c
           detail::RingInput& ring = rings.emplace_back();
           ring.projected.reserve(raw.size());
           for (const Point& p : raw) {
-            if (!map.projection) {
+            if (!local) {
               ring.projected.push_back(p);
               continue;
             }
-            const ScaledPoint q = map.projection->forward_with_scale(p.x, p.y);
+            const ScaledPoint q = local->forward_with_scale(p.x, p.y);
             map.max_scale_distortion = std::max(map.max_scale_distortion, std::abs(q.scale / k_centre - 1.0));
             ring.projected.push_back(q.point);
             projected = projected && std::isfinite(q.point.x) && std::isfinite(q.point.y);
@@ -345,7 +406,7 @@ CoverageMap parse_coverage_map(std::string_view text, const std::string& file, c
         if (!projected) {
           // Only a map reaching 90 degrees of longitude from its centre gets here.
           d.problems.push_back((d.multi ? "polygon " + std::to_string(k) : std::string("the polygon")) +
-                               " lies too far from the map centre for " + map.projection->description() +
+                               " lies too far from the map centre for " + local->description() +
                                "; covmap audits regional maps, not continents");
           continue;
         }

@@ -45,6 +45,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -61,10 +62,12 @@ using MapPolygon = CellPolygon;
 using MapCell = CoverageCell;
 
 struct CoverageMap {
-  std::vector<MapCell> cells;                 // planar metres (projected when geographic)
-  std::optional<LocalProjection> projection;  // set for lon/lat input
-  double max_scale_distortion = 0.0;          // worst |k/k0 - 1| over all vertices (0 for planar)
-  std::size_t vertex_count = 0;               // vertices kept, over all rings
+  std::vector<MapCell> cells;  // planar metres (projected when geographic)
+  // The plane's way back to the earth (io/map_frame.h): covmap's local projection for lon/lat
+  // input, the data's projected CRS when one was declared; null for a planar map without a CRS.
+  std::shared_ptr<const MapFrame> frame;
+  double max_scale_distortion = 0.0;  // worst |k/k0 - 1| over all vertices (0 for planar)
+  std::size_t vertex_count = 0;       // vertices kept, over all rings
 };
 
 struct CoverageMapOptions {
@@ -77,6 +80,19 @@ struct CoverageMapOptions {
   // limit). `covmap audit` passes its own limit (audit::kMaxSensors), so an
   // oversized map is refused after the JSON is parsed instead of after every ring is validated.
   std::size_t max_sensors = 0;
+  // The data's projected CRS, when the caller already knows it (gis/ reading a GDAL dataset):
+  // positions are then its metres, used as they are, and the file's "crs" members are not judged.
+  // Must not be set with `planar`.
+  std::shared_ptr<const MapFrame> crs_frame;
+  // Turns the name of a non-WGS84 "crs" declaration at the top of the file ("EPSG:2056",
+  // "urn:ogc:def:crs:EPSG::2056") into the frame of that CRS (gis/ does it through PROJ; it throws
+  // InputError for a CRS covmap cannot use). Empty: such a declaration is refused unless `planar`;
+  // set: `planar` with such a declaration is refused instead (the data say what they are).
+  CrsResolver resolve_crs;
+  // The name of the geographic CRS the data declared, when a caller converted them to WGS84 lon/lat
+  // first (gis/ reading a GDAL dataset): messages about coordinates that are not lon/lat then name
+  // it instead of suggesting --planar. Empty: GeoJSON's own WGS84.
+  std::string declared_geographic_crs;
 };
 
 CoverageMap read_coverage_map(const std::filesystem::path& path, const CoverageMapOptions& options = {});

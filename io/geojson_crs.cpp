@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <set>
+#include <stdexcept>
 
 namespace covmap::io::detail {
 namespace {
@@ -60,14 +61,40 @@ void CrsDeclarations::add(const Json& object, const std::string& path) {
   declared_.push_back(std::move(d));
 }
 
-std::vector<InputProblem> CrsDeclarations::problems(bool planar) const {
+std::optional<std::string> CrsDeclarations::foreign_top_level() const {
+  if (declared_.empty() || declared_.front().path != "crs" || declared_.front().wgs84) return std::nullopt;
+  return declared_.front().name;
+}
+
+TopLevelCrs resolve_top_level(const CrsDeclarations& declarations, const CrsResolver& resolve, bool planar) {
+  TopLevelCrs out;
+  const std::optional<std::string> name = declarations.foreign_top_level();
+  if (!resolve || !name) return out;
+  try {
+    out.frame = resolve(*name);
+  } catch (const std::invalid_argument& e) {
+    // With --planar the user vouches for planar coordinates, and a name that is no CRS covmap can
+    // use ("covmap:local-plane-metres", a planning tool's own) is only a label.
+    if (!planar) out.problems.push_back({0, "crs", e.what()});
+    return out;
+  }
+  if (planar) {
+    out.frame = nullptr;
+    out.problems.push_back({0, "crs",
+                            "declares coordinate reference system " + quoted(*name) +
+                                ", and covmap uses it: drop --planar (it is only for data without a CRS)"});
+  }
+  return out;
+}
+
+std::vector<InputProblem> CrsDeclarations::problems(bool any_system) const {
   std::vector<InputProblem> out;
   if (declared_.empty()) return out;
   const CrsDeclaration& first = declared_.front();
   std::set<std::string> reported_foreign;
   std::set<std::string> reported_mixed;
   for (const auto& d : declared_) {
-    if (!planar && !d.wgs84 && reported_foreign.insert(d.key()).second) {
+    if (!any_system && !d.wgs84 && reported_foreign.insert(d.key()).second) {
       out.push_back({0, d.path,
                      "declares coordinate reference system " + quoted(d.name) +
                          ", but covmap reads GeoJSON as WGS84 longitude/latitude (RFC 7946); reproject the file to "

@@ -16,6 +16,7 @@
 
 #include "io/input_error.h"
 #include "io/json_fields.h"
+#include "io/map_frame.h"
 
 namespace covmap::io::detail {
 
@@ -34,11 +35,27 @@ class CrsDeclarations {
   void add(const Json& object, const std::string& path);
 
   // Problems with the declarations, each reported once per distinct system (a file whose 5000
-  // features all declare EPSG:32632 gets one message, not 5000). Empty when all is well.
-  std::vector<InputProblem> problems(bool planar) const;
+  // features all declare EPSG:32632 gets one message, not 5000). Empty when all is well. With
+  // `any_system` (--planar, or a CRS the caller resolved) only disagreement is a problem.
+  std::vector<InputProblem> problems(bool any_system) const;
+
+  // The name of the file's top-level declaration (the first one added, when its path is "crs")
+  // if it is not WGS84: the CRS a CRS-aware reader resolves for the whole file.
+  std::optional<std::string> foreign_top_level() const;
 
  private:
   std::vector<CrsDeclaration> declared_;
 };
+
+// What a CRS-aware reader makes of a file's top-level declaration: the frame of a non-WGS84 CRS
+// when `resolve` is set and the file declares one (its positions are then x/y in that CRS), or the
+// problems: a CRS covmap cannot use (the resolver's reason), or --planar given for data that
+// declare a CRS the resolver accepts. With --planar a declaration the resolver refuses is only a
+// label and accepted. Nothing when the file declares WGS84 or nothing, or `resolve` is empty.
+struct TopLevelCrs {
+  std::shared_ptr<const MapFrame> frame;
+  std::vector<InputProblem> problems;
+};
+TopLevelCrs resolve_top_level(const CrsDeclarations& declarations, const CrsResolver& resolve, bool planar);
 
 }  // namespace covmap::io::detail

@@ -63,6 +63,11 @@ LonLat LocalProjection::inverse(Point p) const {
 
 double LocalProjection::point_scale(double lon, double lat) const { return forward_with_scale(lon, lat).scale; }
 
+double LocalProjection::point_scale_at(Point p) const {
+  const LonLat g = inverse(p);
+  return point_scale(g.lon, g.lat);
+}
+
 std::string LocalProjection::description() const {
   return "transverse Mercator (WGS84), central meridian " + degrees(lon0_, 'E', 'W') + ", origin " +
          degrees(lat0_, 'N', 'S') + ", metres";

@@ -25,34 +25,27 @@
 #include <string>
 
 #include "core/diagram.h"
+#include "io/map_frame.h"
 
 namespace covmap::io {
 
-struct LonLat {
-  double lon = 0.0;  // degrees east
-  double lat = 0.0;  // degrees north
-};
-
-// A projected point with the point scale there (both come out of one evaluation).
-struct ScaledPoint {
-  Point point;
-  double scale = 1.0;
-};
-
-class LocalProjection {
+class LocalProjection final : public MapFrame {
  public:
   // The projection centred on (lon0, lat0), in degrees. Throws std::invalid_argument when out of range.
   static LocalProjection about(double lon0, double lat0);
 
+  FrameKind kind() const override { return FrameKind::kLocalProjection; }
   // Planar metres of a geographic position (degrees).
-  Point forward(double lon, double lat) const;
+  Point forward(double lon, double lat) const override;
   // forward() and point_scale() at once, for readers that project many vertices.
   ScaledPoint forward_with_scale(double lon, double lat) const;
   // Geographic position (degrees, lon in [-180, 180]) of planar metres.
-  LonLat inverse(Point p) const;
+  LonLat inverse(Point p) const override;
   // The point scale k of the projection at (lon, lat): planar length / true length of a short
   // segment there, the same in every direction. 1 on the central meridian.
   double point_scale(double lon, double lat) const;
+  double point_scale_at(Point p) const override;
+  LonLat reference() const override { return {lon0_, lat0_}; }
 
   double lon0() const { return lon0_; }
   double lat0() const { return lat0_; }
@@ -60,7 +53,9 @@ class LocalProjection {
   double northing0() const { return northing0_; }
 
   // "transverse Mercator (WGS84), central meridian 8.0084°E, origin 47.1044°N, metres".
-  std::string description() const;
+  std::string description() const override;
+  std::string crs_wkt() const override { return {}; }
+  std::string crs_code() const override { return {}; }
 
  private:
   LocalProjection(double lon0, double lat0, double northing0) : lon0_(lon0), lat0_(lat0), northing0_(northing0) {}

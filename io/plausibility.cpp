@@ -19,14 +19,17 @@ Box map_box(const CoverageMap& map) {
 
 }  // namespace
 
-std::optional<std::string> lon_lat_looking(const CoverageMap& planar_map) {
-  const Box box = map_box(planar_map);
+std::optional<std::string> lon_lat_looking(const CoverageMap& map) {
+  if (map.frame && map.frame->kind() == FrameKind::kLocalProjection) return std::nullopt;  // read as degrees
+  const Box box = map_box(map);
   if (box.empty() || box.xmin < -180 || box.xmax > 180 || box.ymin < -90 || box.ymax > 90) return std::nullopt;
   if (std::max(box.width(), box.height()) >= kLonLatLookingSpan) return std::nullopt;
   return "the map's coordinates all lie within longitude/latitude ranges (x " + fixed(box.xmin, 4) + " to " +
          fixed(box.xmax, 4) + ", y " + fixed(box.ymin, 4) + " to " + fixed(box.ymax, 4) +
-         "), but --planar reads them as metres: a map " + metres(box.width()) + " wide; drop --planar if they are "
-         "degrees";
+         "), but " + (map.frame ? "its CRS, " + map.frame->description() + "," : std::string("--planar")) +
+         " reads them as metres: a map " + metres(box.width()) + " wide; " +
+         (map.frame ? "if they are degrees, declare the CRS they are in (e.g. ogr2ogr -a_srs EPSG:4326)"
+                    : "drop --planar if they are degrees");
 }
 
 std::optional<std::string> sensors_far_outside(const CoverageMap& map, const std::vector<ReportedSensor>& sensors) {

@@ -20,7 +20,7 @@ void check_alpha(double alpha) {
 
 void check_options(const ReportedSensorOptions& options) {
   if (options.alpha) check_alpha(*options.alpha);
-  if (options.planar && options.projection) {
+  if (options.planar && options.frame) {
     throw std::invalid_argument("ReportedSensorOptions: planar and a projection are mutually exclusive");
   }
 }
@@ -37,6 +37,7 @@ std::vector<ReportedSensor> parse(std::string_view text, const std::string& file
   if (format == SensorsFormat::kDetect && !json && !looks_like_json(text)) format = SensorsFormat::kCsv;
   std::vector<InputProblem> file_problems;
   std::vector<detail::SensorDraft> drafts;
+  std::shared_ptr<const MapFrame> declared;  // a GeoJSON file's own CRS
   if (format == SensorsFormat::kCsv) {
     drafts = detail::parse_sensors_csv(text, file);
   } else {
@@ -45,10 +46,12 @@ std::vector<ReportedSensor> parse(std::string_view text, const std::string& file
     const bool geojson = format == SensorsFormat::kGeoJson ||
                          (format == SensorsFormat::kDetect && root.is_object() && !root.contains("format") &&
                           root.contains("type"));
-    drafts = geojson ? detail::parse_sensors_geojson(root, file, options.planar, file_problems)
+    drafts = geojson ? detail::parse_sensors_geojson(root, file, options.planar, options.xy_frame != nullptr, options.resolve_crs,
+                                                   declared, file_problems)
                      : detail::parse_sensors_sites_json(root, file);
   }
-  return detail::finish_sensors(std::move(drafts), file, options, std::move(file_problems));
+  const MapFrame* xy_frame = options.xy_frame ? options.xy_frame.get() : declared.get();
+  return detail::finish_sensors(std::move(drafts), file, options, xy_frame, std::move(file_problems));
 }
 
 }  // namespace

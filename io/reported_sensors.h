@@ -21,11 +21,14 @@
 // from a weight: weights are defined only up to a common factor, so such a power would be
 // meaningless.
 //
-// Positions: lon/lat input is projected with options.projection (the map's), which must then be
-// set; x/y input is used as is and requires a planar map (options.projection null): mixing a
-// planar sensor file with a lon/lat map would silently put the sensors in the wrong place. A
-// sensor that gives both pairs (vendor exports do) is placed with the pair the map is in (lon/lat
-// for a lon/lat map, x/y for a planar one), and options.notes says so once per file.
+// Positions: lon/lat input is placed with options.frame (the map's), which must then be set. x/y
+// input is in the CRS of options.xy_frame when one is set (`--sensor-crs`, or a GeoJSON "crs"
+// resolved by options.resolve_crs) and goes through WGS84 into the map's plane, which needs a map
+// with a frame; without one, x/y are taken to be the map's own plane: as they are for a planar map
+// or a map in a projected CRS, refused against a lon/lat map (the sensors would silently land in
+// the wrong place). A sensor that gives both pairs (vendor exports do) is placed with x/y when their
+// CRS is declared or the map is planar, with lon/lat otherwise, and options.notes says so once per
+// file.
 //
 // Names: a sensor's human name ("Zollikofen") is optional text kept as read in ReportedSensor::name
 // (empty when absent, null or an empty field); names need not be unique and are never used to
@@ -39,7 +42,8 @@
 // ("sites[3]", "features[3]") and the sensor id: unreadable file, invalid JSON, wrong format tag,
 // bad header, missing or malformed fields (a JSON name that is not a string, text that is not
 // UTF-8), values out of range, "tx_power_dbm needs --alpha",
-// lon/lat without a projection, x/y against a lon/lat map, duplicate ids and duplicate positions
+// lon/lat without a projection, x/y against a lon/lat map without their CRS, x/y in a declared CRS
+// against a map without one, duplicate ids and duplicate positions
 // (naming both sensors). Invalid options (alpha not finite and > 0, or planar together with a
 // projection) are a caller's mistake and throw std::invalid_argument.
 #pragma once
@@ -50,7 +54,7 @@
 #include <string_view>
 #include <vector>
 
-#include "io/local_projection.h"
+#include "io/map_frame.h"
 #include "core/diagram.h"
 #include "core/reported_sensor.h"
 
@@ -60,8 +64,16 @@ struct ReportedSensorOptions {
   // Path-loss exponent (`--alpha`): received power falls by 10 * alpha dB per decade of distance.
   // Needed only for sensors that give a power but no weight. Must be finite and > 0 when set.
   std::optional<double> alpha;
-  // The map's projection, for lon/lat sensor files. Null for a planar map.
-  const LocalProjection* projection = nullptr;
+  // The map's frame (io/map_frame.h), for sensor files that are not in the map's plane. Null for a
+  // planar map without a CRS.
+  const MapFrame* frame = nullptr;
+  // The CRS of the file's x/y positions (`--sensor-crs`; a GeoJSON file's positions are then [x, y]
+  // in it, whatever "crs" it declares); null: the file's own declaration, if resolve_crs reads one,
+  // else the map's plane.
+  std::shared_ptr<const MapFrame> xy_frame;
+  // Reads a GeoJSON sensor file's non-WGS84 "crs" declaration (as CoverageMapOptions::resolve_crs):
+  // its positions are then x/y in that CRS.
+  CrsResolver resolve_crs;
   // The map is planar (`--planar`): GeoJSON positions are [x, y]. Must not be set with a projection.
   bool planar = false;
   // Where the reader says which of two readings it chose, for people ("used lon/lat, as the map is

@@ -101,32 +101,40 @@ std::string sensor_label(const SensorDraft& draft) {
 }
 
 std::vector<ReportedSensor> finish_sensors(std::vector<SensorDraft> drafts, const std::string& file,
-                                           const ReportedSensorOptions& options,
+                                           const ReportedSensorOptions& options, const MapFrame* xy_frame,
                                            std::vector<InputProblem> file_problems) {
   if (drafts.empty() && file_problems.empty()) throw InputError(file, 0, "", "no sensors");
-  // Sensors that give both pairs are placed with the one the map is in, and the notes say so.
+  // Sensors that give both pairs are placed with x/y when their CRS is declared or the map is
+  // planar (there is nothing else to place them with), with lon/lat otherwise; the notes say so.
+  const bool use_xy = xy_frame || !options.frame;
   std::size_t both = 0;
   for (auto& d : drafts) {
     if (!d.xy || !d.lon_lat) continue;
     ++both;
-    if (options.projection) d.xy.reset();
-    else d.lon_lat.reset();
+    if (use_xy) d.lon_lat.reset();
+    else d.xy.reset();
   }
   if (both > 0 && options.notes) {
     options.notes->push_back(file + ": " + std::to_string(both) + (both == 1 ? " sensor gives" : " sensors give") +
                              " both x/y and lon/lat; used " +
-                             (options.projection ? "lon/lat, as the map is in lon/lat" : "x/y, as the map is planar"));
+                             (xy_frame  ? "x/y, in " + xy_frame->description() + " as declared"
+                              : use_xy ? std::string("x/y, as the map is planar")
+                                       : std::string("lon/lat, as no CRS is declared for x/y (--sensor-crs)")));
   }
   for (auto& d : drafts) {
     if (d.usable()) check_values(d);
   }
 
   // Problems of the whole file, said once rather than per sensor.
-  std::vector<const SensorDraft*> geographic_without_map, planar_with_geographic_map, power_without_alpha;
+  // x/y without a declared CRS are the map's plane, which only a lon/lat map cannot take; x/y in a
+  // declared CRS go through WGS84, which a map without a CRS cannot take.
+  const bool lon_lat_map = options.frame && options.frame->kind() == FrameKind::kLocalProjection;
+  std::vector<const SensorDraft*> geographic_without_map, planar_with_geographic_map, crs_without_map, power_without_alpha;
   for (const auto& d : drafts) {
     if (!d.usable()) continue;
-    if (d.lon_lat && !options.projection) geographic_without_map.push_back(&d);
-    if (d.xy && options.projection) planar_with_geographic_map.push_back(&d);
+    if (d.lon_lat && !options.frame) geographic_without_map.push_back(&d);
+    if (d.xy && !xy_frame && lon_lat_map) planar_with_geographic_map.push_back(&d);
+    if (d.xy && xy_frame && !options.frame) crs_without_map.push_back(&d);
     if (!d.sensor.weight && d.sensor.tx_power_dbm && !options.alpha) power_without_alpha.push_back(&d);
   }
   if (!geographic_without_map.empty()) {
@@ -136,14 +144,21 @@ std::vector<ReportedSensor> finish_sensors(std::vector<SensorDraft> drafts, cons
   }
   if (!planar_with_geographic_map.empty()) {
     file_problems.push_back(file_problem(planar_with_geographic_map,
-                                         "positions are x/y but the map is in lon/lat; give lon/lat (or use --planar "
-                                         "if the map is planar too)"));
+                                         "positions are x/y but the map is in lon/lat; give lon/lat, name the CRS of "
+                                         "the x/y with --sensor-crs (e.g. EPSG:2056), or use --planar if the map is "
+                                         "planar too"));
+  }
+  if (!crs_without_map.empty()) {
+    file_problems.push_back(file_problem(crs_without_map,
+                                         "positions are x/y in " + xy_frame->description() +
+                                             " but the map has no CRS, so there is no way to place them on it; give "
+                                             "x/y in the map's units"));
   }
   if (!power_without_alpha.empty()) {
     file_problems.push_back(file_problem(power_without_alpha,
                                          "tx_power_dbm needs --alpha (the path-loss exponent) to become a weight"));
   }
-  const bool placeable = geographic_without_map.empty() && planar_with_geographic_map.empty();
+  const bool placeable = geographic_without_map.empty() && planar_with_geographic_map.empty() && crs_without_map.empty();
 
   for (auto& d : drafts) {
     if (!d.usable()) continue;
@@ -159,12 +174,20 @@ std::vector<ReportedSensor> finish_sensors(std::vector<SensorDraft> drafts, cons
       }
     }
     if (!placeable) continue;
-    if (d.xy) {
+    if (d.xy && xy_frame) {
+      const LonLat g = xy_frame->inverse(*d.xy);
+      s.lon = g.lon;
+      s.lat = g.lat;
+      s.position = options.frame->forward(g.lon, g.lat);
+      if (!std::isfinite(s.position.x) || !std::isfinite(s.position.y))
+        d.problems.push_back("position (" + format_number(d.xy->x) + ", " + format_number(d.xy->y) + ") lies outside " +
+                             xy_frame->description() + ": check the coordinates or --sensor-crs");
+    } else if (d.xy) {
       s.position = *d.xy;
     } else {
       s.lon = d.lon_lat->lon;
       s.lat = d.lon_lat->lat;
-      s.position = options.projection->forward(*s.lon, *s.lat);
+      s.position = options.frame->forward(*s.lon, *s.lat);
     }
   }
   check_unique_positions(drafts);

@@ -129,7 +129,8 @@ std::vector<SensorDraft> parse_sensors_sites_json(const Json& root, const std::s
   return drafts;
 }
 
-std::vector<SensorDraft> parse_sensors_geojson(const Json& root, const std::string& file, bool planar,
+std::vector<SensorDraft> parse_sensors_geojson(const Json& root, const std::string& file, bool planar, bool xy_crs,
+                                               const CrsResolver& resolve, std::shared_ptr<const MapFrame>& declared,
                                                std::vector<InputProblem>& file_problems) {
   const Json* type = optional_member(root, "type");
   if (!root.is_object() || !type || *type != "FeatureCollection") {
@@ -142,6 +143,9 @@ std::vector<SensorDraft> parse_sensors_geojson(const Json& root, const std::stri
   if (!features->is_array()) throw InputError(file, 0, "features", "must be an array (got " + describe(*features) + ")");
   CrsDeclarations crs;
   crs.add(root, "");
+  TopLevelCrs top = xy_crs ? TopLevelCrs{} : resolve_top_level(crs, resolve, planar);
+  declared = top.frame;
+  const bool xy = planar || xy_crs || declared || !top.problems.empty();
   std::vector<SensorDraft> drafts;
   drafts.reserve(features->size());
   for (std::size_t i = 0; i < features->size(); ++i) {
@@ -167,13 +171,14 @@ std::vector<SensorDraft> parse_sensors_geojson(const Json& root, const std::stri
     }
     if (properties && properties->is_null()) properties = nullptr;
     read_geojson_id(feature, properties, d);
-    read_point(feature, planar, d);
+    read_point(feature, xy, d);
     if (properties) {
       read_name(*properties, "properties", d);
       read_strengths(*properties, "properties", d);
     }
   }
-  file_problems = crs.problems(planar);
+  file_problems = std::move(top.problems);
+  for (InputProblem& p : crs.problems(xy)) file_problems.push_back(std::move(p));
   return drafts;
 }
 

@@ -3,6 +3,7 @@
 // the same rules and wording to all of them.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -32,13 +33,19 @@ std::string sensor_label(const SensorDraft& draft);
 // that do not stop the reading (the GeoJSON crs checks).
 std::vector<SensorDraft> parse_sensors_csv(std::string_view text, const std::string& file);
 std::vector<SensorDraft> parse_sensors_sites_json(const Json& root, const std::string& file);
-std::vector<SensorDraft> parse_sensors_geojson(const Json& root, const std::string& file, bool planar,
+// Positions are x/y with `planar`, with `xy_crs` (the caller names their CRS: --sensor-crs) or when
+// the file declares a non-WGS84 CRS at its top that `resolve` reads (its frame then goes to
+// `declared`); lon/lat otherwise.
+std::vector<SensorDraft> parse_sensors_geojson(const Json& root, const std::string& file, bool planar, bool xy_crs,
+                                               const CrsResolver& resolve, std::shared_ptr<const MapFrame>& declared,
                                                std::vector<InputProblem>& file_problems);
 
 // Value checks, strengths, projection, unique ids and positions; then the sensors, or one
 // InputError listing `file_problems` followed by every sensor's problems in file order.
+// `xy_frame`: the CRS of the drafts' x/y (options.xy_frame or the file's declaration); null: the
+// map's plane.
 std::vector<ReportedSensor> finish_sensors(std::vector<SensorDraft> drafts, const std::string& file,
-                                           const ReportedSensorOptions& options,
+                                           const ReportedSensorOptions& options, const MapFrame* xy_frame,
                                            std::vector<InputProblem> file_problems);
 
 }  // namespace covmap::io::detail

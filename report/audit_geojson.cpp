@@ -17,11 +17,18 @@ using json = detail::OrderedJson;
 
 bool finite(Point p) { return std::isfinite(p.x) && std::isfinite(p.y); }
 
-// Where positions go: the map's frame, and whether they keep every bit (AuditRenderOptions).
+// Where positions go: through `frame` to WGS84 lon/lat, or (null) the map's plane as it is; and
+// whether they keep every bit (AuditRenderOptions).
 struct Positions {
-  const io::CoverageMap& map;
+  const io::MapFrame* frame = nullptr;
   bool full_precision = false;
 };
+
+// WGS84 for every map with a frame, unless the map's own projected CRS is asked for.
+Positions positions_for(const AuditReportContext& c) {
+  const bool own_crs = c.render.crs_coordinates && c.map.frame && c.map.frame->kind() == io::FrameKind::kProjectedCrs;
+  return {own_crs ? nullptr : c.map.frame.get(), c.render.full_precision};
+}
 
 // Coordinates at the precision the data carry (issue 14): 1e-8 degrees (about a millimetre) or a
 // millimetre in metres, unless full precision was asked for. A 17-digit coordinate only lengthens
@@ -40,15 +47,15 @@ json pair(double a, double b, bool geographic, bool full) {
 
 // A point feature's position: lon in [-180, 180].
 json point_position(Point p, const Positions& at) {
-  if (!at.map.projection) return pair(p.x, p.y, false, at.full_precision);
-  const io::LonLat g = detail::to_lonlat(*at.map.projection, p);
+  if (!at.frame) return pair(p.x, p.y, false, at.full_precision);
+  const io::LonLat g = detail::to_lonlat(*at.frame, p);
   return pair(g.lon, g.lat, true, at.full_precision);
 }
 
 // A vertex of a line or ring: lon kept continuous across the antimeridian.
 json vertex_position(Point p, const Positions& at) {
-  if (!at.map.projection) return pair(p.x, p.y, false, at.full_precision);
-  const io::LonLat g = detail::to_lonlat_continuous(*at.map.projection, p);
+  if (!at.frame) return pair(p.x, p.y, false, at.full_precision);
+  const io::LonLat g = detail::to_lonlat_continuous(*at.frame, p);
   return pair(g.lon, g.lat, true, at.full_precision);
 }
 
@@ -89,8 +96,8 @@ json sensor_properties(const audit::SensorAudit& s, const Positions& where) {
             {"iou_refined", number_or_null(s.iou_refined)},
             {"iou_reported", number_or_null(s.iou_reported)}};
   // Reported position under the names a GIS user expects for the map's coordinates.
-  const char* kx = where.map.projection ? "reported_lon" : "reported_x";
-  const char* ky = where.map.projection ? "reported_lat" : "reported_y";
+  const char* kx = where.frame ? "reported_lon" : "reported_x";
+  const char* ky = where.frame ? "reported_lat" : "reported_y";
   if (s.reported && finite(s.reported->position)) {
     const json at = point_position(s.reported->position, where);
     p[kx] = at[0];
@@ -111,7 +118,7 @@ void check_options(const AuditReportContext& c, const char* who) {
 }  // namespace
 
 void write_sensors_geojson(const AuditReportContext& c, std::ostream& out) {
-  const Positions where{c.map, c.render.full_precision};
+  const Positions where = positions_for(c);
   check_options(c, "write_sensors_geojson");
   json features = json::array();
   for (const auto& s : c.result.sensors) {
@@ -126,7 +133,7 @@ void write_sensors_geojson(const AuditReportContext& c, std::ostream& out) {
 }
 
 void write_shifts_geojson(const AuditReportContext& c, std::ostream& out) {
-  const Positions where{c.map, c.render.full_precision};
+  const Positions where = positions_for(c);
   check_options(c, "write_shifts_geojson");
   json features = json::array();
   for (const auto& s : c.result.sensors) {
@@ -143,11 +150,11 @@ void write_shifts_geojson(const AuditReportContext& c, std::ostream& out) {
 }
 
 void write_diagram_geojson(const AuditReportContext& c, std::ostream& out) {
-  const Positions where{c.map, c.render.full_precision};
+  const Positions where = positions_for(c);
   check_options(c, "write_diagram_geojson");
   const Diagram& d = c.result.refined_diagram;
   const detail::ArcSampling sampling =
-      detail::arc_sampling(c.render, detail::diagram_extent(d), c.map.projection.has_value());
+      detail::arc_sampling(c.render, detail::diagram_extent(d), (c.map.frame != nullptr));
   const detail::DiagramRegions regions = detail::diagram_regions(d, sampling);
   json features = json::array();
   for (const auto& region : regions.regions) {

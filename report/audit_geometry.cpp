@@ -144,11 +144,11 @@ DiagramRegions diagram_regions(const Diagram& d, const ArcSampling& s) {
   return out;
 }
 
-io::LonLat to_lonlat(const io::LocalProjection& projection, Point p) { return projection.inverse(p); }
+io::LonLat to_lonlat(const io::MapFrame& projection, Point p) { return projection.inverse(p); }
 
-io::LonLat to_lonlat_continuous(const io::LocalProjection& projection, Point p) {
+io::LonLat to_lonlat_continuous(const io::MapFrame& projection, Point p) {
   io::LonLat g = projection.inverse(p);
-  g.lon = projection.lon0() + std::remainder(g.lon - projection.lon0(), 360.0);
+  g.lon = projection.reference().lon + std::remainder(g.lon - projection.reference().lon, 360.0);
   return g;
 }
 

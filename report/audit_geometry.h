@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "report/audit_report.h"
-#include "io/local_projection.h"
+#include "io/map_frame.h"
 #include "core/diagram.h"
 
 namespace covmap::report::detail {
@@ -62,9 +62,9 @@ struct DiagramRegions {
 DiagramRegions diagram_regions(const Diagram& d, const ArcSampling& s);
 
 // Geographic position of a planar point for points (lon in [-180, 180]).
-io::LonLat to_lonlat(const io::LocalProjection& projection, Point p);
+io::LonLat to_lonlat(const io::MapFrame& projection, Point p);
 // The same, for vertices of lines and rings: lon is taken within 180 degrees of the central
 // meridian, so a ring across the antimeridian stays one ring (lon may then exceed +-180).
-io::LonLat to_lonlat_continuous(const io::LocalProjection& projection, Point p);
+io::LonLat to_lonlat_continuous(const io::MapFrame& projection, Point p);
 
 }  // namespace covmap::report::detail

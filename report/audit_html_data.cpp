@@ -65,7 +65,7 @@ Json sensor_entry(const GridFrame& f, const audit::SensorAudit& s) {
 }
 
 // lon/lat at the nodes of an n × n grid over the frame (for the cursor's coordinates).
-Json lonlat_grid(const GridFrame& f, const io::LocalProjection& projection, int n) {
+Json lonlat_grid(const GridFrame& f, const io::MapFrame& projection, int n) {
   Json lon = Json::array(), lat = Json::array();
   for (int j = 0; j <= n; ++j) {
     for (int i = 0; i <= n; ++i) {
@@ -80,7 +80,7 @@ Json lonlat_grid(const GridFrame& f, const io::LocalProjection& projection, int 
 
 // Grid coordinates at the nodes of an n × n lon/lat grid over the frame's lon/lat extent (for
 // placing the basemap's tiles).
-Json basemap_grid(const GridFrame& f, const io::LocalProjection& projection, int n, const std::string& url) {
+Json basemap_grid(const GridFrame& f, const io::MapFrame& projection, int n, const std::string& url) {
   double west = 180, east = -180, south = 90, north = -90;
   for (int j = 0; j <= n; ++j) {
     for (int i = 0; i <= n; ++i) {
@@ -123,9 +123,9 @@ std::string audit_page_data(const AuditReportContext& c) {
   const GridFrame f = grid_frame(c);
   Json data;
   data["grid"] = {{"w", f.width}, {"h", f.height}, {"px", o.html_grid_px}, {"m", 1.0 / f.scale}, {"x0", f.xmin}, {"y0", f.ymax}};
-  data["lonlat"] = c.map.projection ? lonlat_grid(f, *c.map.projection, o.html_lonlat_grid) : Json(nullptr);
-  data["basemap"] = c.map.projection && !o.basemap_url.empty()
-                        ? basemap_grid(f, *c.map.projection, o.html_lonlat_grid, o.basemap_url)
+  data["lonlat"] = c.map.frame ? lonlat_grid(f, *c.map.frame, o.html_lonlat_grid) : Json(nullptr);
+  data["basemap"] = c.map.frame && !o.basemap_url.empty()
+                        ? basemap_grid(f, *c.map.frame, o.html_lonlat_grid, o.basemap_url)
                         : Json(nullptr);
   Json verdicts = Json::array();
   for (const audit::SensorVerdict v : audit::kAllSensorVerdicts)

@@ -13,7 +13,7 @@
 // Contract
 //  - Accepted: any AuditResult, including partial ones (a failed stage leaves defaults behind) and
 //    non-finite numbers; any strings (ids may hold markup, quotes, control characters or bytes
-//    that are not UTF-8). The map's cells are planar metres; map.projection set means the map was
+//    that are not UTF-8). The map's cells are planar metres; map.frame set means the map was
 //    lon/lat and geographic output is wanted. result.refined_diagram is expected clipped to the
 //    map (all its faces bounded); unbounded faces are left out of diagram.geojson and the HTML and
 //    counted (diagram.geojson's "omitted_unbounded_faces").
@@ -34,6 +34,7 @@
 
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <iosfwd>
 #include <optional>
 #include <span>
@@ -62,6 +63,10 @@ struct AuditRenderOptions {
   // sensors.geojson and diagram.geojson: coordinates with every bit (`--full-precision`) instead
   // of rounded to 1e-8 degrees or a millimetre, the precision any coverage map carries.
   bool full_precision = false;
+  // sensors, shifts and diagram GeoJSON of a map in a projected CRS: coordinates in that CRS's
+  // metres instead of WGS84 lon/lat, for outputs that carry the CRS (the GeoPackage keeps the
+  // map's CRS; the .geojson files stay RFC 7946). No effect on other maps.
+  bool crs_coordinates = false;
   // report.html: width of the map picture in CSS pixels; the height follows the map's aspect ratio.
   double html_width_px = 960.0;
   // report.html: space around the map's bounding box, as a fraction of its larger side.
@@ -96,6 +101,24 @@ struct AuditReportContext {
   const audit::AuditOptions* options = nullptr;
   AuditRenderOptions render{};
 };
+
+// How the GIS layers of the report (sensors, shifts, diagram) are written (`covmap audit --format`):
+// three RFC 7946 GeoJSON files (WGS84 lon/lat, or the plane of a map without a CRS), or one
+// GeoPackage, audit.gpkg, with the three as tables in the map's own CRS (EPSG:4326 for a lon/lat
+// map, none for a planar one).
+enum class GisFormat { kGeoJson, kGeoPackage };
+std::string_view gis_format_name(GisFormat format);                    // "geojson", "gpkg"
+std::optional<GisFormat> gis_format_from_name(std::string_view name);  // nullopt if unknown
+
+// The files of an audit's report folder, in the order they are rendered: report.json, report.html,
+// then the GIS layers of `format`.
+std::vector<std::string> audit_report_file_names(GisFormat format);
+// Every file of the folder, rendered (nothing is written: io/output_plan.h writes them all or
+// nothing). `progress`, if set, hears the name of each file before it is rendered. Throws
+// std::runtime_error if GDAL cannot make the GeoPackage.
+std::vector<std::pair<std::string, std::string>> render_audit_reports(
+    const AuditReportContext& context, GisFormat format,
+    const std::function<void(const std::string& file)>& progress = {});
 
 void write_audit_json(const AuditReportContext& context, std::ostream& out);       // report.json
 void write_audit_html(const AuditReportContext& context, std::ostream& out);       // report.html

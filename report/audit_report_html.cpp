@@ -124,7 +124,7 @@ void legend(std::ostream& out, const AuditReportContext& c) {
 }
 
 void map_panel(std::ostream& out, const AuditReportContext& c) {
-  const bool geographic = c.map.projection.has_value();
+  const bool geographic = (c.map.frame != nullptr);
   out << "<div id=\"map-panel\"><div class=\"map-toolbar\">"
       << "<label><input type=\"checkbox\" data-layer=\"cells\" checked> map cells</label>"
       << "<label><input type=\"checkbox\" data-layer=\"diagram\" checked> recomputed boundaries</label>";
@@ -141,7 +141,10 @@ void map_panel(std::ostream& out, const AuditReportContext& c) {
       << "<button id=\"zoom-home\" title=\"Whole map (or double-click the map)\">whole map</button></span></div>\n"
       << "<div id=\"map-view\"><canvas id=\"map-canvas\" role=\"img\" aria-label=\"coverage map with the sensors coloured by "
          "verdict\"></canvas>"
-      << "<div id=\"scale-bar\" title=\"Scale" << (geographic ? " (metres of the map's local projection)" : " (map units, metres)")
+      << "<div id=\"scale-bar\" title=\"Scale"
+      << (!geographic                                                     ? " (map units, metres)"
+          : c.map.frame->kind() == io::FrameKind::kProjectedCrs ? " (metres of the map's CRS)"
+                                                                : " (metres of the map's local projection)")
       << "\"><i></i><span></span></div><div id=\"map-coords\" title=\""
       << (geographic ? "Longitude and latitude (WGS84) under the cursor" : "Map coordinates under the cursor")
       << "\"></div><div id=\"map-tooltip\" hidden></div>"
@@ -243,8 +246,10 @@ void map_and_cleaning(std::ostream& out, const AuditReportContext& c) {
   out << "<div><h3>The map</h3><table class=\"kv\">\n";
   row(out, "file", "<code>" + html_escape(c.map_file) + "</code>");
   row(out, "cells", count_text(c.map.cells.size()) + " (" + count_text(c.map.vertex_count) + " vertices)");
-  if (c.map.projection) {
-    row(out, "coordinates", "lon/lat, projected: " + html_escape(c.map.projection->description()));
+  if (c.map.frame) {
+    const bool own_crs = c.map.frame->kind() == io::FrameKind::kProjectedCrs;
+    row(out, "coordinates", std::string(own_crs ? "the map's own CRS: " : "lon/lat, projected: ") +
+                                html_escape(c.map.frame->description()));
     row(out, "worst scale distortion", human_number(c.map.max_scale_distortion, 3) +
                                            " (ratios of distances off by up to about twice this)");
   } else {

@@ -25,8 +25,8 @@ json string_list(const std::vector<std::string>& items) {
 void put_position(json& j, Point p, const io::CoverageMap& map) {
   j["x"] = number_or_null(p.x);
   j["y"] = number_or_null(p.y);
-  if (map.projection && std::isfinite(p.x) && std::isfinite(p.y)) {
-    const io::LonLat g = detail::to_lonlat(*map.projection, p);
+  if (map.frame && std::isfinite(p.x) && std::isfinite(p.y)) {
+    const io::LonLat g = detail::to_lonlat(*map.frame, p);
     j["lon"] = number_or_null(g.lon);
     j["lat"] = number_or_null(g.lat);
   } else {
@@ -118,15 +118,26 @@ json thresholds_json(const audit::AuditOptions& o, double bin_size_m) {
           {"line_preference", number_or_null(o.cleaning.line_preference)}};
 }
 
+// "lonlat" (projected by covmap), "projected" (the data's own CRS), "planar" (no CRS).
+const char* coordinates_name(const io::CoverageMap& map) {
+  if (!map.frame) return "planar";
+  switch (map.frame->kind()) {
+    case io::FrameKind::kLocalProjection: return "lonlat";
+    case io::FrameKind::kProjectedCrs: return "projected";
+  }
+  return "planar";
+}
+
 json map_json(const AuditReportContext& c) {
   json j = {{"file", c.map_file},
-            {"coordinates", c.map.projection ? "lonlat" : "planar"},
+            {"coordinates", coordinates_name(c.map)},
             {"cells", c.map.cells.size()},
             {"vertices", c.map.vertex_count}};
-  if (c.map.projection) {
-    j["projection"] = {{"description", c.map.projection->description()},
-                       {"lon0", number_or_null(c.map.projection->lon0())},
-                       {"lat0", number_or_null(c.map.projection->lat0())},
+  if (c.map.frame) {
+    j["projection"] = {{"description", c.map.frame->description()},
+                       {"crs", c.map.frame->crs_code().empty() ? json(nullptr) : json(c.map.frame->crs_code())},
+                       {"lon0", number_or_null(c.map.frame->reference().lon)},
+                       {"lat0", number_or_null(c.map.frame->reference().lat)},
                        {"max_scale_distortion", number_or_null(c.map.max_scale_distortion)}};
   } else {
     j["projection"] = nullptr;

@@ -7,6 +7,8 @@ packages=(
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   libeigen3-dev libceres-dev libgeographiclib-dev
   nlohmann-json3-dev libcli11-dev
+  # GIS input and output (gis/): GDAL/OGR and PROJ; gdal-bin's tools make the GIS tests' inputs.
+  libgdal-dev libproj-dev gdal-bin
   libgtest-dev libbenchmark-dev
   # The browser tests (tests/browser); fonts-liberation so that text has the same metrics, and the
   # page the same layout, on every machine.

@@ -21,7 +21,8 @@ declare -A allowed=(
   [covmap_fitting]="covmap_core"
   [covmap_audit]="covmap_core covmap_cleaning covmap_fitting covmap_mobius covmap_voronoi"
   [covmap_io]="covmap_core"
-  [covmap_report]="covmap_core covmap_voronoi covmap_mobius covmap_recognition covmap_cleaning covmap_fitting covmap_audit covmap_io"
+  [covmap_gis]="covmap_core covmap_io"
+  [covmap_report]="covmap_core covmap_voronoi covmap_mobius covmap_recognition covmap_cleaning covmap_fitting covmap_audit covmap_io covmap_gis"
 )
 # Third-party libraries a covmap library must not link, even indirectly.
 declare -A forbidden=(
@@ -29,7 +30,8 @@ declare -A forbidden=(
   [covmap_check]="ceres CGAL nlohmann"
   [covmap_recognition]="ceres"
   [covmap_cleaning]="ceres CGAL"
-  [covmap_io]="ceres CGAL"
+  [covmap_io]="ceres CGAL gdal proj"
+  [covmap_gis]="ceres CGAL"
 )
 
 failures=0

@@ -30,7 +30,7 @@ std::vector<double> position_errors_in_bins(const AuditRun& r, double bin) {
     Point q = truth[s.id];
     if (r.generated.projection) {
       // Truth is in the generator's plane, the audit's in io's: compare through lon/lat.
-      const auto ll = r.map.projection->inverse(p);
+      const auto ll = r.map.frame->inverse(p);
       p = r.generated.projection->forward(ll.lon, ll.lat);
     }
     out.push_back(std::hypot(p.x - q.x, p.y - q.y) / bin);

@@ -52,7 +52,7 @@ AuditRun generate_and_read(const mapgen::CoverageMapOptions& options, const Site
   io::ReportedSensorOptions so;
   so.alpha = alpha;
   so.planar = mo.planar;
-  so.projection = r.map.projection ? &*r.map.projection : nullptr;
+  so.frame = r.map.frame ? &*r.map.frame : nullptr;
   reported = io::read_reported_sensors(dir.path / mapgen::kSensorsFileName, so);
   return r;
 }

@@ -172,9 +172,9 @@ void check_coverage_map(const io::CoverageMap& map, bool planar) {
   }
   require(map.vertex_count == vertices, "coverage map: vertex_count is the number of vertices kept");
   if (planar) {
-    require(!map.projection && map.max_scale_distortion == 0, "coverage map (planar): no projection");
+    require(!map.frame && map.max_scale_distortion == 0, "coverage map (planar): no projection");
   } else {
-    require(map.projection.has_value(), "coverage map (lon/lat): a projection");
+    require((map.frame != nullptr), "coverage map (lon/lat): a projection");
     require(finite(map.max_scale_distortion) && map.max_scale_distortion >= 0, "coverage map: distortion finite");
   }
 }

@@ -17,12 +17,12 @@ inline void fuzz_sensors(const std::uint8_t* data, std::size_t size, io::Sensors
   static const io::LocalProjection projection = io::LocalProjection::about(8.0, 47.0);
   io::ReportedSensorOptions geographic;
   geographic.alpha = 3.5;
-  geographic.projection = &projection;
+  geographic.frame = &projection;
   io::ReportedSensorOptions planar;
   planar.planar = true;
   for (const auto& options : {geographic, planar}) {
     try {
-      check_sensors(io::parse_reported_sensors(as_text(data, size), "fuzz", options, format), options.projection != nullptr);
+      check_sensors(io::parse_reported_sensors(as_text(data, size), "fuzz", options, format), options.frame != nullptr);
     } catch (const io::InputError&) {
     }
   }

@@ -108,7 +108,7 @@ TEST(CoverageMap, PlanarPolygonWithHoleIsNormalized) {
   const std::vector<Point> hole = {{2, 2}, {4, 2}, {4, 4}, {2, 4}};
   const auto map = parse(collection({feature("a", polygon({ring(outer), ring(hole)}))}), planar());
   ASSERT_EQ(map.cells.size(), 1u);
-  EXPECT_FALSE(map.projection.has_value());
+  EXPECT_FALSE((map.frame != nullptr));
   EXPECT_EQ(map.max_scale_distortion, 0.0);
   EXPECT_EQ(map.vertex_count, 8u);
   const MapCell& cell = map.cells[0];
@@ -199,9 +199,9 @@ TEST(CoverageMap, GeographicMapIsProjectedAboutItsBoundingBoxCentre) {
   // Two cells side by side covering lon 7.5..8.5, lat 46.6..47.6.
   const auto map = parse(collection({feature("west", polygon({ring({{7.5, 46.6}, {8.0, 46.6}, {8.0, 47.6}, {7.5, 47.6}})})),
                                      feature("east", polygon({ring({{8.0, 46.6}, {8.5, 46.6}, {8.5, 47.6}, {8.0, 47.6}})}))}));
-  ASSERT_TRUE(map.projection.has_value());
-  EXPECT_DOUBLE_EQ(map.projection->lon0(), 8.0);
-  EXPECT_DOUBLE_EQ(map.projection->lat0(), 47.1);
+  ASSERT_TRUE((map.frame != nullptr));
+  EXPECT_DOUBLE_EQ(map.frame->reference().lon, 8.0);
+  EXPECT_DOUBLE_EQ(map.frame->reference().lat, 47.1);
 
   // Worst distortion at the map's lowest latitude and widest longitude offset; the spherical closed
   // form k = 1 / sqrt(1 - (cos(lat) sin(dlon))^2) agrees with the ellipsoid to ~0.5% of k - 1.
@@ -214,7 +214,7 @@ TEST(CoverageMap, GeographicMapIsProjectedAboutItsBoundingBoxCentre) {
   EXPECT_GT(shoelace_area(west), 0);
   // The south-west corner (7.5, 46.6) as read back, against an independent geodesic length.
   const Point sw = *std::min_element(west.begin(), west.end(), [](Point a, Point b) { return a.x + a.y < b.x + b.y; });
-  const Point se = map.projection->forward(8.0, 46.6);
+  const Point se = map.frame->forward(8.0, 46.6);
   const double planar_m = std::hypot(sw.x - se.x, sw.y - se.y);
   const double true_m = geodesic_m(7.5, 46.6, 8.0, 46.6);
   EXPECT_GE(planar_m / true_m, 1 - 1e-9);
@@ -224,11 +224,11 @@ TEST(CoverageMap, GeographicMapIsProjectedAboutItsBoundingBoxCentre) {
 TEST(CoverageMap, MapAcrossTheAntimeridianIsCentredOnIt) {
   const auto map = parse(collection({feature("w", polygon({ring({{179.8, 10}, {179.9, 10}, {179.9, 10.1}, {179.8, 10.1}})})),
                                      feature("e", polygon({ring({{-179.9, 10}, {-179.8, 10}, {-179.8, 10.1}, {-179.9, 10.1}})}))}));
-  ASSERT_TRUE(map.projection.has_value());
-  EXPECT_NEAR(std::abs(map.projection->lon0()), 180.0, 1e-9);
+  ASSERT_TRUE((map.frame != nullptr));
+  EXPECT_NEAR(std::abs(map.frame->reference().lon), 180.0, 1e-9);
   EXPECT_LT(map.max_scale_distortion, 1e-5);
   // The two cells are 0.2 degrees apart across the antimeridian, not 359.8 degrees.
-  const Point a = map.projection->forward(179.9, 10), b = map.projection->forward(-179.9, 10);
+  const Point a = map.frame->forward(179.9, 10), b = map.frame->forward(-179.9, 10);
   const double ratio = std::hypot(a.x - b.x, a.y - b.y) / geodesic_m(179.9, 10, -179.9, 10);
   EXPECT_GE(ratio, 1 - 1e-9);
   EXPECT_LE(ratio, 1 + map.max_scale_distortion + 1e-9);
@@ -364,6 +364,51 @@ TEST(CoverageMapErrors, ForeignCrsNeedsPlanar) {
   EXPECT_NE(e.message().find("\"urn:ogc:def:crs:EPSG::32632\""), std::string::npos);
   EXPECT_NE(e.message().find("--planar"), std::string::npos);
   EXPECT_EQ(parse(map, planar()).cells.size(), 1u);
+}
+
+// Issue 14: a CRS-aware caller (gis/, through PROJ) resolves the declaration; the positions are
+// then that CRS's metres, used as they are, and the map carries the CRS's frame.
+TEST(CoverageMapCrs, DeclaredCrsIsResolvedIntoTheMapsFrame) {
+  Json map = collection({good()});
+  map["crs"] = {{"type", "name"}, {"properties", {{"name", "urn:ogc:def:crs:EPSG::2056"}}}};
+  CoverageMapOptions o;
+  std::string asked;
+  o.resolve_crs = [&](const std::string& name) {
+    asked = name;
+    return std::make_shared<testing::ProjectedForTest>(LocalProjection::about(7.0, 46.0));
+  };
+  const CoverageMap m = parse(map, o);
+  EXPECT_EQ(asked, "urn:ogc:def:crs:EPSG::2056");
+  ASSERT_TRUE(m.frame);
+  EXPECT_EQ(m.frame->kind(), FrameKind::kProjectedCrs);
+  const CoverageMap planar_reading = parse(collection({good()}), planar());
+  const auto& got = m.cells[0].polygons[0].outer;  // the positions as they are
+  const auto& want = planar_reading.cells[0].polygons[0].outer;
+  ASSERT_EQ(got.size(), want.size());
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    EXPECT_EQ(got[i].x, want[i].x);
+    EXPECT_EQ(got[i].y, want[i].y);
+  }
+  // --planar with a declaration the resolver accepts: the data say what they are.
+  o.planar = true;
+  const auto e = error_of(map, o);
+  EXPECT_NE(e.message().find("drop --planar"), std::string::npos) << e.what();
+  // --planar with a label no resolver knows: only a label, accepted.
+  o.resolve_crs = [](const std::string&) -> std::shared_ptr<const MapFrame> { throw std::invalid_argument("unknown"); };
+  EXPECT_EQ(parse(map, o).cells.size(), 1u);
+}
+
+TEST(CoverageMapCrs, RefusedCrsIsSaidOnceWithTheResolversReason) {
+  Json map = collection({good(), good()});
+  map["crs"] = {{"type", "name"}, {"properties", {{"name", "EPSG:2227"}}}};
+  CoverageMapOptions o;
+  o.resolve_crs = [](const std::string&) -> std::shared_ptr<const MapFrame> {
+    throw std::invalid_argument("measures in US survey foot");
+  };
+  const auto e = error_of(map, o);
+  ASSERT_EQ(e.problems.size(), 1u) << e.what();  // not again as positions out of lon/lat range
+  EXPECT_EQ(e.item(), "crs");
+  EXPECT_EQ(e.message(), "measures in US survey foot");
 }
 
 TEST(CoverageMapErrors, Wgs84CrsSpellingsAreAccepted) {

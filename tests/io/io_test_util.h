@@ -11,8 +11,30 @@
 #include <string>
 
 #include "io/input_error.h"
+#include "io/local_projection.h"
+#include "io/map_frame.h"
 
 namespace covmap::io::testing {
+
+// A frame standing for a map in its own projected CRS: the plane of a transverse Mercator about
+// another point, with the kind a PROJ frame has (gis/ makes the real ones; io sees only the
+// interface). Its forward/inverse are LocalProjection's, an oracle independent of the reader.
+class ProjectedForTest final : public MapFrame {
+ public:
+  explicit ProjectedForTest(LocalProjection p) : p_(p) {}
+  FrameKind kind() const override { return FrameKind::kProjectedCrs; }
+  Point forward(double lon, double lat) const override { return p_.forward(lon, lat); }
+  LonLat inverse(Point p) const override { return p_.inverse(p); }
+  double point_scale_at(Point p) const override { return p_.point_scale_at(p); }
+  LonLat reference() const override { return p_.reference(); }
+  std::string description() const override { return "test CRS"; }
+  std::string crs_wkt() const override { return "TEST"; }
+  std::string crs_code() const override { return "TEST:1"; }
+
+ private:
+  LocalProjection p_;
+};
+
 
 // A fresh directory under the system temp dir, removed with everything in it at the end of the test.
 class TempDir {

@@ -3,15 +3,19 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <memory>
 #include <random>
 #include <stdexcept>
 
+#include "io/local_projection.h"
 #include "io_test_util.h"
 
 namespace covmap::io {
 namespace {
 
 using testing::input_error_from;
+using testing::ProjectedForTest;
 
 const LocalProjection& swiss() {
   static const LocalProjection p = LocalProjection::about(8.0, 47.0);
@@ -22,7 +26,7 @@ ReportedSensorOptions planar_map() { return {}; }
 
 ReportedSensorOptions geographic_map(std::optional<double> alpha = std::nullopt) {
   ReportedSensorOptions options;
-  options.projection = &swiss();
+  options.frame = &swiss();
   options.alpha = alpha;
   return options;
 }
@@ -143,8 +147,8 @@ TEST(ReportedSensorsCsv, PositionsMustMatchTheMap) {
             "positions are lon/lat but the map is planar, so there is no projection to place them with; give x/y in the "
             "map's units (sensor 'a' (line 2))");
   EXPECT_EQ(csv_error("id,x,y,weight\na,8,47,1\nb,9,47,1\n", geographic_map()).message(),
-            "positions are x/y but the map is in lon/lat; give lon/lat (or use --planar if the map is planar too) (sensor "
-            "'a' (line 2) and 1 more sensor)");
+            "positions are x/y but the map is in lon/lat; give lon/lat, name the CRS of the x/y with --sensor-crs (e.g. "
+            "EPSG:2056), or use --planar if the map is planar too (sensor 'a' (line 2) and 1 more sensor)");
 }
 
 TEST(ReportedSensorsCsv, DuplicateIdsAndPositionsNameBoth) {
@@ -199,7 +203,7 @@ TEST(ReportedSensorsCsv, BothPairsGivenThePairOfTheMapIsUsed) {
   EXPECT_EQ(g[1].position.y, swiss().forward(7.9, 46.95).y);
   EXPECT_EQ(g[0].lon, 8.1);
   ASSERT_EQ(notes.size(), 1u);
-  EXPECT_EQ(notes[0], "sensors.csv: 2 sensors give both x/y and lon/lat; used lon/lat, as the map is in lon/lat");
+  EXPECT_EQ(notes[0], "sensors.csv: 2 sensors give both x/y and lon/lat; used lon/lat, as no CRS is declared for x/y (--sensor-crs)");
   notes.clear();
   ReportedSensorOptions planar = planar_map();
   planar.notes = &notes;
@@ -215,7 +219,74 @@ TEST(ReportedSensorsCsv, BothPairsGivenThePairOfTheMapIsUsed) {
       {"id":"b","lon":8.2,"lat":47.2,"weight":1}]})", "sensors.json", geographic);
   EXPECT_EQ(j[0].position.x, swiss().forward(8.1, 47.1).x);
   ASSERT_EQ(notes.size(), 1u);
-  EXPECT_EQ(notes[0], "sensors.json: 1 sensor gives both x/y and lon/lat; used lon/lat, as the map is in lon/lat");
+  EXPECT_EQ(notes[0], "sensors.json: 1 sensor gives both x/y and lon/lat; used lon/lat, as no CRS is declared for x/y (--sensor-crs)");
+}
+
+// Issue 14: x/y in a declared CRS (--sensor-crs) go through WGS84 into the map's plane; without a
+// declared CRS they are the map's own plane (projected map), refused against a lon/lat map.
+TEST(ReportedSensorsCrs, XyInADeclaredCrsArePlacedThroughWgs84) {
+  const auto sensor_crs = std::make_shared<ProjectedForTest>(LocalProjection::about(7.0, 46.0));
+  const Point xy = sensor_crs->forward(8.1, 47.1);
+  const std::string text = "id,x,y,weight\na," + std::to_string(xy.x) + "," + std::to_string(xy.y) + ",1\n";
+  ReportedSensorOptions o = geographic_map();
+  o.xy_frame = sensor_crs;
+  const auto s = csv(text, o);
+  const LonLat g = sensor_crs->inverse({std::stod(std::to_string(xy.x)), std::stod(std::to_string(xy.y))});
+  EXPECT_EQ(s[0].position.x, swiss().forward(g.lon, g.lat).x);
+  EXPECT_EQ(s[0].position.y, swiss().forward(g.lon, g.lat).y);
+  EXPECT_NEAR(*s[0].lon, 8.1, 1e-6);
+  // Both pairs: with a declared CRS the x/y are used, and the note says in which CRS.
+  std::vector<std::string> notes;
+  o.notes = &notes;
+  csv("id,x,y,lon,lat,weight\na," + std::to_string(xy.x) + "," + std::to_string(xy.y) + ",0,0,1\n", o);
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_EQ(notes[0], "sensors.csv: 1 sensor gives both x/y and lon/lat; used x/y, in test CRS as declared");
+}
+
+TEST(ReportedSensorsCrs, XyWithoutACrsAreTheProjectedMapsPlane) {
+  const ProjectedForTest map_crs(LocalProjection::about(7.5, 46.5));
+  ReportedSensorOptions o;
+  o.frame = &map_crs;
+  const auto s = csv("id,x,y,weight\na,1200.5,-300,1\n", o);
+  EXPECT_EQ(s[0].position.x, 1200.5);
+  EXPECT_EQ(s[0].position.y, -300.0);
+  // lon/lat go through the map's CRS.
+  const auto g = csv("id,lon,lat,weight\na,7.6,46.4,1\n", o);
+  EXPECT_EQ(g[0].position.x, map_crs.forward(7.6, 46.4).x);
+  // Against a lon/lat map, x/y without a CRS are refused and the message names --sensor-crs.
+  const std::string refused = csv_error("id,x,y,weight\na,1200.5,-300,1\n", geographic_map()).message();
+  EXPECT_NE(refused.find("--sensor-crs"), std::string::npos) << refused;
+  // x/y in a declared CRS against a map without one cannot be placed.
+  ReportedSensorOptions planar = planar_map();
+  planar.xy_frame = std::make_shared<ProjectedForTest>(LocalProjection::about(7.0, 46.0));
+  const std::string no_map_crs = csv_error("id,x,y,weight\na,1,2,1\n", planar).message();
+  EXPECT_NE(no_map_crs.find("the map has no CRS"), std::string::npos) << no_map_crs;
+}
+
+// A GeoJSON sensor file that declares a projected CRS at its top: read through the resolver, its
+// positions are x/y in that CRS.
+TEST(ReportedSensorsCrs, GeoJsonDeclaringACrsIsReadInIt) {
+  const auto declared = std::make_shared<ProjectedForTest>(LocalProjection::about(7.0, 46.0));
+  ReportedSensorOptions o = geographic_map();
+  std::string asked;
+  o.resolve_crs = [&](const std::string& name) {
+    asked = name;
+    return declared;
+  };
+  const Point xy = declared->forward(8.05, 47.05);
+  char text[512];
+  std::snprintf(text, sizeof text,
+                R"({"type":"FeatureCollection","crs":{"type":"name","properties":{"name":"urn:ogc:def:crs:EPSG::2056"}},
+                    "features":[{"type":"Feature","properties":{"id":"a","weight":1},"geometry":{"type":"Point","coordinates":[%.17g,%.17g]}}]})",
+                xy.x, xy.y);
+  const auto s = parse_reported_sensors(text, "s.geojson", o);
+  EXPECT_EQ(asked, "urn:ogc:def:crs:EPSG::2056");
+  const LonLat g = declared->inverse(xy);
+  EXPECT_EQ(s[0].position.x, swiss().forward(g.lon, g.lat).x);
+  // A resolver that refuses gives the file's error, naming the crs member.
+  o.resolve_crs = [](const std::string&) -> std::shared_ptr<const MapFrame> { throw std::invalid_argument("no such CRS"); };
+  const InputError e = input_error_from([&] { parse_reported_sensors(text, "s.geojson", o); });
+  EXPECT_NE(std::string(e.what()).find("no such CRS"), std::string::npos) << e.what();
 }
 
 // ---- JSON (covmap.sites/1) ----

@@ -198,7 +198,7 @@ TEST(AuditHtml, SummaryCountsVerdicts) {
   EXPECT_NE(html.find("id=\"count-not-in-map\">" + std::to_string(not_in_map) + "<"), std::string::npos);
   EXPECT_NE(html.find("id=\"count-unreported\">" + std::to_string(unreported) + "<"), std::string::npos);
   EXPECT_NE(html.find("id=\"cleaning-repairs\">28<"), std::string::npos);
-  EXPECT_NE(html.find(f.map.projection->description()), std::string::npos);
+  EXPECT_NE(html.find(f.map.frame->description()), std::string::npos);
   EXPECT_NE(html.find("97.50 %"), std::string::npos);  // refined mean IoU 0.975
 }
 
@@ -304,7 +304,7 @@ TEST(AuditHtml, GeographicMapsCarryLonLatForTheCursor) {
       const auto mix = [&](const nlohmann::json& a) {
         return (1 - fv) * ((1 - fu) * at(a, i, j) + fu * at(a, i + 1, j)) + fv * ((1 - fu) * at(a, i, j + 1) + fu * at(a, i + 1, j + 1));
       };
-      const io::LonLat truth = f.map.projection->inverse({x0 + gx * m, y0 - gy * m});
+      const io::LonLat truth = f.map.frame->inverse({x0 + gx * m, y0 - gy * m});
       EXPECT_NEAR(mix(L["lon"]), truth.lon, 1e-5);  // about a metre
       EXPECT_NEAR(mix(L["lat"]), truth.lat, 1e-5);
     }

@@ -51,7 +51,7 @@ json diagram_geojson(const AuditReportContext& c) {
 
 // Planar position of a GeoJSON/JSON [lon, lat] through the map's projection (the oracle for the
 // writers' inverse projection).
-Point forward(const io::CoverageMap& map, double lon, double lat) { return map.projection->forward(lon, lat); }
+Point forward(const io::CoverageMap& map, double lon, double lat) { return map.frame->forward(lon, lat); }
 
 std::vector<json> features_of_kind(const json& collection, const std::string& kind) {
   std::vector<json> out;
@@ -73,7 +73,7 @@ TEST(AuditJson, TopLevelMembersAndCounts) {
   EXPECT_EQ(j["map"]["projection"]["lon0"], 8.0);
   EXPECT_EQ(j["map"]["projection"]["lat0"], 47.1);
   EXPECT_EQ(j["map"]["projection"]["max_scale_distortion"], 1.25e-8);
-  EXPECT_EQ(j["map"]["projection"]["description"], f.map.projection->description());
+  EXPECT_EQ(j["map"]["projection"]["description"], f.map.frame->description());
   EXPECT_EQ(j["sensors_file"], "sensors.csv");
   EXPECT_EQ(j["alpha"], 3.5);
   EXPECT_EQ(j["command_line"], context_of(f).command_line);

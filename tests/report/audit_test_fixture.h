@@ -140,7 +140,7 @@ inline AuditFixture audit_fixture(bool geographic, const std::string& a_id = "a"
   f.map.cells = {ca, cb, cc, cd};
   f.map.vertex_count = 24;
   if (geographic) {
-    f.map.projection = io::LocalProjection::about(8.0, 47.1);
+    f.map.frame = std::make_shared<io::LocalProjection>(io::LocalProjection::about(8.0, 47.1));
     f.map.max_scale_distortion = 1.25e-8;
   }
   f.options.inconsistency_chi2 = 16.27;

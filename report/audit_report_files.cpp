@@ -1,0 +1,93 @@
+// The report folder as a whole: which files, rendered in order, the GIS layers as GeoJSON or as
+// one GeoPackage (through gis/geopackage.h, which keeps the map's CRS).
+#include <sstream>
+
+#include "gis/geopackage.h"
+#include "report/audit_report.h"
+
+namespace covmap::report {
+namespace {
+
+constexpr const char* kGeoPackageFile = "audit.gpkg";
+
+// A plane of metres with no place on the earth: what a planar map's coordinates are. Without it
+// GeoPackage would file them under "undefined geographic", i.e. degrees.
+constexpr const char* kPlanarCrs =
+    "ENGCRS[\"covmap planar map (metres, no CRS)\",EDATUM[\"unknown\"],CS[Cartesian,2],"
+    "AXIS[\"x\",east,ORDER[1],LENGTHUNIT[\"metre\",1]],AXIS[\"y\",north,ORDER[2],LENGTHUNIT[\"metre\",1]]]";
+
+// The CRS the GeoPackage's coordinates are in: the map's projected CRS, WGS84 lon/lat for a map
+// covmap projected itself, a plane of metres for a planar map.
+std::string geopackage_crs(const io::CoverageMap& map) {
+  if (!map.frame) return kPlanarCrs;
+  if (map.frame->kind() == io::FrameKind::kProjectedCrs) return map.frame->crs_wkt();
+  return "EPSG:4326";
+}
+
+using Writer = void (*)(const AuditReportContext&, std::ostream&);
+
+std::string rendered(Writer write, const AuditReportContext& context) {
+  std::ostringstream out;
+  write(context, out);
+  return out.str();
+}
+
+}  // namespace
+
+std::string_view gis_format_name(GisFormat format) {
+  switch (format) {
+    case GisFormat::kGeoJson: return "geojson";
+    case GisFormat::kGeoPackage: return "gpkg";
+  }
+  return "geojson";
+}
+
+std::optional<GisFormat> gis_format_from_name(std::string_view name) {
+  for (const GisFormat f : {GisFormat::kGeoJson, GisFormat::kGeoPackage})
+    if (gis_format_name(f) == name) return f;
+  return std::nullopt;
+}
+
+std::vector<std::string> audit_report_file_names(GisFormat format) {
+  switch (format) {
+    case GisFormat::kGeoJson: return {"report.json", "report.html", "sensors.geojson", "shifts.geojson", "diagram.geojson"};
+    case GisFormat::kGeoPackage: return {"report.json", "report.html", kGeoPackageFile};
+  }
+  return {};
+}
+
+std::vector<std::pair<std::string, std::string>> render_audit_reports(
+    const AuditReportContext& context, GisFormat format, const std::function<void(const std::string& file)>& progress) {
+  const auto say = [&](const std::string& file) {
+    if (progress) progress(file);
+  };
+  std::vector<std::pair<std::string, std::string>> files;
+  say("report.json");
+  files.emplace_back("report.json", rendered(write_audit_json, context));
+  say("report.html");
+  files.emplace_back("report.html", rendered(write_audit_html, context));
+  struct Layer {
+    const char* name;
+    gis::LayerGeometry geometry;
+    Writer write;
+  };
+  const Layer layers[] = {{"sensors", gis::LayerGeometry::kPoint, write_sensors_geojson},
+                          {"shifts", gis::LayerGeometry::kLineString, write_shifts_geojson},
+                          {"diagram", gis::LayerGeometry::kMultiPolygon, write_diagram_geojson}};
+  if (format == GisFormat::kGeoJson) {
+    for (const auto& [name, geometry, write] : layers) {
+      say(std::string(name) + ".geojson");
+      files.emplace_back(std::string(name) + ".geojson", rendered(write, context));
+    }
+    return files;
+  }
+  say(kGeoPackageFile);
+  AuditReportContext own_crs = context;
+  own_crs.render.crs_coordinates = true;
+  std::vector<gis::GeoJsonLayer> tables;
+  for (const auto& [name, geometry, write] : layers) tables.push_back({name, geometry, rendered(write, own_crs)});
+  files.emplace_back(kGeoPackageFile, gis::geopackage_bytes(tables, geopackage_crs(context.map)));
+  return files;
+}
+
+}  // namespace covmap::report
