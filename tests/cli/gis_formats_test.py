@@ -185,12 +185,28 @@ def main():
     compare("raster + attribute table", reference,
             sensors_of(audit(covmap, work, "rat", work / "rat.tif", sensors_json)), resolution, True, failures, RASTER_M)
 
+    # A lon/lat raster (EPSG:4326, 0.0005 degrees: about 38 m east-west and 56 m north-south).
+    run(["gdal_rasterize", "-q", "-a", "sensor", "-tr", "0.0005", "0.0005", "-ot", "Int32", "-a_nodata", "0",
+         map_json, work / "lonlat.tif"])
+    compare("lon/lat raster", reference, sensors_of(audit(covmap, work, "lonlat", work / "lonlat.tif", sensors_json)),
+            resolution, True, failures, RASTER_M)
+
     # GeoPackage output in the map's CRS.
     check_geopackage("LV95 map, --format gpkg",
                      audit(covmap, work, "out_gpkg_lv95", work / "map_lv95.gpkg", sensors_json, "--format", "gpkg"),
                      2056, failures)
     check_geopackage("lon/lat map, --format gpkg",
                      audit(covmap, work, "out_gpkg_wgs84", map_json, sensors_json, "--format", "gpkg"), 4326, failures)
+    # A planar map (the bundled Ticino map has no CRS): its GeoPackage says "metres, no CRS" rather
+    # than leaving GeoPackage's default, an undefined geographic CRS (degrees).
+    ticino = datasets / "maps" / "ticino"
+    planar = audit(covmap, work, "out_gpkg_planar", ticino / "map.geojson", ticino / "sensors.geojson", "--planar",
+                   "--format", "gpkg")
+    info = run(["ogrinfo", "-so", planar / "audit.gpkg", "diagram"]).stdout
+    if 'ENGCRS["covmap planar map (metres, no CRS)"' not in info or "GEOGCRS" in info:
+        failures.append("planar map, --format gpkg: the diagram table is not in covmap's planar engineering CRS")
+    else:
+        print("  planar map, --format gpkg: engineering CRS in metres")
 
     for f in failures:
         print("FAIL:", f)
