@@ -9,8 +9,10 @@
 // Names are not checked across features: when the cells of one sensor give different names, the
 // map is read all the same and the audit uses the first non-empty one in file order. Positions
 // are [lon, lat] in degrees (extra values such as altitude are ignored), or planar [x, y] with
-// options.planar. A legacy "crs" member is accepted only as described in io/geojson_crs.h.
-// Unknown members are ignored.
+// options.planar, or x/y in a projected CRS: options.crs_frame (the caller knows the CRS), or a
+// top-level "crs" that options.resolve_crs turns into a frame (gis/ does both through PROJ). Other
+// legacy "crs" members are accepted only as described in io/geojson_crs.h. Unknown members are
+// ignored.
 //
 // Guaranteed on success: at least one cell; every cell has at least one polygon; every ring has at
 // least 3 vertices, finite coordinates, no two consecutive vertices equal, no repeated closing
@@ -19,7 +21,9 @@
 // needed). Lon/lat input is projected with LocalProjection about the centre of the bounding box of
 // all vertices (for a map straddling the antimeridian, the centre of the shortest longitude range
 // covering it), and max_scale_distortion reports the worst |k/k_centre - 1| over the vertices (see
-// io/local_projection.h for why that is the number to watch). Cells keep file order.
+// io/local_projection.h for why that is the number to watch). Input in a projected CRS is used as
+// it is, map.frame is that CRS's frame, and max_scale_distortion is the worst |k/k_centre - 1| on
+// a grid over the map's bounding box. Cells keep file order.
 //
 // Not checked (left to the audit, which can report them as findings rather than refuse the map):
 // rings that touch themselves or overlap along an edge without crossing, holes outside their outer
@@ -35,8 +39,10 @@
 // string; malformed coordinates; rings not
 // closed (RFC 7946: the last position repeats the first); rings with fewer than 3 distinct
 // vertices, zero area, or doubling back at their lowest vertex; lon/lat out of range without
-// --planar ("coordinates look planar (x=...); use --planar"); self-crossing rings; and mixed or
-// non-WGS84 crs declarations. Consecutive repeated positions are dropped silently.
+// --planar ("coordinates look planar (x=...); use --planar", or, with declared_geographic_crs,
+// "assign the CRS the coordinates are really in"); self-crossing rings; mixed crs declarations,
+// non-WGS84 ones that cannot be resolved (the resolver's reason, once), and --planar with one that
+// can. Consecutive repeated positions are dropped silently.
 //
 // Cost: O(V log V) for V vertices, whatever the shape of the rings (crossings are found by a
 // sweep line, io/segment_sweep.h). When a polygon's rings cross at several places, the message

@@ -1,13 +1,15 @@
 // Legacy GeoJSON "crs" members (internal to io/), shared by the coverage-map and sensor readers.
 //
 // RFC 7946 dropped "crs": GeoJSON is WGS84 longitude/latitude. Files written to the 2008 draft, and
-// some tools today, still declare one on the collection, a feature or a geometry. covmap accepts a
-// declaration of WGS84 lon/lat ("urn:ogc:def:crs:OGC:1.3:CRS84", "EPSG:4326" and their URL and
-// short spellings; GeoJSON writers put EPSG:4326 coordinates in lon/lat order too) and, with
-// --planar, any declaration at all, since the user then vouches for planar coordinates. Refused:
-// a non-WGS84 declaration without --planar (the numbers are not lon/lat), and declarations that
-// disagree with each other (the file mixes coordinate systems, and no single reading is right).
-// "crs": null means "no declaration" and is ignored.
+// some tools today (GDAL for any CRS but WGS84), still declare one on the collection, a feature or
+// a geometry. covmap accepts a declaration of WGS84 lon/lat ("urn:ogc:def:crs:OGC:1.3:CRS84",
+// "EPSG:4326" and their URL and short spellings; GeoJSON writers put EPSG:4326 coordinates in
+// lon/lat order too); a top-level one a CRS-aware caller resolves (resolve_top_level below: the
+// positions are then x/y in that CRS); and, with --planar, any declaration the resolver does not
+// know (a label), since the user then vouches for planar coordinates. Refused: a non-WGS84
+// declaration that is not resolved, without --planar (the numbers are not lon/lat); and
+// declarations that disagree with each other (the file mixes coordinate systems, and no single
+// reading is right). "crs": null means "no declaration" and is ignored.
 #pragma once
 
 #include <optional>
