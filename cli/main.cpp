@@ -9,6 +9,7 @@
 #include "cli/cli_support.h"
 #include "cli/diagram_command.h"
 #include "cli/recognize_command.h"
+#include "cli/serve_command.h"
 #include "io/interrupt_cleanup.h"
 
 int main(int argc, char** argv) {
@@ -22,12 +23,14 @@ int main(int argc, char** argv) {
   RecognizeOptions recognize;
   CompareCommandOptions compare;
   AuditCommandOptions audit;
+  covmap::service::ServeOptions serve;
   for (int k = 0; k < argc; ++k) audit.command_line += (k ? " " : "") + std::string(argv[k]);
   const CLI::App* audit_cmd = setup_audit(app, audit);
   const CLI::App* diagram_cmd = setup_diagram(app, diagram);
   const CLI::App* recognize_cmd = setup_recognize(app, recognize);
   const CLI::App* compare_cmd = setup_compare(app, compare);
   const CLI::App* check_cmd = setup_check(app, check);
+  const CLI::App* serve_cmd = setup_serve(app, serve);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -38,5 +41,6 @@ int main(int argc, char** argv) {
   if (recognize_cmd->parsed()) return run_recognize(recognize);
   if (compare_cmd->parsed()) return run_compare(compare);
   if (check_cmd->parsed()) return run_check(check);
+  if (serve_cmd->parsed()) return run_serve(serve);
   return kInternal;  // require_subcommand(1) makes this unreachable
 }

@@ -9,8 +9,8 @@ packages=(
   nlohmann-json3-dev libcli11-dev
   # GIS input and output (gis/): GDAL/OGR and PROJ; gdal-bin's tools make the GIS tests' inputs.
   libgdal-dev libproj-dev gdal-bin
-  # The service's job store (service/): jobs and their results' records in SQLite.
-  libsqlite3-dev
+  # The HTTP service (service/): cpp-httplib, and SQLite for its job store.
+  libcpp-httplib-dev libsqlite3-dev pkg-config
   libgtest-dev libbenchmark-dev
   # The browser tests (tests/browser); fonts-liberation so that text has the same metrics, and the
   # page the same layout, on every machine.
