@@ -38,6 +38,15 @@ void Database::exec(std::string_view sql, std::string_view operation) const {
   if (sqlite3_exec(db_, text.c_str(), nullptr, nullptr, nullptr) != SQLITE_OK) throw error(operation);
 }
 
+bool Database::exec_unless_busy(std::string_view sql, std::string_view operation) const {
+  const std::string text(sql);
+  const int result = sqlite3_exec(db_, text.c_str(), nullptr, nullptr, nullptr);
+  if (result == SQLITE_OK) return true;
+  // Extended result codes are on: the primary code is the low byte.
+  if ((result & 0xff) == SQLITE_BUSY) return false;
+  throw error(operation);
+}
+
 int Database::changes() const { return sqlite3_changes(db_); }
 
 std::runtime_error Database::error(std::string_view operation) const {

@@ -58,6 +58,9 @@ class Database {
 
   // Runs SQL without parameters or results (several statements allowed).
   void exec(std::string_view sql, std::string_view operation) const;
+  // exec, except that SQLITE_BUSY returns false instead of throwing: for the statements SQLite runs
+  // without calling the busy handler (a change of journal mode), which the caller retries.
+  bool exec_unless_busy(std::string_view sql, std::string_view operation) const;
   // Rows changed by the last INSERT, UPDATE or DELETE.
   int changes() const;
 

@@ -64,6 +64,16 @@ void signal_ready(int fd) {
   if (::write(fd, &byte, 1) != 1) ::_exit(5);
 }
 
+// A worker (or a server) in its own connection: takes the next job at time 10, which must be
+// `expected_id`, says so on `ready`, and records progress in a loop until it is killed.
+[[noreturn]] void claim_and_work_forever(const std::filesystem::path& file, const std::string& expected_id, int ready) {
+  JobStore store = JobStore::open(file);
+  const std::optional<Job> claimed = store.claim_next_queued(10);
+  if (!claimed || claimed->id != expected_id) ::_exit(6);
+  signal_ready(ready);
+  for (long i = 0;; ++i) store.set_progress(expected_id, static_cast<double>(i % 1000) / 1000, "step " + std::to_string(i));
+}
+
 // The real crash: a worker process claims a job and is killed while it records progress in a
 // loop. The parent opens the file, finds the job running with the attempt counted, and recovers it.
 TEST(JobStoreCrash, AWorkerKilledMidJobLeavesARecoverableDatabase) {
@@ -75,15 +85,8 @@ TEST(JobStoreCrash, AWorkerKilledMidJobLeavesARecoverableDatabase) {
     store.insert(job);
     store.insert(other);
   }  // closed before the fork: a child must not use a connection it inherited
-  kill_child_when_ready(
-      [&](int ready) {
-        JobStore store = JobStore::open(folder.database());
-        const std::optional<Job> claimed = store.claim_next_queued(10);
-        if (!claimed || claimed->id != job.id) ::_exit(6);
-        signal_ready(ready);
-        for (long i = 0;; ++i) store.set_progress(job.id, static_cast<double>(i % 1000) / 1000, "step " + std::to_string(i));
-      },
-      std::chrono::milliseconds(50));
+  kill_child_when_ready([&](int ready) { claim_and_work_forever(folder.database(), job.id, ready); },
+                        std::chrono::milliseconds(50));
 
   JobStore store = JobStore::open(folder.database());
   EXPECT_EQ(single_text(folder.database(), "PRAGMA integrity_check"), "ok");
@@ -101,6 +104,24 @@ TEST(JobStoreCrash, AWorkerKilledMidJobLeavesARecoverableDatabase) {
   const Job again = *store.claim_next_queued(30);
   EXPECT_EQ(again.id, job.id);
   EXPECT_EQ(again.attempts, 2);
+}
+
+// The server keeps its connection open while a worker process it forked is killed mid-job: the
+// server's store goes on working and can fail the job with the reason.
+TEST(JobStoreCrash, AServerOutlivesAKilledWorker) {
+  ScratchFolder folder;
+  JobStore server = JobStore::open(folder.database());
+  const Job job = queued_job(1);
+  server.insert(job);
+  kill_child_when_ready([&](int ready) { claim_and_work_forever(folder.database(), job.id, ready); },
+                        std::chrono::milliseconds(20));
+  EXPECT_EQ(server.get(job.id)->status, JobStatus::kRunning);
+  const JobError killed{"worker_killed", "the worker was killed by signal 9", ""};
+  EXPECT_TRUE(server.finish(job.id, JobStatus::kFailed, killed, "", 40));
+  EXPECT_EQ(server.get(job.id)->error, killed);
+  server.insert(queued_job(2));
+  EXPECT_EQ(server.count_with_status(JobStatus::kQueued), 1u);
+  EXPECT_EQ(single_text(folder.database(), "PRAGMA integrity_check"), "ok");
 }
 
 // More than the ~4 MB of rows the doomed transaction writes could stay in its 2-page cache.
