@@ -32,7 +32,9 @@
 // finish() with a status that is not final; recover_interrupted() with max_attempts below 1.
 // Failures of SQLite (unwritable folder, full disk, a file that is not a database, a lock held
 // longer than the busy timeout) throw std::runtime_error
-// "job store <file>: <operation>: <SQLite's message>".
+// "job store <file>: <operation>: <SQLite's message>", with the system's reason after an I/O
+// error ("disk I/O error (No space left on device)"). A failed write changes nothing, and the
+// store goes on working once the cause is gone.
 //
 // Not here: the uploaded files and results under the data folder (the server keeps them in a
 // folder named after the job id); deleting a job's row does not touch them.

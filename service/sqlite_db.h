@@ -1,6 +1,6 @@
 // covmap::service internal: a thin owner of one SQLite connection and its statements, so that the
 // job store reads as SQL and every failure becomes one std::runtime_error of the same shape:
-//   "job store <file>: <operation>: <sqlite3_errmsg>"
+//   "job store <file>: <operation>: <sqlite3_errmsg> [(<the system's reason>)]"
 // Not thread-safe by itself: JobStore serializes all use of a Database behind its mutex. sqlite3.h
 // stays out of this header (the service links SQLite privately).
 #pragma once

@@ -1,6 +1,7 @@
 // The job store against the real failures of a server: a process killed with SIGKILL while it
 // works on the database, and files it must not open.
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -161,6 +162,43 @@ TEST(JobStoreCrash, AProcessKilledInsideATransactionChangesNothing) {
   EXPECT_EQ(store.list(10000), before);
 }
 
+// A full disk, simulated by a file-size limit (the writes past it fail with EFBIG as they would
+// with ENOSPC): the insert fails naming the store and the operation, leaves no trace, and the
+// same store works again once there is room.
+TEST(JobStoreCrash, AFullDiskFailsOneWriteAndNothingElse) {
+  constexpr rlim_t kFileSizeLimit = 256 * 1024;
+  constexpr std::size_t kSummaryBytes = 4 * 1024 * 1024;
+  ScratchFolder folder;
+  JobStore store = JobStore::open(folder.database());
+  const Job kept = queued_job(1);
+  store.insert(kept);
+  Job big = queued_job(2);
+  big.summary_json = std::string(kSummaryBytes, 'x');
+
+  std::signal(SIGXFSZ, SIG_IGN);
+  rlimit old_limit{};
+  ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &old_limit), 0);
+  rlimit small = old_limit;
+  small.rlim_cur = kFileSizeLimit;
+  ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &small), 0);
+  std::string message;
+  try {
+    store.insert(big);
+  } catch (const std::runtime_error& e) {
+    message = e.what();
+  }
+  ::setrlimit(RLIMIT_FSIZE, &old_limit);
+
+  EXPECT_NE(message.find(folder.database().string()), std::string::npos) << message;
+  EXPECT_NE(message.find("insert job " + big.id), std::string::npos) << message;
+  EXPECT_NE(message.find("File too large"), std::string::npos) << message;  // the system's reason
+  EXPECT_EQ(store.get(big.id), std::nullopt);
+  EXPECT_EQ(store.list(10), std::vector<Job>{kept});
+  store.insert(big);
+  EXPECT_EQ(store.get(big.id), big);
+  EXPECT_EQ(single_text(folder.database(), "PRAGMA integrity_check"), "ok");
+}
+
 TEST(JobStoreCrash, ANewerSchemaIsRefusedAndLeftAsItWas) {
   ScratchFolder folder;
   JobStore::open(folder.database()).insert(queued_job(1));
@@ -206,6 +244,7 @@ TEST(JobStoreCrash, AMissingFolderIsRefusedByName) {
     FAIL() << "opened a database in a missing folder";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("No such file or directory"), std::string::npos) << e.what();
   }
 }
 
