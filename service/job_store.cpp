@@ -1,6 +1,6 @@
 #include "service/job_store.h"
 
-#include <cmath>
+#include <algorithm>
 #include <limits>
 #include <mutex>
 #include <stdexcept>

@@ -22,11 +22,19 @@
 //   interrupted.
 // - Texts (options, summary, names, errors) come back byte for byte, UTF-8 or not.
 //
-// Rejected: a job id that is not is_valid_job_id (std::invalid_argument); a progress outside
-// [0, 1] or NaN, finish() with a status that is not final (std::invalid_argument).
+// - The file's folder must be writable: WAL keeps two companion files beside it (<file>-wal,
+//   <file>-shm) while connections are open.
+// - After fork() a child must neither use nor destroy a JobStore it inherited (SQLite's rule for
+//   connections): it opens its own, or leaves by exec or _exit.
+//
+// Rejected with std::invalid_argument: insert() of a job whose id is not is_valid_job_id (get()
+// answers nullopt for such an id, the other methods false); a progress outside [0, 1] or NaN;
+// finish() with a status that is not final; recover_interrupted() with max_attempts below 1.
 // Failures of SQLite (unwritable folder, full disk, a file that is not a database, a lock held
 // longer than the busy timeout) throw std::runtime_error
-// "job store <file>: <operation>: <SQLite's message>".
+// "job store <file>: <operation>: <SQLite's message>", with the system's reason after an I/O
+// error ("disk I/O error (No space left on device)"). A failed write changes nothing, and the
+// store goes on working once the cause is gone.
 //
 // Not here: the uploaded files and results under the data folder (the server keeps them in a
 // folder named after the job id); deleting a job's row does not touch them.

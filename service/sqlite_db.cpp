@@ -4,6 +4,7 @@
 
 #include <climits>
 #include <string>
+#include <system_error>
 
 namespace covmap::service::sqlite {
 namespace {
@@ -38,10 +39,28 @@ void Database::exec(std::string_view sql, std::string_view operation) const {
   if (sqlite3_exec(db_, text.c_str(), nullptr, nullptr, nullptr) != SQLITE_OK) throw error(operation);
 }
 
+bool Database::exec_unless_busy(std::string_view sql, std::string_view operation) const {
+  const std::string text(sql);
+  const int result = sqlite3_exec(db_, text.c_str(), nullptr, nullptr, nullptr);
+  if (result == SQLITE_OK) return true;
+  // Extended result codes are on: the primary code is the low byte.
+  if ((result & 0xff) == SQLITE_BUSY) return false;
+  throw error(operation);
+}
+
 int Database::changes() const { return sqlite3_changes(db_); }
 
 std::runtime_error Database::error(std::string_view operation) const {
-  return error(operation, db_ ? sqlite3_errmsg(db_) : "no connection");
+  if (!db_) return error(operation, "no connection");
+  std::string message = sqlite3_errmsg(db_);
+  // SQLite says "disk I/O error" or "unable to open database file"; the system's reason ("No space
+  // left on device", "Permission denied") is what the person running the server can act on.
+  const int primary = sqlite3_extended_errcode(db_) & 0xff;
+  const int system = sqlite3_system_errno(db_);
+  if (system != 0 && (primary == SQLITE_IOERR || primary == SQLITE_FULL || primary == SQLITE_CANTOPEN)) {
+    message += " (" + std::error_code(system, std::generic_category()).message() + ")";
+  }
+  return error(operation, message);
 }
 
 std::runtime_error Database::error(std::string_view operation, std::string_view message) const {

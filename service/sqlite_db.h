@@ -1,6 +1,6 @@
 // covmap::service internal: a thin owner of one SQLite connection and its statements, so that the
 // job store reads as SQL and every failure becomes one std::runtime_error of the same shape:
-//   "job store <file>: <operation>: <sqlite3_errmsg>"
+//   "job store <file>: <operation>: <sqlite3_errmsg> [(<the system's reason>)]"
 // Not thread-safe by itself: JobStore serializes all use of a Database behind its mutex. sqlite3.h
 // stays out of this header (the service links SQLite privately).
 #pragma once
@@ -58,6 +58,9 @@ class Database {
 
   // Runs SQL without parameters or results (several statements allowed).
   void exec(std::string_view sql, std::string_view operation) const;
+  // exec, except that SQLITE_BUSY returns false instead of throwing: for the statements SQLite runs
+  // without calling the busy handler (a change of journal mode), which the caller retries.
+  bool exec_unless_busy(std::string_view sql, std::string_view operation) const;
   // Rows changed by the last INSERT, UPDATE or DELETE.
   int changes() const;
 

@@ -1,6 +1,7 @@
 // The job store against the real failures of a server: a process killed with SIGKILL while it
 // works on the database, and files it must not open.
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -64,6 +65,16 @@ void signal_ready(int fd) {
   if (::write(fd, &byte, 1) != 1) ::_exit(5);
 }
 
+// A worker (or a server) in its own connection: takes the next job at time 10, which must be
+// `expected_id`, says so on `ready`, and records progress in a loop until it is killed.
+[[noreturn]] void claim_and_work_forever(const std::filesystem::path& file, const std::string& expected_id, int ready) {
+  JobStore store = JobStore::open(file);
+  const std::optional<Job> claimed = store.claim_next_queued(10);
+  if (!claimed || claimed->id != expected_id) ::_exit(6);
+  signal_ready(ready);
+  for (long i = 0;; ++i) store.set_progress(expected_id, static_cast<double>(i % 1000) / 1000, "step " + std::to_string(i));
+}
+
 // The real crash: a worker process claims a job and is killed while it records progress in a
 // loop. The parent opens the file, finds the job running with the attempt counted, and recovers it.
 TEST(JobStoreCrash, AWorkerKilledMidJobLeavesARecoverableDatabase) {
@@ -75,15 +86,8 @@ TEST(JobStoreCrash, AWorkerKilledMidJobLeavesARecoverableDatabase) {
     store.insert(job);
     store.insert(other);
   }  // closed before the fork: a child must not use a connection it inherited
-  kill_child_when_ready(
-      [&](int ready) {
-        JobStore store = JobStore::open(folder.database());
-        const std::optional<Job> claimed = store.claim_next_queued(10);
-        if (!claimed || claimed->id != job.id) ::_exit(6);
-        signal_ready(ready);
-        for (long i = 0;; ++i) store.set_progress(job.id, static_cast<double>(i % 1000) / 1000, "step " + std::to_string(i));
-      },
-      std::chrono::milliseconds(50));
+  kill_child_when_ready([&](int ready) { claim_and_work_forever(folder.database(), job.id, ready); },
+                        std::chrono::milliseconds(50));
 
   JobStore store = JobStore::open(folder.database());
   EXPECT_EQ(single_text(folder.database(), "PRAGMA integrity_check"), "ok");
@@ -101,6 +105,24 @@ TEST(JobStoreCrash, AWorkerKilledMidJobLeavesARecoverableDatabase) {
   const Job again = *store.claim_next_queued(30);
   EXPECT_EQ(again.id, job.id);
   EXPECT_EQ(again.attempts, 2);
+}
+
+// The server keeps its connection open while a worker process it forked is killed mid-job: the
+// server's store goes on working and can fail the job with the reason.
+TEST(JobStoreCrash, AServerOutlivesAKilledWorker) {
+  ScratchFolder folder;
+  JobStore server = JobStore::open(folder.database());
+  const Job job = queued_job(1);
+  server.insert(job);
+  kill_child_when_ready([&](int ready) { claim_and_work_forever(folder.database(), job.id, ready); },
+                        std::chrono::milliseconds(20));
+  EXPECT_EQ(server.get(job.id)->status, JobStatus::kRunning);
+  const JobError killed{"worker_killed", "the worker was killed by signal 9", ""};
+  EXPECT_TRUE(server.finish(job.id, JobStatus::kFailed, killed, "", 40));
+  EXPECT_EQ(server.get(job.id)->error, killed);
+  server.insert(queued_job(2));
+  EXPECT_EQ(server.count_with_status(JobStatus::kQueued), 1u);
+  EXPECT_EQ(single_text(folder.database(), "PRAGMA integrity_check"), "ok");
 }
 
 // More than the ~4 MB of rows the doomed transaction writes could stay in its 2-page cache.
@@ -138,6 +160,43 @@ TEST(JobStoreCrash, AProcessKilledInsideATransactionChangesNothing) {
   JobStore store = JobStore::open(folder.database());
   EXPECT_EQ(single_text(folder.database(), "PRAGMA integrity_check"), "ok");
   EXPECT_EQ(store.list(10000), before);
+}
+
+// A full disk, simulated by a file-size limit (the writes past it fail with EFBIG as they would
+// with ENOSPC): the insert fails naming the store and the operation, leaves no trace, and the
+// same store works again once there is room.
+TEST(JobStoreCrash, AFullDiskFailsOneWriteAndNothingElse) {
+  constexpr rlim_t kFileSizeLimit = 256 * 1024;
+  constexpr std::size_t kSummaryBytes = 4 * 1024 * 1024;
+  ScratchFolder folder;
+  JobStore store = JobStore::open(folder.database());
+  const Job kept = queued_job(1);
+  store.insert(kept);
+  Job big = queued_job(2);
+  big.summary_json = std::string(kSummaryBytes, 'x');
+
+  std::signal(SIGXFSZ, SIG_IGN);
+  rlimit old_limit{};
+  ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &old_limit), 0);
+  rlimit small = old_limit;
+  small.rlim_cur = kFileSizeLimit;
+  ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &small), 0);
+  std::string message;
+  try {
+    store.insert(big);
+  } catch (const std::runtime_error& e) {
+    message = e.what();
+  }
+  ::setrlimit(RLIMIT_FSIZE, &old_limit);
+
+  EXPECT_NE(message.find(folder.database().string()), std::string::npos) << message;
+  EXPECT_NE(message.find("insert job " + big.id), std::string::npos) << message;
+  EXPECT_NE(message.find("File too large"), std::string::npos) << message;  // the system's reason
+  EXPECT_EQ(store.get(big.id), std::nullopt);
+  EXPECT_EQ(store.list(10), std::vector<Job>{kept});
+  store.insert(big);
+  EXPECT_EQ(store.get(big.id), big);
+  EXPECT_EQ(single_text(folder.database(), "PRAGMA integrity_check"), "ok");
 }
 
 TEST(JobStoreCrash, ANewerSchemaIsRefusedAndLeftAsItWas) {
@@ -185,6 +244,7 @@ TEST(JobStoreCrash, AMissingFolderIsRefusedByName) {
     FAIL() << "opened a database in a missing folder";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("No such file or directory"), std::string::npos) << e.what();
   }
 }
 

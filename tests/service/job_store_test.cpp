@@ -141,7 +141,8 @@ TEST(JobStore, ClaimTakesTheOldestQueuedJob) {
   EXPECT_EQ(store.claim_next_queued(779), std::nullopt);
 }
 
-// Several workers take jobs at once; every job is taken exactly once. `shared` workers use one
+// Several workers take jobs at once, record progress and finish them; every job is taken exactly
+// once and no write fails on a lock. `shared` workers use one
 // store (one connection, the mutex); otherwise each opens its own, as worker processes would.
 void claim_from_threads(bool shared) {
   constexpr int kJobs = 300;
@@ -159,8 +160,15 @@ void claim_from_threads(bool shared) {
       if (!shared) own.emplace(JobStore::open(folder.database()));
       JobStore& mine = shared ? store : *own;
       while (const std::optional<Job> job = mine.claim_next_queued(w)) {
-        const std::lock_guard<std::mutex> lock(mutex);
-        ++times_claimed[job->id];
+        {
+          const std::lock_guard<std::mutex> lock(mutex);
+          ++times_claimed[job->id];
+        }
+        // The other writes of a worker, racing with the other connections' claims.
+        if (!mine.set_progress(job->id, 0.5, "working") ||
+            !mine.finish(job->id, JobStatus::kDone, std::nullopt, "{}", w)) {
+          ADD_FAILURE() << "job " << job->id << " was not this worker's to finish";
+        }
       }
     });
   }
@@ -168,7 +176,7 @@ void claim_from_threads(bool shared) {
 
   EXPECT_EQ(times_claimed.size(), static_cast<std::size_t>(kJobs));
   for (const auto& [id, times] : times_claimed) EXPECT_EQ(times, 1) << id;
-  EXPECT_EQ(store.count_with_status(JobStatus::kRunning), static_cast<std::size_t>(kJobs));
+  EXPECT_EQ(store.count_with_status(JobStatus::kDone), static_cast<std::size_t>(kJobs));
   EXPECT_EQ(store.count_with_status(JobStatus::kQueued), 0u);
 }
 
@@ -274,6 +282,29 @@ TEST(JobStore, EverythingSurvivesClosingAndReopening) {
   }
   JobStore reopened = JobStore::open(folder.database());
   EXPECT_EQ(reopened.list(100), before);
+}
+
+// Servers and workers starting together on a new data folder: each open either creates the schema
+// or finds it complete; none refuses the file as somebody else's or fails on a lock.
+TEST(JobStore, ManyConnectionsOpeningANewFileAtOnceAllSucceed) {
+  constexpr int kOpeners = 8;
+  ScratchFolder folder;
+  std::vector<std::thread> openers;
+  std::mutex mutex;
+  std::vector<std::string> failures;
+  for (int i = 0; i < kOpeners; ++i) {
+    openers.emplace_back([&] {
+      try {
+        JobStore::open(folder.database()).insert(queued_job(1));
+      } catch (const std::exception& e) {
+        const std::lock_guard<std::mutex> lock(mutex);
+        failures.push_back(e.what());
+      }
+    });
+  }
+  for (std::thread& opener : openers) opener.join();
+  EXPECT_TRUE(failures.empty()) << failures.front();
+  EXPECT_EQ(JobStore::open(folder.database()).list(100).size(), static_cast<std::size_t>(kOpeners));
 }
 
 TEST(JobStore, TwoStoresOnOneFileSeeEachOthersWrites) {
