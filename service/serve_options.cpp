@@ -13,7 +13,7 @@ bool ServeOptions::is_valid(std::string* why) const {
   if (workers < 1 || workers > 64) return fail("workers must be in 1-64");
   if (queue_limit < 1) return fail("queue limit must be at least 1");
   if (max_upload_mb < 1 || max_upload_mb > 4096) return fail("max upload must be in 1-4096 MiB");
-  if (max_sync_mb < 1 || max_sync_mb > max_upload_mb) return fail("max synchronous body must be in 1 MiB to the max upload");
+  if (max_sync_mb < 1) return fail("max synchronous body must be at least 1 MiB");
   if (job_cpu_seconds < 1) return fail("job CPU time must be at least 1 s");
   if (job_memory_mb < 64) return fail("job memory must be at least 64 MiB");
   if (max_attempts < 1) return fail("max attempts must be at least 1");

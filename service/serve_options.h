@@ -23,7 +23,7 @@ struct ServeOptions {
   // Largest request body (an upload of map + sensors), in MiB; larger ones get 413.
   std::size_t max_upload_mb = 256;
   // Largest body of a synchronous operation (/v1/diagram, /v1/check, ...), in MiB: beyond it the
-  // answer is 413 with a pointer to the job API.
+  // answer is 413 with a pointer to the job API. (No body is ever larger than max_upload_mb.)
   std::size_t max_sync_mb = 8;
   // Limits of each audit's process: CPU seconds (RLIMIT_CPU) and address space in MiB (RLIMIT_AS).
   // An audit beyond them is killed and its job failed with the reason; the server is unaffected.

@@ -124,7 +124,7 @@ def verdicts(report):
 def cli_report(covmap, work, name, map_path, sensors_path, *extra):
     out = work / f"cli_{name}"
     subprocess.run([str(covmap), "audit", str(map_path), "--sensors", str(sensors_path), "--alpha", "3.5", "-q",
-                    "-o", str(out), *extra], check=True)
+                    "-o", str(out), *extra], check=True, stdout=subprocess.DEVNULL)
     return json.loads((out / "report.json").read_text())
 
 
@@ -323,6 +323,8 @@ def part_restart(covmap, datasets, work):
         job = wait_done(server, long_job["id"], timeout=600)
         check(job["status"] == "done" and job["attempts"] == 2,
               f"restart: the interrupted job ended {job['status']} after {job['attempts']} attempts")
+        print(f"  restart: {server.first_line.strip()}; the interrupted job ended {job['status']} after "
+              f"{job['attempts']} attempts")
     finally:
         server.stop()
 
