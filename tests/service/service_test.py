@@ -3,7 +3,7 @@
 HTTP client, the bundled maps.
 
 Usage: service_test.py path/to/covmap path/to/datasets WORKDIR [part]
-Parts (ctest registers them apart; no part: all): api, errors, concurrent, restart.
+Parts (ctest registers them apart; no part: all): api, errors, concurrent, restart, limits.
 
   api         the Bern audit through the API gives the same report.json verdicts as the CLI;
               the job's status, progress and files; the synchronous /v1/diagram answers as
@@ -14,6 +14,7 @@ Parts (ctest registers them apart; no part: all): api, errors, concurrent, resta
   concurrent  20 jobs submitted at once all finish, each with its own correct report
   restart     a server killed with SIGKILL mid-job and restarted serves every finished job's files
               and runs the interrupted job again (attempts 2), leaving no orphan audit process
+  limits      an audit over --job-cpu-seconds is stopped and failed with the reason; the next job runs
 Exits 1 listing every failure.
 """
 import json
@@ -282,6 +283,29 @@ def part_concurrent(covmap, datasets, work):
         server.stop()
 
 
+def part_limits(covmap, datasets, work):
+    """An audit over its CPU limit is stopped and its job failed with the reason; the server and
+    the next job are unaffected."""
+    swiss, bern = datasets / "maps" / "switzerland", datasets / "maps" / "bern"
+    data = work / "data_limits"
+    server = Server(covmap, data, "--workers", 1, "--job-cpu-seconds", 1)
+    try:
+        _, _, heavy = submit(server, swiss / "map.geojson", swiss / "sensors.geojson", {"alpha": 3.5})
+        job = wait_done(server, heavy["id"])
+        check(job["status"] == "failed" and job["error"]["code"] == "resource_limit" and "CPU" in job["error"]["message"],
+              f"limits: the audit over its CPU limit ended {job['status']} {job.get('error')}")
+        status, _, answer = request(server, "GET", f"/v1/audits/{heavy['id']}/report.json")
+        check(status == 404 and json.loads(answer)["error"]["code"] == "not_ready",
+              f"limits: a failed job's report answered {status}")
+        _, _, light = submit(server, bern / "map.geojson", None, {"alpha": 3.5})
+        job = wait_done(server, light["id"])
+        # Bern alone takes about 0.4 s of CPU: within the limit.
+        check(job["status"] == "done", f"limits: the next job ended {job['status']} {job.get('error')}")
+        print(f"  limits: over the limit -> {json.dumps(wait_done(server, heavy['id'])['error'])[:160]}")
+    finally:
+        server.stop()
+
+
 def audit_processes(data):
     """covmap audit processes working in this data folder (orphans, if any), read from /proc."""
     found = []
@@ -331,7 +355,7 @@ def part_restart(covmap, datasets, work):
 
 def main():
     covmap, datasets, work = Path(sys.argv[1]).resolve(), Path(sys.argv[2]).resolve(), Path(sys.argv[3]).resolve()
-    parts = sys.argv[4:] or ["api", "errors", "concurrent", "restart"]
+    parts = sys.argv[4:] or ["api", "errors", "concurrent", "restart", "limits"]
     subprocess.run(["rm", "-rf", str(work)], check=True)
     work.mkdir(parents=True)
     for part in parts:
