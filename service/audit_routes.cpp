@@ -57,40 +57,78 @@ void write_upload(const std::filesystem::path& path, const std::string& content)
   if (!out.flush()) throw std::runtime_error("cannot write " + path.string());
 }
 
-void submit(HttpServer::State& s, const httplib::Request& req, httplib::Response& res) {
-  if (!req.is_multipart_form_data())
-    throw ApiError(ErrorCode::kBadInput, "send multipart/form-data with the parts map (a file), sensors (a file, optional) and options (JSON, optional)", "body");
-  if (!req.has_file("map") || req.get_file_value("map").content.empty())
-    throw ApiError(ErrorCode::kBadInput, "missing the part map: the coverage map file", "map");
-  if (s.store->count_with_status(JobStatus::kQueued) >= s.options.queue_limit)
-    throw ApiError(ErrorCode::kQueueFull, std::to_string(s.options.queue_limit) + " jobs are waiting already; try again later", "");
-  const std::string options_json = req.has_file("options") ? req.get_file_value("options").content : "";
-  const AuditRequest request = parse_audit_request(options_json);
-  const auto map_part = req.get_file_value("map");
-  const bool has_sensors = req.has_file("sensors") && !req.get_file_value("sensors").content.empty();
+// One map of a submission as a job not yet stored: its folder written and its inputs checked.
+// Throws (having removed the folder) if the inputs are refused; `label` names the map in messages
+// of a batch ("map[2]").
+Job prepare_job(HttpServer::State& s, const httplib::MultipartFormData& map_part, const httplib::MultipartFormData* sensors,
+                const std::string& options_json, const AuditRequest& request, const std::string& label) {
   Job job;
   job.id = new_job_id();
   job.options_json = options_json;
   job.map_name = safe_upload_name(map_part.filename, "map");
-  if (has_sensors) job.sensors_name = safe_upload_name(req.get_file_value("sensors").filename, "sensors");
+  if (sensors) job.sensors_name = safe_upload_name(sensors->filename, "sensors");
   if (job.sensors_name == job.map_name) job.sensors_name = "sensors_" + job.sensors_name;
   const JobFiles files = job_files(s.options.data_dir, job.id);
   try {
     std::filesystem::create_directories(files.input_dir());
     write_upload(files.input_dir() / job.map_name, map_part.content);
-    if (has_sensors) write_upload(files.input_dir() / job.sensors_name, req.get_file_value("sensors").content);
+    if (sensors) write_upload(files.input_dir() / job.sensors_name, sensors->content);
     check_audit_inputs(request, files.input_dir() / job.map_name,
-                       has_sensors ? files.input_dir() / job.sensors_name : std::filesystem::path());
-    job.created_ms = now_ms();
-    s.store->insert(job);
+                       sensors ? files.input_dir() / job.sensors_name : std::filesystem::path());
+  } catch (ApiError& e) {
+    std::error_code ignored;
+    std::filesystem::remove_all(files.dir, ignored);
+    if (label != "map" && e.where.rfind("map", 0) == 0) e.where = label + " (" + job.map_name + ")" + e.where.substr(3);
+    throw;
   } catch (...) {
     std::error_code ignored;
     std::filesystem::remove_all(files.dir, ignored);
     throw;
   }
+  return job;
+}
+
+// POST /v1/audits: one job per map part (several map parts make a batch sharing the sensors and
+// options); every map is checked before any job is stored, so a refused batch leaves nothing.
+void submit(HttpServer::State& s, const httplib::Request& req, httplib::Response& res) {
+  if (!req.is_multipart_form_data())
+    throw ApiError(ErrorCode::kBadInput, "send multipart/form-data with the parts map (a file), sensors (a file, optional) and options (JSON, optional)", "body");
+  std::vector<const httplib::MultipartFormData*> maps;
+  for (auto [at, end] = req.files.equal_range("map"); at != end; ++at) maps.push_back(&at->second);
+  if (maps.empty() || std::any_of(maps.begin(), maps.end(), [](const auto* m) { return m->content.empty(); }))
+    throw ApiError(ErrorCode::kBadInput, "missing the part map: the coverage map file (several map parts make a batch)", "map");
+  if (s.store->count_with_status(JobStatus::kQueued) + maps.size() > s.options.queue_limit)
+    throw ApiError(ErrorCode::kQueueFull, std::to_string(s.options.queue_limit) + " jobs may wait at once; try again later", "");
+  const std::string options_json = req.has_file("options") ? req.get_file_value("options").content : "";
+  const AuditRequest request = parse_audit_request(options_json);
+  const httplib::MultipartFormData* sensors =
+      req.has_file("sensors") && !req.get_file_value("sensors").content.empty() ? &req.files.find("sensors")->second : nullptr;
+  std::vector<Job> jobs;
+  try {
+    for (std::size_t i = 0; i < maps.size(); ++i)
+      jobs.push_back(prepare_job(s, *maps[i], sensors, options_json, request,
+                                 maps.size() == 1 ? "map" : "map[" + std::to_string(i) + "]"));
+    for (Job& job : jobs) {
+      job.created_ms = now_ms();
+      s.store->insert(job);
+    }
+  } catch (...) {
+    for (const Job& job : jobs) {
+      s.store->remove(job.id);
+      std::error_code ignored;
+      std::filesystem::remove_all(job_files(s.options.data_dir, job.id).dir, ignored);
+    }
+    throw;
+  }
   s.runner->wake();
-  res.set_header("Location", "/v1/audits/" + job.id);
-  send_json(res, 202, dump(job_json(job)));
+  if (jobs.size() == 1) {
+    res.set_header("Location", "/v1/audits/" + jobs.front().id);
+    send_json(res, 202, dump(job_json(jobs.front())));
+    return;
+  }
+  Json batch = Json::array();
+  for (const Job& job : jobs) batch.push_back(job_json(job));
+  send_json(res, 202, dump(Json{{"jobs", batch}}));
 }
 
 std::string content_type(const std::string& file) {

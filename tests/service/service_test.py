@@ -165,6 +165,22 @@ def part_api(covmap, datasets, work):
             check(status == 200 and len(body) > 100, f"api: {name} answered {status}, {len(body)} bytes")
         status, listing = get_json(server, "/v1/audits")
         check(status == 200 and listing["jobs"][0]["id"] == job["id"], "api: the job is not first in the list")
+        # A batch: several map parts, one job each, each with the summary `covmap audit` gives.
+        swiss = datasets / "maps" / "switzerland"
+        body, content_type = multipart([("map", "bern.geojson", (bern / "map.geojson").read_bytes()),
+                                        ("map", "switzerland.geojson", (swiss / "map.geojson").read_bytes()),
+                                        ("options", None, b'{"alpha": 3.5}')])
+        status, _, answer = request(server, "POST", "/v1/audits", body, {"Content-Type": content_type})
+        batch = json.loads(answer).get("jobs", [])
+        check(status == 202 and len(batch) == 2, f"api: a batch of two maps answered {status} with {len(batch)} jobs")
+        for entry, source in zip(batch, (bern, swiss)):
+            finished = wait_done(server, entry["id"])
+            out = work / f"cli_batch_{source.name}"
+            subprocess.run([str(covmap), "audit", str(source / "map.geojson"), "--alpha", "3.5", "-q", "-o", str(out)],
+                           check=True, stdout=subprocess.DEVNULL)
+            expected = json.loads((out / "report.json").read_text())["summary"]
+            check(finished["status"] == "done" and finished["summary"] == expected,
+                  f"api: the batch's {source.name} job: {finished['status']}, summary {finished['summary']} vs {expected}")
         # Synchronous: /v1/diagram answers as `covmap diagram` does.
         sites = work / "sites.csv"
         sites.write_text("id,x,y,weight\na,0,0,1\nb,10,0,2\nc,3,8,1.5\nd,7,5,1\n")
@@ -236,6 +252,10 @@ def part_errors(covmap, datasets, work):
             expect_error(server, f"job id {job_id}", answer, status, 404)
             status, _, answer = request(server, "GET", f"/v1/audits/{job_id}/report.json")
             expect_error(server, f"job id {job_id} file", answer, status, 404)
+        body, content_type = multipart([("map", "bern.geojson", (bern / "map.geojson").read_bytes()),
+                                        ("map", "broken.geojson", b'{"type":"FeatureCollection","features":[{]}')])
+        status, _, answer = request(server, "POST", "/v1/audits", body, {"Content-Type": content_type})
+        expect_error(server, "a batch with a broken map", answer, status, 400, "map[1] (broken.geojson)")
         big = b"x" * (2 << 20)
         status, _, answer = submit(server, "map.geojson", map_bytes=big)
         expect_error(server, "upload over --max-upload-mb", json.dumps(answer).encode() if isinstance(answer, dict) else answer,
