@@ -7,7 +7,8 @@
 #  - a folder with a broken map, a map with two sensors files and a good map exits 2, writes the
 #    good map's reports, and lists the two failures with their errors; skipped files are named;
 #  - two maps with the same file name get two folders; a single map writes into OUTDIR as before;
-#  - outputs that may not be written stop the batch before any audit.
+#  - outputs that may not be written stop the batch before any audit; a killed batch's OUTDIR, and
+#    a single audit's, take a batch without --force.
 # Usage: audit_batch_test.sh path/to/covmap path/to/datasets
 set -u
 covmap=$(realpath "$1")
@@ -239,6 +240,22 @@ if folders != ["ticino_map", "copy_map"]:
 PY
 # -q: nothing on stderr but what went wrong (nothing here).
 [ ! -s "$work/stems.err" ] && ok || fail "-q batch wrote to stderr: $(head -c 300 "$work/stems.err")"
+
+# --- A batch killed mid-way leaves an OUTDIR covmap may write into again without --force (its marker
+# was written before the first audit); a folder a single audit wrote becomes a batch's, and the
+# reports the single audit listed in its marker are removed, as in any report folder rewritten.
+timeout --foreground -s KILL 1 "$covmap" audit "$work/in" --alpha 3.5 -q -o "$work/killed" >/dev/null 2>&1
+[ -f "$work/killed/.covmap-output" ] && ok || fail "a killed batch left no marker in OUTDIR: $(ls -A "$work/killed" 2>&1)"
+cp -r "$work/single/bern" "$work/was-single"
+for outdir in killed was-single; do
+  run_name=again-$outdir
+  run "$run_name" audit "$work/mixed/c_ticino.geojson" "$work/copy/map.geojson" --planar --alpha 3.5 -q -o "$work/$outdir"
+  want_code 0 "a batch into $outdir without --force"
+  [ -f "$work/$outdir/summary.csv" ] && [ -f "$work/$outdir/c_ticino/report.json" ] && [ -f "$work/$outdir/map/report.json" ] &&
+    ok || fail "$outdir: the batch's files are missing: $(ls -A "$work/$outdir")"
+done
+[ ! -e "$work/was-single/report.json" ] && [ ! -e "$work/was-single/diagram.geojson" ] && ok ||
+  fail "the single audit's reports are still in the folder: $(ls -A "$work/was-single")"
 
 echo "audit batch: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]
