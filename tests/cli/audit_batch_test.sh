@@ -175,6 +175,13 @@ want_code 2 "the input folder as OUTDIR"
 [ "$(ls -A "$work/in" | sort | tr '\n' ' ')" = "bern.geojson bern.sensors.geojson notes readme.txt switzerland.geojson switzerland.sensors.geojson " ] &&
   ok || fail "the input folder changed: $(ls -A "$work/in")"
 
+mkdir "$work/no-maps" && cp "$work/in/readme.txt" "$work/in/bern.sensors.geojson" "$work/no-maps/"
+run_name=no-map
+run no-map audit "$work/no-maps" -o "$work/none"
+want_code 2 "a folder without maps"
+grep -q "no-maps: the folder holds no map" "$work/no-map.err" && [ ! -e "$work/none" ] && ok ||
+  fail "a folder without maps: want its name and no OUTDIR, got: $(cat "$work/no-map.err"); $(ls -A "$work/none" 2>&1)"
+
 # --- A broken map, a map with two sensors files, and a good one (planar Ticino) in one folder.
 mkdir "$work/mixed"
 printf '{"type": "FeatureCollection", "features": [' >"$work/mixed/a_broken.geojson"
