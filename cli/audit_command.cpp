@@ -32,7 +32,7 @@ CLI::Validator map_file_or_folder() {
 }  // namespace
 
 CLI::App* setup_audit(CLI::App& app, AuditCommandOptions& options) {
-  CLI::App* cmd = app.add_subcommand("audit", "Audit a coverage map against its sensors; write reports to a directory");
+  CLI::App* cmd = app.add_subcommand("audit", "Audit a coverage map (or several, or a folder of them) against its sensors; write reports to a directory");
   cmd->add_option("maps", options.inputs,
                   "coverage map: GeoJSON or any GDAL vector layer of (Multi)Polygon cells (GeoPackage, Shapefile, "
                   "FlatGeobuf, ...), or a best-server raster (GeoTIFF, ...); lon/lat or a projected CRS. Several maps, "
