@@ -2,22 +2,27 @@
 // sensors that drew it? MAP is GeoJSON, any GDAL vector layer or a best-server raster, in lon/lat
 // or a projected CRS (gis/map_reader.h). Writes report.json, report.html and the GIS layers —
 // sensors.geojson, shifts.geojson and diagram.geojson, or with --format gpkg one audit.gpkg in the
-// map's CRS — into OUTDIR (all or nothing) and prints a short summary.
+// map's CRS — into OUTDIR (all or nothing) and prints a short summary (cli/audit_map.h).
+// covmap audit MAP1 MAP2 ... | FOLDER -o OUTDIR/: a batch, each map's reports in OUTDIR/<map>/ and
+// a summary table beside them (cli/audit_batch.h).
 // Exit 0: audited (whatever the verdicts, unless --fail-on-inconsistent: then 1 when a reported
-// sensor is inconsistent); 2: bad input or an output that may not be written; 4: internal error.
+// sensor is inconsistent); 2: bad input or an output that may not be written (in a batch: any map
+// failed); 4: internal error.
 #pragma once
 
 #include <CLI/CLI.hpp>
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "report/audit_report.h"
 
 namespace covmap::cli {
 
 struct AuditCommandOptions {
-  std::string map_path;
+  std::vector<std::string> inputs;   // the MAP and FOLDER arguments as typed (cli/audit_batch_inputs.h)
+  std::string map_path;              // the map audited: set by run_audit from inputs, per map in a batch
   std::string sensors_path;          // empty: no reported sensors
   std::string output_dir;
   std::optional<double> alpha;       // path-loss exponent: weight = 10^(P / (10 alpha))

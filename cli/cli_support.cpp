@@ -42,26 +42,35 @@ std::string subcommand_list(const CLI::App& app) {
 
 }  // namespace
 
+Failure current_failure() {
+  try {
+    throw;
+  } catch (const io::InputError& e) {
+    return {e.what(), kBadInput};
+  } catch (const io::OutputError& e) {
+    return {e.what(), kBadInput};
+  } catch (const cleaning::SnapTooSmall& e) {
+    return {std::string(e.what()) + "; give a larger --snap (about the map's staircase step, in map units)", kBadInput};
+  } catch (const voronoi::InvalidSites& e) {
+    return {e.what(), kBadInput};
+  } catch (const voronoi::ClipTooLarge& e) {
+    return {e.what(), kBadInput};
+  } catch (const audit::MapTooLarge& e) {
+    return {e.what(), kBadInput};
+  } catch (const std::bad_alloc&) {
+    return {"out of memory; the input is too large for this machine (see docs/RELIABILITY.md for the limits)",
+            kBadInput};
+  } catch (const std::exception& e) {
+    return {std::string("internal error (please report it): ") + e.what(), kInternal};
+  }
+}
+
 int guarded(const std::function<int()>& body) {
   try {
     return body();
-  } catch (const io::InputError& e) {
-    return say(e.what(), kBadInput);
-  } catch (const io::OutputError& e) {
-    return say(e.what(), kBadInput);
-  } catch (const cleaning::SnapTooSmall& e) {
-    return say(std::string(e.what()) + "; give a larger --snap (about the map's staircase step, in map units)", kBadInput);
-  } catch (const voronoi::InvalidSites& e) {
-    return say(e.what(), kBadInput);
-  } catch (const voronoi::ClipTooLarge& e) {
-    return say(e.what(), kBadInput);
-  } catch (const audit::MapTooLarge& e) {
-    return say(e.what(), kBadInput);
-  } catch (const std::bad_alloc&) {
-    return say("out of memory; the input is too large for this machine (see docs/RELIABILITY.md for the limits)",
-               kBadInput);
-  } catch (const std::exception& e) {
-    return say(std::string("internal error (please report it): ") + e.what(), kInternal);
+  } catch (const std::exception&) {
+    const Failure failure = current_failure();
+    return say(failure.message, failure.code);
   }
 }
 

@@ -22,6 +22,16 @@ enum ExitCode : int { kOk = 0, kFindings = 1, kBadInput = 2, kNotBisectorGraph =
 // else is a bug and exits kInternal.
 int guarded(const std::function<int()>& body);
 
+// What the exception being handled means for the user, as guarded() reports it: the message
+// (without the "covmap: " prefix) and kBadInput or kInternal. Call it only inside a catch block;
+// an exception that is not a std::exception is rethrown. `covmap audit` on several maps uses it to
+// report a failed map and go on with the next.
+struct Failure {
+  std::string message;
+  ExitCode code = kInternal;
+};
+Failure current_failure();
+
 // Maps a command-line parse error onto the contract: help and --version exit 0 after printing;
 // everything else prints one "covmap: ..." message (naming the unknown subcommand and listing the
 // right ones where that is the problem) and exits kBadInput.
