@@ -14,7 +14,8 @@ Parts (ctest registers them apart; no part: all): api, errors, concurrent, resta
   concurrent  20 jobs submitted at once all finish, each with its own correct report
   restart     a server killed with SIGKILL mid-job and restarted serves every finished job's files
               and runs the interrupted job again (attempts 2), leaving no orphan audit process
-  limits      an audit over --job-cpu-seconds is stopped and failed with the reason; the next job runs
+  limits      an audit over --job-cpu-seconds is stopped and failed with the reason; the next job runs;
+              a full queue (--queue) answers 503 and stores nothing
 Exits 1 listing every failure.
 """
 import json
@@ -188,8 +189,18 @@ def part_api(covmap, datasets, work):
         status, _, body = request(server, "POST", "/v1/diagram", sites.read_bytes(), {"Content-Type": "text/csv"})
         check(status == 200 and json.loads(body) == json.loads((work / "diagram.json").read_text()),
               f"api: /v1/diagram differs from covmap diagram ({status})")
-        status, _, body = request(server, "POST", "/v1/check", body, {"Content-Type": "application/json"})
+        graph = body
+        status, _, body = request(server, "POST", "/v1/check", graph, {"Content-Type": "application/json"})
         check(status == 200 and json.loads(body)["ok"] is True, f"api: /v1/check of the engine's diagram: {body[:200]}")
+        # /v1/recognize answers as `covmap recognize -o` writes; /v1/compare finds a graph equal to itself.
+        subprocess.run([str(covmap), "recognize", str(work / "diagram.json"), "-o", str(work / "recon.json")],
+                       check=True, stdout=subprocess.DEVNULL)
+        status, _, body = request(server, "POST", "/v1/recognize", graph, {"Content-Type": "application/json"})
+        check(status == 200 and json.loads(body) == json.loads((work / "recon.json").read_text()),
+              f"api: /v1/recognize differs from covmap recognize ({status})")
+        pair = json.dumps({"a": json.loads(graph), "b": json.loads(graph)}).encode()
+        status, _, body = request(server, "POST", "/v1/compare", pair, {"Content-Type": "application/json"})
+        check(status == 200 and json.loads(body)["equal"] is True, f"api: /v1/compare of a graph with itself: {body[:200]}")
         # Every path of the API document is routed.
         status, _, body = request(server, "GET", "/openapi.json")
         document = json.loads(body)
@@ -322,6 +333,21 @@ def part_limits(covmap, datasets, work):
         # Bern alone takes about 0.4 s of CPU: within the limit.
         check(job["status"] == "done", f"limits: the next job ended {job['status']} {job.get('error')}")
         print(f"  limits: over the limit -> {json.dumps(wait_done(server, heavy['id'])['error'])[:160]}")
+    finally:
+        server.stop()
+    # A full queue: one job running, one waiting (--queue 1), the third refused with 503.
+    server = Server(covmap, work / "data_queue", "--workers", 1, "--queue", 1)
+    try:
+        _, _, running = submit(server, swiss / "map.geojson", None, {"alpha": 3.5})
+        deadline = time.time() + 60
+        while time.time() < deadline and get_json(server, f"/v1/audits/{running['id']}")[1]["status"] == "queued":
+            time.sleep(0.05)
+        status, _, _ = submit(server, bern / "map.geojson", None, {"alpha": 3.5})
+        check(status == 202, f"limits: the job that fills the queue answered {status}")
+        status, _, answer = submit(server, bern / "map.geojson", None, {"alpha": 3.5})
+        check(status == 503 and answer["error"]["code"] == "queue_full", f"limits: a full queue answered {status} {answer}")
+        _, listing = get_json(server, "/v1/audits")
+        check(len(listing["jobs"]) == 2, f"limits: the refused job left {len(listing['jobs']) - 2} job(s)")
     finally:
         server.stop()
 
