@@ -6,6 +6,7 @@
 #include <cfloat>
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <functional>
 #include <sstream>
 
 #include "io_test_util.h"
@@ -231,6 +232,26 @@ TEST(DiagramJson, WritingNonFiniteThrows) {
     FAIL() << "expected std::invalid_argument";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("nodes[1].y"), std::string::npos);
+  }
+  // The writer streams element by element (issue 16), yet refuses before its first byte: a
+  // non-finite number late in the file leaves the stream empty. Each member is named by its path.
+  for (const auto& [spoil, path] : std::vector<std::pair<std::function<void(Diagram&)>, std::string>>{
+           {[](Diagram& g) { g.sites.back().weight = INFINITY; }, "sites[" },
+           {[](Diagram& g) {
+              for (auto& a : g.arcs)
+                if (auto* c = std::get_if<Circle>(&a.curve)) { c->r = NAN; return; }
+            }, ".circle.r"},
+           {[](Diagram& g) { g.clip.push_back({0.0, NAN}); }, "[1]"}}) {
+    auto g = sample();
+    spoil(g);
+    std::ostringstream empty;
+    try {
+      write_diagram_json(g, empty);
+      ADD_FAILURE() << "expected std::invalid_argument for " << path;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+    }
+    EXPECT_TRUE(empty.str().empty()) << path;
   }
 }
 
