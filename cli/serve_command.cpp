@@ -4,6 +4,7 @@
 #include <signal.h>
 
 #include <iostream>
+#include <memory>
 #include <thread>
 
 #include "cli/cli_support.h"
@@ -34,8 +35,16 @@ int run_serve(const service::ServeOptions& options) {
     sigaddset(&stop_signals, SIGINT);
     sigaddset(&stop_signals, SIGTERM);
     pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
-    service::HttpServer server(options);
-    const int port = server.bind();
+    std::unique_ptr<service::HttpServer> started;
+    int port = 0;
+    try {
+      started = std::make_unique<service::HttpServer>(options);
+      port = started->bind();
+    } catch (const service::StartError& e) {
+      std::cerr << "covmap: serve: " << e.what() << std::endl;
+      return kBadInput;
+    }
+    service::HttpServer& server = *started;
     std::cout << "covmap serve: listening on http://" << options.host << ":" << port << "/ (data: "
               << options.data_dir.string() << ", " << options.workers << " worker" << (options.workers == 1 ? "" : "s") << ")";
     if (server.requeued_at_start() || server.failed_at_start())

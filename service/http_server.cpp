@@ -1,5 +1,12 @@
 #include "service/http_server.h"
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 #include <stdexcept>
 
 #include "io/input_error.h"
@@ -71,16 +78,43 @@ void json_error_pages(HttpServer::State& s) {
   });
 }
 
+// One server per data folder: an exclusive lock on DATA/serve.lock, held (and released by the
+// kernel, whatever way the process ends) for the server's life.
+int lock_data_folder(const std::filesystem::path& data) {
+  const std::string file = (data / "serve.lock").string();
+  const int fd = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (fd < 0) throw StartError("data folder " + data.string() + ": cannot open " + file + ": " + std::strerror(errno));
+  if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
+    ::close(fd);
+    throw StartError("another covmap serve uses the data folder " + data.string() + "; stop it, or give this one another --data");
+  }
+  return fd;
+}
+
 }  // namespace
 
 HttpServer::HttpServer(const ServeOptions& options) : state_(std::make_unique<State>()) {
   std::string why;
   if (!options.is_valid(&why)) throw std::invalid_argument(why);
   state_->options = options;
-  std::filesystem::create_directories(options.data_dir / "jobs");
-  state_->store = std::make_unique<JobStore>(JobStore::open(job_store_file(options.data_dir)));
+  std::error_code made;
+  std::filesystem::create_directories(options.data_dir / "jobs", made);
+  if (made) throw StartError("data folder " + options.data_dir.string() + ": " + made.message());
+  state_->lock_fd = lock_data_folder(options.data_dir);
+  try {
+    state_->store = std::make_unique<JobStore>(JobStore::open(job_store_file(options.data_dir)));
+  } catch (const std::runtime_error& e) {
+    ::close(state_->lock_fd);
+    throw StartError(e.what());
+  }
   state_->recovered = state_->store->recover_interrupted(options.max_attempts, now_ms());
   state_->http.set_payload_max_length(options.max_upload_mb << 20);
+  // SO_REUSEADDR only: httplib's default adds SO_REUSEPORT, with which a second server binds the
+  // same port and quietly takes half the requests instead of being refused.
+  state_->http.set_socket_options([](socket_t sock) {
+    int yes = 1;
+    setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+  });
   state_->http.new_task_queue = [] { return new httplib::ThreadPool(8); };
   json_error_pages(*state_);
   detail::add_audit_routes(*state_);
@@ -92,6 +126,8 @@ HttpServer::HttpServer(const ServeOptions& options) : state_(std::make_unique<St
 HttpServer::~HttpServer() {
   state_->http.stop();
   state_->runner.reset();  // kills running audits; their jobs are requeued at the next start
+  state_->store.reset();
+  if (state_->lock_fd >= 0) ::close(state_->lock_fd);
 }
 
 int HttpServer::bind() {
@@ -100,7 +136,7 @@ int HttpServer::bind() {
                                                      ? state_->options.port
                                                      : -1);
   if (port < 0)
-    throw std::runtime_error("cannot listen on " + state_->options.host + ":" + std::to_string(state_->options.port) +
+    throw StartError("cannot listen on " + state_->options.host + ":" + std::to_string(state_->options.port) +
                              " (in use, or not an address of this machine)");
   return port;
 }

@@ -16,12 +16,19 @@
 #pragma once
 
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "service/serve_options.h"
 
 namespace covmap::service {
+
+// Why a server cannot start, for the person starting it: the address is taken, the data folder
+// cannot be used, or another server uses it. `covmap serve` exits 2 with the message.
+struct StartError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
 struct Route {
   std::string method;  // "GET", "POST", "DELETE"
@@ -31,15 +38,16 @@ struct Route {
 
 class HttpServer {
  public:
-  // Opens (or creates) the data folder and its job store and recovers interrupted jobs; throws
-  // std::runtime_error (or std::invalid_argument for invalid options) if it cannot.
+  // Opens (or creates) the data folder, takes its lock (one server per data folder: recovery takes
+  // every running job for interrupted), opens its job store and recovers interrupted jobs. Throws
+  // StartError if it cannot (std::invalid_argument for invalid options).
   explicit HttpServer(const ServeOptions& options);
   ~HttpServer();
   HttpServer(const HttpServer&) = delete;
   HttpServer& operator=(const HttpServer&) = delete;
 
   // Binds the listening socket (options.port, or a free one if 0) and returns the port; throws
-  // std::runtime_error when the address is taken or not available.
+  // StartError when the address is taken or not available.
   int bind();
   // Serves until stop(); returns false if the server could not listen.
   bool run();

@@ -19,6 +19,7 @@ struct HttpServer::State {
   httplib::Server http;
   RecoveryReport recovered;
   std::vector<Route> routes;  // every route added, as the API document names it
+  int lock_fd = -1;           // the data folder's lock (DATA/serve.lock), held while the server lives
 };
 
 namespace detail {

@@ -277,6 +277,16 @@ def part_errors(covmap, datasets, work):
         expect_error(server, "unknown route", answer, status, 404)
         status, _, answer = request(server, "POST", "/v1/diagram", b"id,x,y,weight\na,0,0,-1\n", {"Content-Type": "text/csv"})
         expect_error(server, "diagram of a bad site", answer, status, 400, "sites")
+        # A second server on the same data folder, or on a port in use: refused at start, exit 2.
+        second = subprocess.run([str(covmap), "serve", "--port", "0", "--data", str(data)], capture_output=True,
+                                text=True, timeout=30)
+        check(second.returncode == 2 and "another covmap serve uses the data folder" in second.stderr,
+              f"errors: a second server on the data folder: exit {second.returncode}, {second.stderr.strip()}")
+        port = server.base.rsplit(":", 1)[1]
+        taken = subprocess.run([str(covmap), "serve", "--port", port, "--data", str(work / "data_other")],
+                               capture_output=True, text=True, timeout=30)
+        check(taken.returncode == 2 and "cannot listen" in taken.stderr,
+              f"errors: a port in use: exit {taken.returncode}, {taken.stderr.strip()}")
         check(job_folders(data) == [], f"errors: refused requests left job folders {job_folders(data)}")
         _, listing = get_json(server, "/v1/audits")
         check(listing["jobs"] == [], f"errors: refused requests left jobs {[j['id'] for j in listing['jobs']]}")
