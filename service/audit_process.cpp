@@ -138,7 +138,9 @@ AuditProcessResult run_audit_process(const AuditProcessSpec& spec,
     result.exit_code = WEXITSTATUS(status);
   } else if (WIFSIGNALED(status)) {
     result.signal = WTERMSIG(status);
-    result.end = result.signal == SIGXCPU || result.signal == SIGKILL ? ProcessEnd::kOutOfTime : ProcessEnd::kCrashed;
+    // SIGXCPU is the soft CPU limit's own signal. SIGKILL may be the hard CPU limit (5 s later, if
+    // SIGXCPU was ignored) or the kernel's out-of-memory killer: not told apart, so a crash.
+    result.end = result.signal == SIGXCPU ? ProcessEnd::kOutOfTime : ProcessEnd::kCrashed;
   }
   return result;
 }

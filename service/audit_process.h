@@ -29,8 +29,8 @@ struct AuditProcessSpec {
 enum class ProcessEnd {
   kExited,     // exit code in exit_code
   kCancelled,  // killed because `cancel` was set
-  kOutOfTime,  // killed by RLIMIT_CPU (SIGXCPU/SIGKILL)
-  kCrashed,    // killed by another signal (SIGSEGV, SIGABRT, an out-of-memory kill)
+  kOutOfTime,  // killed by RLIMIT_CPU's SIGXCPU
+  kCrashed,    // killed by another signal (SIGSEGV, SIGABRT, SIGKILL: an out-of-memory kill or the hard CPU limit)
 };
 
 struct AuditProcessResult {

@@ -75,6 +75,14 @@ void read_member(AuditRequest& r, const std::string& name, const Json& v) {
   }
 }
 
+// A number as text that reads back to the same double, for the job's command line.
+std::string exact(double v) {
+  std::ostringstream out;
+  out.precision(17);
+  out << v;
+  return out.str();
+}
+
 }  // namespace
 
 AuditRequest parse_audit_request(std::string_view options_json) {
@@ -91,12 +99,7 @@ std::vector<std::string> audit_arguments(const AuditRequest& r, const std::files
                                          const std::filesystem::path& sensors, const std::filesystem::path& output_dir) {
   std::vector<std::string> a = {"audit", map.string(), "-o", output_dir.string(), "--sensor-property", r.sensor_property};
   if (!sensors.empty()) a.insert(a.end(), {"--sensors", sensors.string()});
-  if (r.alpha) {
-    std::ostringstream alpha;
-    alpha.precision(17);
-    alpha << *r.alpha;
-    a.insert(a.end(), {"--alpha", alpha.str()});
-  }
+  if (r.alpha) a.insert(a.end(), {"--alpha", exact(*r.alpha)});
   if (r.planar) a.push_back("--planar");
   if (r.full_precision) a.push_back("--full-precision");
   if (r.force) a.push_back("--force");
@@ -104,12 +107,7 @@ std::vector<std::string> audit_arguments(const AuditRequest& r, const std::files
   if (!r.sensor_crs.empty()) a.insert(a.end(), {"--sensor-crs", r.sensor_crs});
   if (!r.sensor_layer.empty()) a.insert(a.end(), {"--sensor-layer", r.sensor_layer});
   if (!r.basemap.empty()) a.insert(a.end(), {"--basemap", r.basemap});
-  if (r.snap > 0) {
-    std::ostringstream snap;
-    snap.precision(17);
-    snap << r.snap;
-    a.insert(a.end(), {"--snap", snap.str()});
-  }
+  if (r.snap > 0) a.insert(a.end(), {"--snap", exact(r.snap)});
   if (r.band != 1) a.insert(a.end(), {"--band", std::to_string(r.band)});
   if (r.geopackage) a.insert(a.end(), {"--format", "gpkg"});
   return a;

@@ -61,8 +61,9 @@ Outcome outcome_of(const AuditProcessResult& r, const ServeOptions& o) {
       return {JobStatus::kFailed,
               JobError{"crashed",
                        "the audit's process was killed by signal " + std::to_string(r.signal) + " (" + strsignal(r.signal) +
-                           "; SIGKILL is also how the system ends a process out of memory, limit " +
-                           std::to_string(o.job_memory_mb) + " MiB)",
+                           "; SIGKILL is also how the system ends a process out of memory or past its hard CPU "
+                           "limit; limits " + std::to_string(o.job_memory_mb) + " MiB, " +
+                           std::to_string(o.job_cpu_seconds) + " s)",
                        ""}};
     case ProcessEnd::kExited: break;
   }
