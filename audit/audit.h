@@ -61,8 +61,10 @@ struct AuditOptions {
   double model_misfit_ratio = 4.0;
   // Called with (stage name, fraction done in [0, 1]) on long runs; may be empty.
   std::function<void(const std::string&, double)> progress;
-  // Worker threads of the refinement's covariance. The result is the same whatever the count (the
-  // solver itself runs on one thread: fitting/refine.cpp says why).
+  // Worker threads of the refinement's covariance and of its independent solves (the starts of
+  // the multi-start and of each local re-solve). The result is the same whatever the count (each
+  // solve runs on one thread, fitting/refine.cpp says why, and their results are compared in a
+  // fixed order).
   int threads = 2;
 };
 

@@ -31,8 +31,9 @@
 // of log(|q − s_i| / |q − s_j|) + log w_j over its samples q). A solution that leaves a free site
 // outside its own cell or on another site is a degenerate minimum and is never taken; among the
 // others the lowest cost wins. Sensors are taken in index order, each re-solve seeing the ones
-// before, and a suspect solved as a neighbour of an earlier one is done: the result does not depend
-// on threads or timing.
+// before, and a suspect solved as a neighbour of an earlier one is done; a suspect's starts are
+// solved concurrently (each alone, on one thread) and compared in start order: the result does not
+// depend on threads or timing.
 #include <algorithm>
 #include <cmath>
 #include <exception>
@@ -41,6 +42,7 @@
 
 #include "audit/audit_stages.h"
 #include "audit/tolerances.h"
+#include "core/parallel.h"
 
 namespace covmap::audit::stages {
 namespace {
@@ -340,14 +342,17 @@ void resolve_misplaced(const RefinementSetup& setup, const SiteEstimates& estima
     if (suspect[i] == Suspicion::kNone) continue;
     ++resolved;
     const Neighbourhood nb = neighbourhood(setup, adj, sites, i, local_of);
+    // The starts are independent solves: on the refinement's threads, compared in start order.
+    const std::vector<std::vector<Site>> starts = local_starts(setup, estimates, cells, raster, reported_of, adj, sites, nb);
+    std::vector<LocalResult> solved(starts.size());
+    parallel_items(starts.size(), setup.options.threads, [&](std::size_t k) {
+      solved[k] = solve_from(setup, nb, starts[k], refined.range);
+      solved[k].admissible = !solved[k].sites.empty() && admissible(setup, cells, raster, adj, nb, solved[k].sites);
+    });
     LocalResult best;
-    int which = -1, k = 0;
-    for (const std::vector<Site>& start : local_starts(setup, estimates, cells, raster, reported_of, adj, sites, nb)) {
-      LocalResult r = solve_from(setup, nb, start, refined.range);
-      r.admissible = !r.sites.empty() && admissible(setup, cells, raster, adj, nb, r.sites);
-      if (better(r, best)) best = std::move(r), which = k;
-      ++k;
-    }
+    int which = -1;
+    for (std::size_t k = 0; k < solved.size(); ++k)
+      if (better(solved[k], best)) best = std::move(solved[k]), which = static_cast<int>(k);
     if (best.sites.empty() || !best.admissible) continue;  // nothing better than a degenerate minimum
     for (std::size_t l = 0; l < nb.free; ++l) sites[nb.sensors[l]] = best.sites[l];
     // Its neighbours were solved with it, from the same starts: a later suspect among them is done.

@@ -6,6 +6,7 @@
 
 #include "audit/audit_stages.h"
 #include "audit/tolerances.h"
+#include "core/parallel.h"
 
 namespace covmap::audit::stages {
 namespace {
@@ -65,25 +66,33 @@ fitting::RefineResult multi_start_refinement(const RefinementSetup& setup, const
   // start on maps small enough for several.
   std::vector<Site> centroid_start = estimates.sites;
   for (std::size_t i = 0; i < n; ++i) centroid_start[i].x = centroids[i].x, centroid_start[i].y = centroids[i].y;
-  fitting::RefineResult refined = refine_from(setup, centroid_start, centroids, messages);
-  if (multi_start) {
-    // A second start from the tolerant estimates themselves (outside their own cell: centroid).
-    fitting::RefineResult second = refine_from(setup, start, centroids, messages);
-    if (second.summary.final_cost < refined.summary.final_cost) refined = std::move(second);
-  }
+  std::vector<std::vector<Site>> starts{centroid_start};
+  // A second start from the tolerant estimates themselves (outside their own cell: centroid).
+  if (multi_start) starts.push_back(start);
+  std::size_t from_reported = 0;  // the index of the start from the reported sensors, if any
   if (multi_start && !reported_of.empty()) {
+    from_reported = starts.size();
     // A further start from the reported sensors (where they exist): the lower cost wins.
     std::vector<Site> alt = start;
     for (auto [i, r] : reported_of) {
       alt[i].x = r->position.x, alt[i].y = r->position.y;
       if (r->weight) alt[i].weight = *r->weight;
     }
-    fitting::RefineResult second = refine_from(setup, alt, centroids, messages);
-    if (second.summary.final_cost < refined.summary.final_cost) {
+    starts.push_back(std::move(alt));
+  }
+  // The starts are independent refinements: on the refinement's threads, compared in start order.
+  std::vector<fitting::RefineResult> solved(starts.size());
+  std::vector<std::vector<std::string>> said(starts.size());
+  parallel_items(starts.size(), setup.options.threads,
+                 [&](std::size_t k) { solved[k] = refine_from(setup, starts[k], centroids, said[k]); });
+  fitting::RefineResult refined = std::move(solved[0]);
+  for (std::size_t k = 0; k < starts.size(); ++k) {
+    messages.insert(messages.end(), said[k].begin(), said[k].end());
+    if (k == 0 || !(solved[k].summary.final_cost < refined.summary.final_cost)) continue;
+    if (k == from_reported)
       messages.push_back("refinement: the start from the reported sensors reached a lower cost (" +
-                         std::to_string(second.summary.final_cost) + " < " + std::to_string(refined.summary.final_cost) + ")");
-      refined = std::move(second);
-    }
+                         std::to_string(solved[k].summary.final_cost) + " < " + std::to_string(refined.summary.final_cost) + ")");
+    refined = std::move(solved[k]);
   }
   restart_escaped(setup, cells, raster, refined, messages);
   resolve_misplaced(setup, estimates, cells, raster, reported_of, refined, messages);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <functional>
 #include <iterator>
@@ -33,6 +34,27 @@ void parallel_chunks(std::size_t n, int workers, F&& f) {
     const std::size_t begin = n * w / workers, end = n * (w + 1) / workers;
     threads.emplace_back([&f, begin, end, w] { f(begin, end, w); });
   }
+  for (auto& t : threads) t.join();
+}
+
+// Calls f(i) for every i in [0, n) on up to `workers` threads, each taking the next item when it
+// is free: for a few items of uneven cost (independent solves), where contiguous chunks would leave
+// a thread idle. f must write only to item i's own results; the caller combines them in index
+// order, so the outcome does not depend on the thread count.
+template <class F>
+void parallel_items(std::size_t n, int workers, F&& f) {
+  workers = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(std::max(workers, 1)), n));
+  if (workers <= 1) {
+    for (std::size_t i = 0; i < n; ++i) f(i);
+    return;
+  }
+  std::atomic<std::size_t> next{0};
+  const auto work = [&] {
+    for (std::size_t i; (i = next.fetch_add(1)) < n;) f(i);
+  };
+  std::vector<std::thread> threads;
+  for (int w = 1; w < workers; ++w) threads.emplace_back(work);
+  work();
   for (auto& t : threads) t.join();
 }
 

@@ -5,6 +5,7 @@
 // bin size; every gross error flagged; few false alarms; the same answers in lon/lat.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -115,6 +116,33 @@ TEST(Audit, SameInputSameNumbersWhateverTheHeapLayout) {
     EXPECT_EQ(a.verdict, b.verdict) << a.id;
   }
   EXPECT_EQ(first.result.refinement_summary.substr(0, 40), second.result.refinement_summary.substr(0, 40));
+}
+
+// The refinement's independent solves (the starts of each local re-solve) run on options.threads;
+// the answer must not depend on that count, bit for bit. The map is one where local re-solves run.
+TEST(Audit, SameNumbersWhateverTheThreadCount) {
+  const auto sites = sensors(60, 7);
+  std::vector<ReportedSensor> reported;
+  const AuditRun r = generate_and_read(base_options(3), sites, 3.5, reported);
+  audit::AuditOptions one;
+  one.alpha = 3.5;
+  one.threads = 1;
+  audit::AuditOptions three = one;
+  three.threads = 3;
+  const audit::AuditResult a = audit::audit(r.map.cells, reported, one);
+  const audit::AuditResult b = audit::audit(r.map.cells, reported, three);
+  const bool resolved = std::any_of(a.messages.begin(), a.messages.end(), [](const std::string& m) {
+    return m.find("solved again with their neighbourhoods") != std::string::npos;
+  });
+  ASSERT_TRUE(resolved) << "the map no longer exercises the local re-solves";
+  ASSERT_EQ(a.sensors.size(), b.sensors.size());
+  for (std::size_t k = 0; k < a.sensors.size(); ++k) {
+    EXPECT_EQ(a.sensors[k].position.x, b.sensors[k].position.x) << a.sensors[k].id;
+    EXPECT_EQ(a.sensors[k].position.y, b.sensors[k].position.y) << a.sensors[k].id;
+    EXPECT_EQ(a.sensors[k].weight, b.sensors[k].weight) << a.sensors[k].id;
+    EXPECT_EQ(a.sensors[k].verdict, b.sensors[k].verdict) << a.sensors[k].id;
+  }
+  EXPECT_EQ(a.messages, b.messages);
 }
 
 }  // namespace
