@@ -177,7 +177,7 @@ struct AuditResult {
   bool refinement_converged = false;  // the solver reached its tolerance (reports say so in plain words)
   std::vector<std::string> messages;  // notable events of each stage, for the report (no times)
   std::vector<StageTiming> timings;   // per stage, in order
-  double seconds = 0.0;               // the whole audit
+  double seconds = 0.0;               // the whole audit (the CLI adds its reading of the inputs)
 };
 
 AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSensor> reported,

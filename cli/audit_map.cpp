@@ -86,8 +86,10 @@ AuditedMap audit_map(const AuditCommandOptions& options, const AuditProgress& pr
   plan.force = options.force;
   io::check_output_plan(plan);
   gis::MapSource source;
+  const auto read_start = std::chrono::steady_clock::now();
   const io::CoverageMap map = read_map(options, say, source);
   const std::vector<ReportedSensor> reported = read_sensors(options, map);
+  const double read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - read_start).count();
   refuse_implausible_input(options, map, reported);
   say("map read (" + source.reader + "): " + std::to_string(map.cells.size()) + " cells, " +
       std::to_string(map.vertex_count) + " vertices" +
@@ -98,6 +100,10 @@ AuditedMap audit_map(const AuditCommandOptions& options, const AuditProgress& pr
   ao.threads = options.threads;
   ao.progress = [&](const std::string& stage, double f) { say(stage + ", " + std::to_string(static_cast<int>(100 * f)) + " %"); };
   AuditedMap audited{audit::audit(map.cells, reported, ao), {}};
+  // report.json's stage times start with reading the inputs (the reports' own writing comes after
+  // report.json is made, so it is not among them).
+  audited.result.timings.insert(audited.result.timings.begin(), {"reading map and sensors", read_seconds});
+  audited.result.seconds += read_seconds;
   report::AuditReportContext context{audited.result, map, options.map_path, options.sensors_path, options.alpha,
                                      options.command_line, &ao};
   context.render.basemap_url = options.basemap_url;

@@ -1,5 +1,6 @@
 // The report folder as a whole: which files, rendered in order, the GIS layers as GeoJSON or as
 // one GeoPackage (through gis/geopackage.h, which keeps the map's CRS).
+#include <future>
 #include <sstream>
 
 #include "gis/geopackage.h"
@@ -61,6 +62,13 @@ std::vector<std::pair<std::string, std::string>> render_audit_reports(
   const auto say = [&](const std::string& file) {
     if (progress) progress(file);
   };
+  // The layers of a GeoPackage are in the map's own CRS; GeoJSON is WGS84 (RFC 7946).
+  AuditReportContext layer_context = context;
+  layer_context.render.crs_coordinates = context.render.crs_coordinates || format == GisFormat::kGeoPackage;
+  // The diagram layer is by far the largest (58 MB of GeoJSON at 10⁴ cells) and reads only the
+  // finished result: it is rendered on a second thread while the others are.
+  std::future<std::string> diagram =
+      std::async(std::launch::async, [&layer_context] { return rendered(write_diagram_geojson, layer_context); });
   std::vector<std::pair<std::string, std::string>> files;
   say("report.json");
   files.emplace_back("report.json", rendered(write_audit_json, context));
@@ -73,19 +81,20 @@ std::vector<std::pair<std::string, std::string>> render_audit_reports(
   };
   const Layer layers[] = {{"sensors", gis::LayerGeometry::kPoint, write_sensors_geojson},
                           {"shifts", gis::LayerGeometry::kLineString, write_shifts_geojson},
-                          {"diagram", gis::LayerGeometry::kMultiPolygon, write_diagram_geojson}};
+                          {"diagram", gis::LayerGeometry::kMultiPolygon, nullptr}};
+  const auto layer_text = [&](const Layer& layer) {
+    return layer.write ? rendered(layer.write, layer_context) : diagram.get();
+  };
   if (format == GisFormat::kGeoJson) {
-    for (const auto& [name, geometry, write] : layers) {
-      say(std::string(name) + ".geojson");
-      files.emplace_back(std::string(name) + ".geojson", rendered(write, context));
+    for (const Layer& layer : layers) {
+      say(std::string(layer.name) + ".geojson");
+      files.emplace_back(std::string(layer.name) + ".geojson", layer_text(layer));
     }
     return files;
   }
   say(kGeoPackageFile);
-  AuditReportContext own_crs = context;
-  own_crs.render.crs_coordinates = true;
   std::vector<gis::GeoJsonLayer> tables;
-  for (const auto& [name, geometry, write] : layers) tables.push_back({name, geometry, rendered(write, own_crs)});
+  for (const Layer& layer : layers) tables.push_back({layer.name, layer.geometry, layer_text(layer)});
   files.emplace_back(kGeoPackageFile, gis::geopackage_bytes(tables, geopackage_crs(context.map)));
   return files;
 }
