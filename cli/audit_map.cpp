@@ -9,12 +9,10 @@
 #include <vector>
 
 #include "core/readable_numbers.h"
-#include "gis/map_reader.h"
-#include "gis/sensor_reader.h"
+#include "gis/audit_inputs.h"
 #include "io/coverage_map.h"
 #include "io/input_error.h"
 #include "io/output_plan.h"
-#include "io/plausibility.h"
 
 namespace covmap::cli {
 namespace {
@@ -22,13 +20,25 @@ namespace {
 // Findings of io/plausibility.h stop the audit (exit 2) unless --force; with it they are warnings.
 void refuse_implausible_input(const AuditCommandOptions& options, const io::CoverageMap& map,
                               const std::vector<ReportedSensor>& reported) {
-  std::vector<std::pair<std::string, std::string>> doubts;  // (file, finding)
-  if (auto finding = io::lon_lat_looking(map)) doubts.emplace_back(options.map_path, *finding);
-  if (auto finding = io::sensors_far_outside(map, reported)) doubts.emplace_back(options.sensors_path, *finding);
-  for (const auto& [file, finding] : doubts) {
-    if (!options.force) throw io::InputError(file, 0, "", finding + " (pass --force to audit anyway)");
-    std::cerr << "covmap audit: warning: " << file << ": " << finding << "\n";
+  for (const gis::ImplausibleInput& doubt : gis::implausible_inputs(map, reported)) {
+    const std::string& file = doubt.input == gis::AuditInput::kMap ? options.map_path : options.sensors_path;
+    if (!options.force) throw io::InputError(file, 0, "", doubt.finding + " (pass --force to audit anyway)");
+    std::cerr << "covmap audit: warning: " << file << ": " << doubt.finding << "\n";
   }
+}
+
+gis::AuditInputOptions input_options(const AuditCommandOptions& options) {
+  gis::AuditInputOptions o;
+  o.map.map.sensor_property = options.sensor_property;
+  o.map.map.planar = options.planar;
+  o.map.map.max_sensors = audit::kMaxSensors;
+  o.map.layer = options.layer;
+  o.map.band = options.band;
+  o.map.raster_table = options.raster_table;
+  o.alpha = options.alpha;
+  o.sensor_crs = options.sensor_crs;
+  o.sensor_layer = options.sensor_layer;
+  return o;
 }
 
 // Whether the summary lists the sensor by name with its reason: every verdict a planner must act on
@@ -49,27 +59,13 @@ io::CoverageMap read_map(const AuditCommandOptions& options, const AuditProgress
   std::error_code size_error;
   const auto map_bytes = std::filesystem::file_size(options.map_path, size_error);
   say("reading the map (" + (size_error ? std::string("size unknown") : fixed(map_bytes / 1e6, 1) + " MB") + ")");
-  gis::MapReadOptions mo;
-  mo.map.sensor_property = options.sensor_property;
-  mo.map.planar = options.planar;
-  mo.map.max_sensors = audit::kMaxSensors;
-  mo.layer = options.layer;
-  mo.band = options.band;
-  mo.raster_table = options.raster_table;
-  return gis::read_any_coverage_map(options.map_path, mo, &source);
+  return gis::read_audit_map(options.map_path, input_options(options), &source);
 }
 
 std::vector<ReportedSensor> read_sensors(const AuditCommandOptions& options, const io::CoverageMap& map) {
   if (options.sensors_path.empty()) return {};
-  gis::SensorReadOptions so;
-  so.sensors.alpha = options.alpha;
-  so.sensors.planar = options.planar;
-  so.sensors.frame = map.frame.get();
-  so.sensor_crs = options.sensor_crs;
-  so.layer = options.sensor_layer;
   std::vector<std::string> notes;  // which reading the file's sensors got, when there was a choice
-  so.sensors.notes = &notes;
-  std::vector<ReportedSensor> reported = gis::read_any_sensors(options.sensors_path, so);
+  std::vector<ReportedSensor> reported = gis::read_audit_sensors(options.sensors_path, input_options(options), map, &notes);
   for (const std::string& note : notes) std::cerr << "covmap audit: note: " << note << "\n";
   return reported;
 }

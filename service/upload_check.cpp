@@ -3,10 +3,8 @@
 #include <sstream>
 
 #include "audit/audit.h"
-#include "gis/map_reader.h"
-#include "gis/sensor_reader.h"
+#include "gis/audit_inputs.h"
 #include "io/input_error.h"
-#include "io/plausibility.h"
 #include "service/api_error.h"
 
 namespace covmap::service {
@@ -27,37 +25,33 @@ ApiError as_bad_input(const io::InputError& e, const std::string& part, const st
 
 void check_audit_inputs(const AuditRequest& request, const std::filesystem::path& map,
                         const std::filesystem::path& sensors) {
-  gis::MapReadOptions mo;
-  mo.map.sensor_property = request.sensor_property;
-  mo.map.planar = request.planar;
-  mo.map.max_sensors = audit::kMaxSensors;
-  mo.layer = request.layer;
-  mo.band = request.band;
+  gis::AuditInputOptions options;
+  options.map.map.sensor_property = request.sensor_property;
+  options.map.map.planar = request.planar;
+  options.map.map.max_sensors = audit::kMaxSensors;
+  options.map.layer = request.layer;
+  options.map.band = request.band;
+  options.alpha = request.alpha;
+  options.sensor_crs = request.sensor_crs;
+  options.sensor_layer = request.sensor_layer;
   io::CoverageMap coverage;
   try {
-    coverage = gis::read_any_coverage_map(map, mo);
+    coverage = gis::read_audit_map(map, options);
   } catch (const io::InputError& e) {
     throw as_bad_input(e, "map", map);
   }
   std::vector<ReportedSensor> reported;
   if (!sensors.empty()) {
-    gis::SensorReadOptions so;
-    so.sensors.alpha = request.alpha;
-    so.sensors.planar = request.planar;
-    so.sensors.frame = coverage.frame.get();
-    so.sensor_crs = request.sensor_crs;
-    so.layer = request.sensor_layer;
     try {
-      reported = gis::read_any_sensors(sensors, so);
+      reported = gis::read_audit_sensors(sensors, options, coverage);
     } catch (const io::InputError& e) {
       throw as_bad_input(e, "sensors", sensors);
     }
   }
   if (request.force) return;
-  if (auto finding = io::lon_lat_looking(coverage))
-    throw ApiError(ErrorCode::kBadInput, *finding + " (set the option force to audit anyway)", "map");
-  if (auto finding = io::sensors_far_outside(coverage, reported))
-    throw ApiError(ErrorCode::kBadInput, *finding + " (set the option force to audit anyway)", "sensors");
+  for (const gis::ImplausibleInput& doubt : gis::implausible_inputs(coverage, reported))
+    throw ApiError(ErrorCode::kBadInput, doubt.finding + " (set the option force to audit anyway)",
+                   doubt.input == gis::AuditInput::kMap ? "map" : "sensors");
 }
 
 }  // namespace covmap::service
