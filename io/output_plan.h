@@ -46,7 +46,7 @@ std::filesystem::path normalized_output_path(const std::filesystem::path& path);
 void check_output_plan(const OutputPlan& plan);
 
 // Writes `files` plus the marker into `folder` as described above. Re-checks the folder rules.
-void write_report_folder(const std::filesystem::path& folder, const NamedTexts& files, bool force);
+void write_report_folder(const std::filesystem::path& folder, NamedTexts files, bool force);
 
 // Removes covmap's leftovers in `dir` (not recursive); returns how many entries were removed.
 int remove_stale_temporaries(const std::filesystem::path& dir);
