@@ -2,6 +2,9 @@
 // to the map's frame, and each compared with the map on a raster.
 #include <cmath>
 #include <cstdlib>
+#include <functional>
+#include <future>
+#include <tuple>
 #include <utility>
 
 #include "audit/audit_stages.h"
@@ -96,6 +99,23 @@ std::vector<Site> reported_sites(const MapCells& cells, const std::vector<Site>&
   return rs;
 }
 
+// One side of the comparison: the diagram of `sites` and its agreement with the map.
+struct Recomputed {
+  Diagram diagram;
+  DiagramAgreement agreement;
+  std::vector<double> iou;
+  std::vector<std::string> messages;
+};
+
+Recomputed recompute(const MapRaster& raster, const cleaning::CleanedMap& cleaned, const std::vector<Site>& sites,
+                     int count, std::optional<double> reach, const std::vector<Point>& frame, const Box& box,
+                     const char* what) {
+  Recomputed r;
+  r.diagram = recomputed_diagram(sites, frame, box, r.messages, what);
+  std::tie(r.agreement, r.iou) = agreement_of(raster, cleaned, sites, count, reach);
+  return r;
+}
+
 }  // namespace
 
 void recomputed_diagrams(const MapCells& cells, const MapRaster& raster, const fitting::RefineResult& refined,
@@ -105,19 +125,28 @@ void recomputed_diagrams(const MapCells& cells, const MapRaster& raster, const f
   const std::size_t n = cleaned.sensors.size();
   const Box& box = cells.box;
   const std::vector<Point> frame = longest_frame_walk(cleaned.graph, box);
-  std::vector<Site> refined_sites = refined.sites;
-  out.refined_diagram = recomputed_diagram(refined_sites, frame, box, out.messages, "refined sensors");
+  const std::vector<Site>& refined_sites = refined.sites;
+  const std::vector<Site> rs =
+      reported.empty() ? std::vector<Site>{} : reported_sites(cells, refined_sites, reported_of, reported, scale, options);
+  // The two sides are independent: the reported one on a second thread when there are threads to
+  // spare. Each keeps its own messages, added in a fixed order.
+  std::future<Recomputed> reported_side;
+  if (!reported.empty())
+    reported_side = std::async(options.threads > 1 ? std::launch::async : std::launch::deferred, recompute,
+                               std::cref(raster), std::cref(cleaned), std::cref(rs), static_cast<int>(rs.size()),
+                               refined.range, std::cref(frame), std::cref(box), "reported sensors");
   // The raster of the map (made before the refinement): its own bins where it has them, at most ~4·10⁶.
-  {
-    auto [d, iou] = agreement_of(raster, cleaned, refined_sites, static_cast<int>(n), refined.range);
-    out.refined_agreement = d;
-    for (std::size_t i = 0; i < n; ++i)
-      if (std::isfinite(iou[i])) out.sensors[i].iou_refined = iou[i];
-  }
+  Recomputed mine = recompute(raster, cleaned, refined_sites, static_cast<int>(n), refined.range, frame, box, "refined sensors");
+  out.refined_diagram = std::move(mine.diagram);
+  out.refined_agreement = mine.agreement;
+  out.messages.insert(out.messages.end(), mine.messages.begin(), mine.messages.end());
+  for (std::size_t i = 0; i < n; ++i)
+    if (std::isfinite(mine.iou[i])) out.sensors[i].iou_refined = mine.iou[i];
   if (reported.empty()) return;
-  const std::vector<Site> rs = reported_sites(cells, refined_sites, reported_of, reported, scale, options);
-  out.reported_diagram = recomputed_diagram(rs, frame, box, out.messages, "reported sensors");
-  auto [d, iou] = agreement_of(raster, cleaned, rs, static_cast<int>(rs.size()), refined.range);
+  Recomputed theirs = reported_side.get();
+  out.reported_diagram = std::move(theirs.diagram);
+  out.messages.insert(out.messages.end(), theirs.messages.begin(), theirs.messages.end());
+  DiagramAgreement& d = theirs.agreement;
   // Names of appeared reported-only sensors.
   for (auto& name : d.appeared) {
     const int k = std::atoi(name.c_str());
@@ -125,7 +154,7 @@ void recomputed_diagrams(const MapCells& cells, const MapRaster& raster, const f
   }
   out.reported_agreement = d;
   for (std::size_t i = 0; i < n; ++i)
-    if (std::isfinite(iou[i])) out.sensors[i].iou_reported = iou[i];
+    if (std::isfinite(theirs.iou[i])) out.sensors[i].iou_reported = theirs.iou[i];
 }
 
 }  // namespace covmap::audit::stages
