@@ -1,0 +1,27 @@
+#include "io/json_number.h"
+
+#include <charconv>
+#include <cmath>
+#include <stdexcept>
+#include <string_view>
+
+namespace covmap::io {
+
+char* write_json_number(double value, char* out) {
+  if (!std::isfinite(value)) throw std::invalid_argument("write_json_number: JSON has no NaN or infinity");
+  // Without a format argument, to_chars picks the shorter of fixed and scientific notation and the
+  // fewest digits that round-trip.
+  const auto [end, error] = std::to_chars(out, out + kMaxJsonNumberChars - 2, value);
+  if (error != std::errc()) throw std::logic_error("write_json_number: kMaxJsonNumberChars is too small");
+  if (std::string_view(out, end - out).find_first_of(".e") != std::string_view::npos) return end;
+  end[0] = '.';
+  end[1] = '0';
+  return end + 2;
+}
+
+void append_json_number(std::string& out, double value) {
+  char buffer[kMaxJsonNumberChars];
+  out.append(buffer, write_json_number(value, buffer));
+}
+
+}  // namespace covmap::io
