@@ -52,6 +52,7 @@ class JsonScan {
   char peek();        // the next non-space character, '\0' at the end
 
   void expect_end();  // only whitespace may follow
+  std::size_t remaining() const { return text_.size() - at_; }  // bytes not read yet
 
   // Integer ids longer than this may not fit in 64 bits, where the reference reader changes type.
   static constexpr std::size_t kMaxIdDigits = 18;

@@ -1,7 +1,11 @@
 // The fast path of the covmap.sites/1 reader and of the "sites" array of arc graphs
 // (io/fast_readers.h).
 #include "io/fast_readers.h"
+
+#include <algorithm>
+
 #include "io/input_error.h"
+#include "io/input_limits.h"
 #include "io/json_fields.h"
 
 namespace covmap::io::detail {
@@ -47,7 +51,11 @@ SiteDraft scan_site(JsonScan& scan, std::size_t i) {
 }  // namespace
 
 std::vector<SiteDraft> scan_site_drafts(JsonScan& scan) {
+  // Room for as many sites as the rest of the text could hold, so that a million drafts are not
+  // moved again and again as the vector grows; the pages of unused room are never touched.
+  constexpr std::size_t kShortestSiteBytes = 30;  // {"id":1,"x":0,"y":0,"weight":1},
   std::vector<SiteDraft> drafts;
+  drafts.reserve(std::min(scan.remaining() / kShortestSiteBytes, kMaxSites + 1));
   scan.open('[');
   for (bool first = true; scan.next(']', first);) drafts.push_back(scan_site(scan, drafts.size()));
   return drafts;
