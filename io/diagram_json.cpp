@@ -1,9 +1,11 @@
+// The reference covmap.arcgraph/1 reader (nlohmann's DOM; the source of every error message) and
+// parse_diagram_json, which tries the fast path first (io/fast_readers.h). The writer is in
+// diagram_json_write.cpp.
 #include "io/diagram_json.h"
 
 #include <cmath>
-#include <ostream>
-#include <stdexcept>
 
+#include "io/fast_readers.h"
 #include "io/input_error.h"
 #include "io/input_limits.h"
 #include "io/json_fields.h"
@@ -16,87 +18,6 @@ namespace {
 
 using detail::FieldError;
 using detail::Json;
-// Ordered so the file reads in the documented member order.
-using Out = nlohmann::ordered_json;
-
-// ---- writing ----
-
-// JSON has no NaN or infinity. The first non-finite number in member order is named with its
-// path; paths are only made for it, not for every number written.
-void check(double v, const char* array, std::size_t i, const char* member) {
-  if (std::isfinite(v)) return;
-  throw std::invalid_argument("write_diagram_json: " + detail::element_path(array, i) + member + " is " +
-                              detail::format_number(v) + "; JSON cannot represent it");
-}
-
-void check_finite(const Diagram& d) {
-  for (std::size_t i = 0; i < d.sites.size(); ++i) {
-    check(d.sites[i].x, "sites", i, ".x");
-    check(d.sites[i].y, "sites", i, ".y");
-    check(d.sites[i].weight, "sites", i, ".weight");
-  }
-  for (std::size_t i = 0; i < d.nodes.size(); ++i) {
-    check(d.nodes[i].x, "nodes", i, ".x");
-    check(d.nodes[i].y, "nodes", i, ".y");
-  }
-  for (std::size_t i = 0; i < d.arcs.size(); ++i) {
-    if (const auto* c = std::get_if<Circle>(&d.arcs[i].curve)) {
-      check(c->cx, "arcs", i, ".circle.cx");
-      check(c->cy, "arcs", i, ".circle.cy");
-      check(c->r, "arcs", i, ".circle.r");
-    } else {
-      const auto& l = std::get<Line>(d.arcs[i].curve);
-      check(l.x, "arcs", i, ".line.x");
-      check(l.y, "arcs", i, ".line.y");
-      check(l.dx, "arcs", i, ".line.dx");
-      check(l.dy, "arcs", i, ".line.dy");
-    }
-  }
-  for (std::size_t i = 0; i < d.clip.size(); ++i) {
-    check(d.clip[i].x, "clip", i, "[0]");
-    check(d.clip[i].y, "clip", i, "[1]");
-  }
-}
-
-Out index_or_null(int i) { return i == kNone ? Out(nullptr) : Out(i); }
-
-Out arc_json(const Arc& arc) {
-  Out out;
-  out["from"] = index_or_null(arc.from);
-  out["to"] = index_or_null(arc.to);
-  if (const auto* c = std::get_if<Circle>(&arc.curve)) {
-    out["circle"] = Out{{"cx", c->cx}, {"cy", c->cy}, {"r", c->r}, {"ccw", arc.ccw}};
-  } else {
-    const auto& l = std::get<Line>(arc.curve);
-    out["line"] = Out{{"x", l.x}, {"y", l.y}, {"dx", l.dx}, {"dy", l.dy}};
-  }
-  out["sites"] = Out::array({index_or_null(arc.left_site), index_or_null(arc.right_site)});
-  if (arc.frame) out["frame"] = true;
-  return out;
-}
-
-Out face_json(const Diagram& d, const Face& face) {
-  Out boundaries = Out::array();
-  for (const auto cycle : face_cycles(d, face)) {
-    Out steps = Out::array();
-    for (const auto& half : cycle) steps.push_back(Out::array({half.arc, half.forward}));
-    boundaries.push_back(std::move(steps));
-  }
-  return Out{{"site", index_or_null(face.site)}, {"bounded", face.bounded}, {"orphan", face.orphan},
-             {"boundaries", std::move(boundaries)}};
-}
-
-// Writes `"name":[` + one element per line + `]`, so a diff shows which arc changed. Each element
-// is made, written and dropped in turn (issue 16): holding the whole diagram as a JSON document
-// first cost about 3 GiB at 10^6 sites, more than the engine itself.
-template <class MakeElement>
-void write_array(std::ostream& out, std::string_view name, std::size_t count, MakeElement&& element, bool last) {
-  out << '"' << name << "\":[";
-  for (std::size_t i = 0; i < count; ++i) out << (i == 0 ? "\n  " : ",\n  ") << element(i).dump();
-  out << (count == 0 ? "]" : "\n]") << (last ? "\n" : ",\n");
-}
-
-// ---- reading ----
 
 struct Reader {
   const Json& root;
@@ -230,25 +151,9 @@ struct Reader {
 
 }  // namespace
 
-void write_diagram_json(const Diagram& d, std::ostream& out) {
-  // A non-finite number anywhere throws before the first byte is written (the caller's stream
-  // then holds nothing half-made).
-  check_finite(d);
-  out << "{\"format\":\"covmap.arcgraph/1\",\n";
-  write_array(out, "sites", d.sites.size(), [&](std::size_t i) {
-    const auto& s = d.sites[i];
-    Out site{{"id", s.id}, {"x", s.x}, {"y", s.y}, {"weight", s.weight}};
-    if (!s.name.empty()) site["name"] = s.name;
-    return site;
-  }, false);
-  write_array(out, "nodes", d.nodes.size(), [&](std::size_t i) { return Out{{"x", d.nodes[i].x}, {"y", d.nodes[i].y}}; }, false);
-  write_array(out, "arcs", d.arcs.size(), [&](std::size_t i) { return arc_json(d.arcs[i]); }, false);
-  write_array(out, "faces", d.faces.size(), [&](std::size_t i) { return face_json(d, d.faces[i]); }, false);
-  write_array(out, "clip", d.clip.size(), [&](std::size_t i) { return Out::array({d.clip[i].x, d.clip[i].y}); }, true);
-  out << "}\n";
-}
+namespace detail {
 
-Diagram parse_diagram_json(std::string_view text, const std::string& file, ArcLabels labels) {
+Diagram parse_diagram_json_reference(std::string_view text, const std::string& file, ArcLabels labels) {
   const Json root = detail::parse_json(text, file);
   detail::check_format_tag(root, "covmap.arcgraph/1", file);
   if (labels == ArcLabels::kOptional) {
@@ -277,6 +182,13 @@ Diagram parse_diagram_json(std::string_view text, const std::string& file, ArcLa
                                       std::to_string(kMaxSites) + " sites and " + std::to_string(kMaxGraphItems) +
                                       " nodes and arcs together (docs/RELIABILITY.md)");
   return std::move(reader.diagram);
+}
+
+}  // namespace detail
+
+Diagram parse_diagram_json(std::string_view text, const std::string& file, ArcLabels labels) {
+  if (auto fast = detail::parse_diagram_json_fast(text, labels)) return std::move(*fast);
+  return detail::parse_diagram_json_reference(text, file, labels);
 }
 
 Diagram read_diagram_json(const std::filesystem::path& path, ArcLabels labels) {

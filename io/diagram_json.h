@@ -11,11 +11,14 @@
 //    "clip":[[x,y], ...]}
 // null stands for kNone. Orientation conventions are those of core/diagram.h.
 //
-// Writing: every double is written in the shortest form that reads back to the same bits, so
-// write -> read reproduces the Diagram exactly. A non-finite number cannot be written (JSON has
+// Writing: every double is written in the shortest form that reads back to the same bits
+// (io/json_number.h: always with a fraction or an exponent, "10.0", "1e+16"), so write -> read
+// reproduces the Diagram exactly. A non-finite number cannot be written (JSON has
 // none) and makes write_diagram_json throw std::invalid_argument naming the JSON path.
 //
-// Reading: "faces" and "clip" are optional (graphs from other tools often have neither); unknown
+// Reading: a one-pass reader takes well-formed files; anything else, and every error, goes to the
+// reference reader built on nlohmann's DOM (io/fast_readers.h), so the messages are the same.
+// "faces" and "clip" are optional (graphs from other tools often have neither); unknown
 // members are ignored. The reader checks what a consumer would otherwise crash on or misread, and
 // throws InputError with the JSON path ("arcs[12].to: node index 99 out of range (41 nodes)"):
 //   the format tag; sites as in read_sites (ids unique, positions distinct, weights > 0);
@@ -35,6 +38,12 @@
 namespace covmap::io {
 
 void write_diagram_json(const Diagram& diagram, std::ostream& out);
+
+// The same text as a string, for callers that render every output before writing any (the CLI's
+// atomic writes). Its capacity is reserved once from an upper bound on the length, so a large graph
+// costs no reallocation: growing a string by doubling cost more than formatting it (issue 16).
+// Throws as write_diagram_json.
+std::string diagram_json_text(const Diagram& diagram);
 
 // kRequired: a diagram, sites and labels checked as above. kIgnored: an arc graph whose sites are
 // unknown (the input of recognition and comparison): "sites", the arcs' "sites" and "faces" may be

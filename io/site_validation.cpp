@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <string_view>
 #include <unordered_map>
 
 #include "io/text_util.h"
@@ -32,7 +33,9 @@ namespace {
 std::string reference(const SiteDraft& other) { return "site " + quote_id(other.site.id) + " (" + other.origin + ")"; }
 
 void check_unique_ids(std::vector<SiteDraft>& drafts) {
-  std::unordered_map<std::string, std::size_t> first;
+  // Views into the drafts' own ids (no copies: a million sites would be a million strings more).
+  std::unordered_map<std::string_view, std::size_t> first;
+  first.reserve(drafts.size());
   for (std::size_t i = 0; i < drafts.size(); ++i) {
     if (drafts[i].site.id.empty()) continue;  // already reported as missing
     const auto [it, inserted] = first.emplace(drafts[i].site.id, i);
@@ -43,21 +46,28 @@ void check_unique_ids(std::vector<SiteDraft>& drafts) {
 void check_unique_positions(std::vector<SiteDraft>& drafts) {
   // Exact equality only: nearly coincident sites are legal input, and deciding how near is too near
   // belongs to the engine's tolerances, not to the file reader.
-  std::vector<std::size_t> order;
+  struct Position {
+    double x, y;
+    std::size_t index;  // the tie-break keeps file order within a position: the first is reported against
+    auto operator<=>(const Position&) const = default;
+  };
+  // Sorted as compact records, not as indices into the drafts (whose scattered reads made this the
+  // slowest part of reading a million sites).
+  std::vector<Position> order;
+  order.reserve(drafts.size());
   for (std::size_t i = 0; i < drafts.size(); ++i) {
-    if (drafts[i].usable()) order.push_back(i);
+    if (drafts[i].usable()) order.push_back({drafts[i].site.x, drafts[i].site.y, i});
   }
-  const auto key = [&](std::size_t i) { return std::pair(drafts[i].site.x, drafts[i].site.y); };
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return key(a) < key(b); });
+  std::sort(order.begin(), order.end());
   std::size_t run_start = 0;  // first site (in sorted order) at the current position
   for (std::size_t k = 1; k < order.size(); ++k) {
-    if (key(order[k]) != key(order[run_start])) {
+    if (order[k].x != order[run_start].x || order[k].y != order[run_start].y) {
       run_start = k;
       continue;
     }
-    const auto& s = drafts[order[k]].site;
-    drafts[order[k]].problems.push_back("same position (" + format_number(s.x) + ", " + format_number(s.y) + ") as " +
-                                        reference(drafts[order[run_start]]));
+    const auto& s = drafts[order[k].index].site;
+    drafts[order[k].index].problems.push_back("same position (" + format_number(s.x) + ", " + format_number(s.y) +
+                                              ") as " + reference(drafts[order[run_start].index]));
   }
 }
 

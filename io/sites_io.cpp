@@ -2,12 +2,15 @@
 
 #include <cctype>
 #include <cmath>
+#include <optional>
 #include <ostream>
 #include <stdexcept>
 
+#include "io/fast_readers.h"
 #include "io/input_error.h"
 #include "io/input_limits.h"
 #include "io/json_fields.h"
+#include "io/json_out.h"
 #include "io/site_parsers.h"
 #include "io/text_util.h"
 
@@ -29,7 +32,11 @@ SitesFormat detect(const std::filesystem::path& path, std::string_view text) {
 
 SiteTable parse_sites(std::string_view text, const std::string& file, SitesFormat format) {
   if (format == SitesFormat::kDetect) format = detect(file, text);
-  SiteTable table = format == SitesFormat::kJson ? detail::parse_sites_json(text, file) : detail::parse_sites_csv(text, file);
+  std::optional<SiteTable> fast;
+  if (format == SitesFormat::kJson) fast = detail::parse_sites_json_fast(text);  // io/fast_readers.h
+  SiteTable table = fast                            ? std::move(*fast)
+                    : format == SitesFormat::kJson ? detail::parse_sites_json(text, file)
+                                                   : detail::parse_sites_csv(text, file);
   if (table.sites.size() > kMaxSites)
     throw InputError(file, 0, "", std::to_string(table.sites.size()) + " sites; covmap takes at most " +
                                       std::to_string(kMaxSites) + " (docs/RELIABILITY.md)");
@@ -40,22 +47,45 @@ SiteTable read_sites(const std::filesystem::path& path, SitesFormat format) {
   return parse_sites(detail::read_text_file(path), path.string(), format);
 }
 
-void write_sites_json(const std::vector<Site>& sites, std::ostream& out) {
-  // One site per line: readable, diffable, and still valid JSON. nlohmann writes doubles in the
-  // shortest form that reads back to the same bits.
-  out << "{\"format\":\"covmap.sites/1\",\"sites\":[";
-  for (std::size_t i = 0; i < sites.size(); ++i) {
-    const auto& s = sites[i];
+void write_sites_json(const std::vector<Site>& sites, std::ostream& stream) {
+  // JSON cannot hold NaN or infinity; refuse before the first byte rather than write a file that
+  // read_sites rejects.
+  for (const auto& s : sites) {
     for (const double v : {s.x, s.y, s.weight}) {
-      // JSON cannot hold NaN or infinity (nlohmann would write null); refuse rather than write a
-      // file that read_sites rejects.
       if (!std::isfinite(v)) throw std::invalid_argument("write_sites_json: site '" + s.id + "' has a non-finite value");
     }
-    nlohmann::ordered_json site = {{"id", s.id}, {"x", s.x}, {"y", s.y}, {"weight", s.weight}};
-    if (!s.name.empty()) site["name"] = s.name;
-    out << (i == 0 ? "\n  " : ",\n  ") << site.dump();
+    for (const std::string* text : {&s.id, &s.name}) {
+      if (!detail::valid_json_text(*text)) throw std::invalid_argument("write_sites_json: site '" + s.id + "' has text that is not UTF-8");
+    }
   }
-  out << (sites.empty() ? "]}\n" : "\n]}\n");
+  // One site per line: readable, diffable, and still valid JSON; numbers as in json_number.h.
+  detail::JsonOut out(stream);
+  out.raw("{\"format\":\"covmap.sites/1\",\"sites\":[");
+  for (std::size_t i = 0; i < sites.size(); ++i) {
+    out.raw(i == 0 ? "\n  " : ",\n  ");
+    detail::write_site_json(out, sites[i]);
+  }
+  out.raw(sites.empty() ? "]}\n" : "\n]}\n");
+  out.flush();
 }
 
+namespace detail {
+
+void write_site_json(JsonOut& out, const Site& s) {
+  out.raw("{\"id\":");
+  out.string(s.id);
+  out.raw(",\"x\":");
+  out.number(s.x);
+  out.raw(",\"y\":");
+  out.number(s.y);
+  out.raw(",\"weight\":");
+  out.number(s.weight);
+  if (!s.name.empty()) {
+    out.raw(",\"name\":");
+    out.string(s.name);
+  }
+  out.raw("}");
+}
+
+}  // namespace detail
 }  // namespace covmap::io

@@ -1,0 +1,47 @@
+// The fast paths of the covmap.sites/1 and covmap.arcgraph/1 readers, and the reference readers
+// they fall back on (internal to io/; issue 16).
+//
+// parse_sites and parse_diagram_json first try the fast path: one pass over the text with
+// JsonScan, filling the result directly, holding every rule the reference reader holds. It
+// returns nothing (std::nullopt) as soon as anything is out of the ordinary: a JSON construct
+// outside JsonScan's subset, a member out of the order it needs (arcs before nodes, sites after
+// arcs when they label them, faces before arcs), a duplicated member, any failed check. The
+// reference reader (nlohmann's DOM and json_fields.h) then reads the text again, and is the only
+// one that reports errors, so every message is the reference's. The contract tested in
+// tests/io/fast_readers_test.cpp: whenever the fast path returns a result, the reference returns
+// the identical result (bit for bit) for the same text.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/diagram.h"
+#include "io/diagram_json.h"
+#include "io/json_scan.h"
+#include "io/site_validation.h"
+#include "io/sites_io.h"
+
+namespace covmap::io::detail {
+
+std::optional<SiteTable> parse_sites_json_fast(std::string_view text);
+std::optional<Diagram> parse_diagram_json_fast(std::string_view text, ArcLabels labels);
+
+// The reference arc graph reader (the sites one is parse_sites_json in site_parsers.h).
+Diagram parse_diagram_json_reference(std::string_view text, const std::string& file, ArcLabels labels);
+
+// The elements of a "sites" array, each checked as one site (check_site_values); misses on any
+// problem. Empty when the array is.
+std::vector<SiteDraft> scan_site_drafts(JsonScan& scan);
+// finish_sites, missing instead of throwing.
+SiteTable finish_sites_or_miss(std::vector<SiteDraft> drafts);
+
+// Marks a known member as seen, missing on a repeat: the reference keeps the last of duplicated
+// members, which a one-pass reader cannot do.
+inline void first_time(unsigned& seen, unsigned bit) {
+  if (seen & bit) throw FastPathMiss{};
+  seen |= bit;
+}
+
+}  // namespace covmap::io::detail
