@@ -7,6 +7,12 @@
 // angular sorting of algebraic points and no tolerance. The walk is projective: rays end at
 // points at infinity, and for equal weights (vertical facets) the conic touches the line at
 // infinity at the vertical direction U, where unbounded arcs end.
+//
+// The triangulation is read once, in CGAL's cell order, into flat arrays (per cell its four site
+// indices and four neighbour ids) and released: every later pass, the edge walks included, reads
+// those arrays only. Nothing is decided differently: the arrays hold the same cells, vertices and
+// neighbours, the walks turn around each edge as CGAL's cell circulator does
+// (Triangulation_utils_3::next_around_edge), and every point is rebuilt from the same doubles.
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -17,6 +23,7 @@
 #include "voronoi/engine/readable_arcs.h"
 #include "voronoi/engine/self_check.h"
 #include "voronoi/engine/triple_node.h"
+#include "core/large_buffer.h"
 #include "core/parallel.h"
 #include "voronoi/tolerances.h"
 
@@ -24,15 +31,26 @@ namespace covmap::voronoi::engine {
 namespace {
 
 using RT = RegularTriangulation;
-using Cell = RT::Cell_handle;
-using Vertex = RT::Vertex_handle;
+
+inline constexpr int kInfiniteSite = -1;  // the infinite vertex in FlatCell::site
+
+// One cell of the triangulation: its vertices (site indices, kInfiniteSite for the infinite vertex)
+// and, opposite vertex k, its neighbour's id. 32 bytes, against CGAL's ~100 reached by pointers.
+struct FlatCell {
+  std::array<int, 4> site;
+  std::array<int, 4> neighbor;
+};
 
 // Per cell: its power vertex (finite cells) or outward ray direction (infinite cells).
 struct CellData {
   Homog<Approx> v{};
-  bool valid = false;    // v usable (else recompute with intervals or exactly when needed)
-  bool zero = false;     // the vertex is a zero point: on the paraboloid, or the direction U
-  bool infinite = false;
+  bool valid = false;  // v usable (else recompute with intervals or exactly when needed)
+};
+
+// Per cell flags, apart from the power vertices: the walks read only these.
+enum CellFlag : std::uint8_t {
+  kInfiniteCell = 1,
+  kZeroVertex = 2,  // the vertex is a zero point: on the paraboloid, or the direction U
 };
 
 class SpatialExtractor {
@@ -58,12 +76,13 @@ class SpatialExtractor {
   Diagram& out_;
   BuildStats& stats_;
 
-  std::vector<Cell> cells_;
-  std::vector<CellData> data_;
-  std::vector<EdgePattern> facet_;  // 4 per cell, oriented from the cell towards its neighbour
-  std::vector<int> facet_node_;     // 2 per facet entry: node ids of its interior zero points
-  std::vector<int> uf_;             // union-find: cells sharing one power vertex on the paraboloid
-  std::vector<int> vertex_node_;    // node id of a zero vertex, by union-find root
+  LargeVector<FlatCell> cells_;
+  LargeVector<CellData> data_;
+  LargeVector<std::uint8_t> flags_;
+  LargeVector<EdgePattern> facet_;  // 4 per cell, oriented from the cell towards its neighbour
+  LargeVector<int> facet_node_;     // 2 per facet entry: node ids of its interior zero points
+  LargeVector<int> uf_;             // union-find: cells sharing one power vertex on the paraboloid
+  LargeVector<int> vertex_node_;    // node id of a zero vertex, by union-find root
   std::vector<std::array<int, 3>> node_facet_;  // per root node: the sites of its facet
   std::vector<AlongLine> node_root_;            // per root node: which root of its facet's line
   int workers_ = 1;
@@ -78,34 +97,69 @@ class SpatialExtractor {
     return c;
   }
 
+  bool infinite(int c) const { return flags_[c] & kInfiniteCell; }
+  bool zero(int c) const { return flags_[c] & kZeroVertex; }
+
+  // The site as the triangulation stores it: (x, y, w), the same doubles.
+  RawPoint raw(int site) const { return RawPoint(sites_[site].x, sites_[site].y, sites_[site].weight); }
+
+  // Index in cell c of vertex `site` / of neighbour n (c->index(v), c->index(n) in CGAL).
+  int index_of_site(int c, int site) const {
+    const std::array<int, 4>& s = cells_[c].site;
+    return s[0] == site ? 0 : s[1] == site ? 1 : s[2] == site ? 2 : 3;
+  }
+  int index_of_neighbor(int c, int n) const {
+    const std::array<int, 4>& s = cells_[c].neighbor;
+    return s[0] == n ? 0 : s[1] == n ? 1 : s[2] == n ? 2 : 3;
+  }
+  // The vertex of c's neighbour across facet f that is not on that facet.
+  int site_beyond(int c, int f) const {
+    const int n = cells_[c].neighbor[f];
+    return cells_[n].site[index_of_neighbor(n, c)];
+  }
+
   // The finite facet of an infinite cell, and the far vertex of the finite cell behind it.
-  void ray_sites(Cell c, std::array<RawPoint, 3>& tri, RawPoint& away) const {
-    const int inf = c->index(rt_.infinite_vertex());
+  void ray_sites(int c, std::array<RawPoint, 3>& tri, RawPoint& away) const {
+    const int inf = index_of_site(c, kInfiniteSite);
     for (int k = 0, m = 0; k < 4; ++k)
-      if (k != inf) tri[m++] = c->vertex(k)->point().point();
-    Cell n = c->neighbor(inf);
-    away = n->vertex(n->index(c))->point().point();
+      if (k != inf) tri[m++] = raw(cells_[c].site[k]);
+    away = raw(site_beyond(c, inf));
   }
 
   template <class NT>
-  std::optional<Homog<NT>> cell_point(Cell c) const {
-    if (rt_.is_infinite(c)) {
+  std::optional<Homog<NT>> cell_point(int c) const {
+    if (infinite(c)) {
       std::array<RawPoint, 3> tri;
       RawPoint away;
       ray_sites(c, tri, away);
       return power_ray_direction<NT>(tri, away);
     }
     std::array<RawPoint, 4> s;
-    for (int k = 0; k < 4; ++k) s[k] = c->vertex(k)->point().point();
+    for (int k = 0; k < 4; ++k) s[k] = raw(cells_[c].site[k]);
     return power_vertex<NT>(s);
   }
 
-  void compute_cells() {
+  // The flat copy of the triangulation, in CGAL's cell order; then the triangulation is released.
+  void copy_triangulation() {
+    cells_.resize(rt_.tds().number_of_cells());
+    flags_.assign(cells_.size(), 0);
     int id = 0;
-    for (auto c = rt_.all_cells_begin(); c != rt_.all_cells_end(); ++c) {
-      c->info() = id++;
-      cells_.push_back(c);
+    for (auto c = rt_.all_cells_begin(); c != rt_.all_cells_end(); ++c) c->info() = id++;
+    id = 0;
+    for (auto c = rt_.all_cells_begin(); c != rt_.all_cells_end(); ++c, ++id) {
+      FlatCell& f = cells_[id];
+      for (int k = 0; k < 4; ++k) {
+        const RT::Vertex_handle v = c->vertex(k);
+        f.site[k] = rt_.is_infinite(v) ? kInfiniteSite : site_of(v);
+        f.neighbor[k] = c->neighbor(k)->info();
+      }
+      if (rt_.is_infinite(c)) flags_[id] = kInfiniteCell;
     }
+    rt_.clear();
+  }
+
+  void compute_cells() {
+    copy_triangulation();
     data_.resize(cells_.size());
     uf_.resize(cells_.size());
     std::iota(uf_.begin(), uf_.end(), 0);
@@ -116,40 +170,41 @@ class SpatialExtractor {
     parallel_chunks(cells_.size(), workers_, [&](std::size_t begin, std::size_t end, int w) {
       for (std::size_t k = begin; k < end; ++k) {
         CellData& d = data_[k];
-        d.infinite = rt_.is_infinite(cells_[k]);
+        const int c = static_cast<int>(k);
+        const bool inf = infinite(c);
         std::optional<bool> zero;
-        if (auto p = cell_point<Approx>(cells_[k])) {
+        if (auto p = cell_point<Approx>(c)) {
           d.v = *p;
           d.valid = true;
-          zero = is_zero_point(*p, d.infinite);
+          zero = is_zero_point(*p, inf);
         }
         if (!zero) {
           CGAL::Protect_FPU_rounding<true> guard;
-          if (auto p = cell_point<Interval>(cells_[k])) zero = is_zero_point(*p, d.infinite);
+          if (auto p = cell_point<Interval>(c)) zero = is_zero_point(*p, inf);
         }
         if (!zero) {
           ++fallbacks[w];
-          zero = is_zero_point(*cell_point<Exact>(cells_[k]), d.infinite);
+          zero = is_zero_point(*cell_point<Exact>(c), inf);
         }
-        d.zero = *zero;
+        if (*zero) flags_[k] |= kZeroVertex;
       }
     });
     for (std::size_t f : fallbacks) stats_.exact_fallbacks += f;
   }
 
   template <class NT>
-  std::optional<EdgePattern> facet_pattern(Cell a, Cell b) const {
+  std::optional<EdgePattern> facet_pattern(int a, int b) const {
     std::optional<Homog<NT>> pa, pb;
     if constexpr (std::is_same_v<NT, Approx>) {
-      if (!data_[a->info()].valid || !data_[b->info()].valid) return std::nullopt;
-      pa = data_[a->info()].v;
-      pb = data_[b->info()].v;
+      if (!data_[a].valid || !data_[b].valid) return std::nullopt;
+      pa = data_[a].v;
+      pb = data_[b].v;
     } else {
       pa = cell_point<NT>(a);
       pb = cell_point<NT>(b);
       if (!pa || !pb) return std::nullopt;
     }
-    return edge_pattern_projective(*pa, *pb, data_[a->info()].infinite, data_[b->info()].infinite);
+    return edge_pattern_projective(*pa, *pb, infinite(a), infinite(b));
   }
 
   void compute_facets() {
@@ -162,27 +217,26 @@ class SpatialExtractor {
     std::vector<std::size_t> fallbacks(workers_, 0);
     parallel_chunks(cells_.size(), workers_, [&](std::size_t begin, std::size_t end, int w) {
       for (std::size_t k = begin; k < end; ++k) {
-        Cell c = cells_[k];
+        const int c = static_cast<int>(k);
         for (int f = 0; f < 4; ++f) {
-          Cell n = c->neighbor(f);
-          const int nk = n->info();
-          if (nk < static_cast<int>(k)) continue;
-          std::optional<EdgePattern> p = facet_pattern<Approx>(c, n);
+          const int nk = cells_[k].neighbor[f];
+          if (nk < c) continue;
+          std::optional<EdgePattern> p = facet_pattern<Approx>(c, nk);
           if (!p) {
             CGAL::Protect_FPU_rounding<true> guard;
-            p = facet_pattern<Interval>(c, n);
+            p = facet_pattern<Interval>(c, nk);
           }
           if (!p) {
             ++fallbacks[w];
-            p = facet_pattern<Exact>(c, n);
+            p = facet_pattern<Exact>(c, nk);
           }
-          const int mirror = n->index(c);
+          const int mirror = index_of_neighbor(nk, c);
           EdgePattern& fwd = facet_[4 * k + f];
           EdgePattern& bwd = facet_[4 * nk + mirror];
           fwd = *p;
           bwd = *p;
           std::reverse(bwd.sign, bwd.sign + p->roots + 1);
-          if (p->empty && data_[k].zero && data_[nk].zero)
+          if (p->empty && zero(c) && zero(nk))
             unions[w].emplace_back(static_cast<int>(k), nk);
         }
       }
@@ -197,16 +251,15 @@ class SpatialExtractor {
     std::vector<Job> jobs;
     int next = static_cast<int>(out_.nodes.size());
     for (std::size_t k = 0; k < cells_.size(); ++k) {
-      Cell c = cells_[k];
+      const int c = static_cast<int>(k);
       for (int f = 0; f < 4; ++f) {
-        Cell n = c->neighbor(f);
-        const int nk = n->info();
-        if (nk < static_cast<int>(k)) continue;
+        const int nk = cells_[k].neighbor[f];
+        if (nk < c) continue;
         const EdgePattern& p = facet_[4 * k + f];
         if (p.empty || p.roots == 0) continue;
         // On an edge at infinity (between two directions) the only possible zero is U.
-        const bool at_infinity = data_[k].infinite && data_[nk].infinite;
-        const int mirror = n->index(c);
+        const bool at_infinity = infinite(c) && infinite(nk);
+        const int mirror = index_of_neighbor(nk, c);
         for (int r = 0; r < p.roots; ++r) {
           int node = kInfinityNode;
           if (!at_infinity) {
@@ -230,7 +283,7 @@ class SpatialExtractor {
     for (std::size_t e : exact_nodes) stats_.exact_nodes += e;
     // Zero vertices get their nodes now, so the walks only read.
     for (std::size_t k = 0; k < cells_.size(); ++k)
-      if (data_[k].zero) vertex_zero_node(static_cast<int>(k));
+      if (zero(static_cast<int>(k))) vertex_zero_node(static_cast<int>(k));
   }
 
   // Facets whose lifted sites are coplanar and co-circular share one power line, so each of its
@@ -298,43 +351,42 @@ class SpatialExtractor {
   }
 
   void place_root_node(int cell, int f, int r, int node, std::size_t& exact_nodes) {
-    Cell c = cells_[cell];
-    Cell n = c->neighbor(f);
     const EdgePattern& p = facet_[4 * cell + f];
     std::array<int, 3> tri;
-    std::array<RawPoint, 3> raw;
+    std::array<RawPoint, 3> points;
     for (int k = 0, m = 0; k < 4; ++k)
       if (k != f) {
-        tri[m] = site_of(c->vertex(k));
-        raw[m++] = c->vertex(k)->point().point();
+        tri[m] = cells_[cell].site[k];
+        points[m] = raw(tri[m]);
+        ++m;
       }
     // The travel from c's power vertex to n's leaves c (its fourth site falls behind) or, when c is
     // infinite, reaches the finite cell n from infinity.
-    const bool c_finite = !data_[cell].infinite;
-    const RawPoint away = c_finite ? c->vertex(f)->point().point() : n->vertex(n->index(c))->point().point();
-    const int sigma = travel_sign(raw, away, c_finite);
+    const bool c_finite = !infinite(cell);
+    const RawPoint away = raw(c_finite ? cells_[cell].site[f] : site_beyond(cell, f));
+    const int sigma = travel_sign(points, away, c_finite);
     bool exact = false;
     const AlongLine which = wanted_root(p, r, sigma);
-    out_.nodes[node] = triple_node(raw, which, extent_, &exact);
+    out_.nodes[node] = triple_node(points, which, extent_, &exact);
     exact_nodes += exact;
     node_facet_[node] = tri;
     node_root_[node] = which;
   }
 
   int vertex_zero_node(int cell) {
-    if (data_[cell].infinite) return kInfinityNode;
+    if (infinite(cell)) return kInfinityNode;
     const int root = find(cell);
     if (vertex_node_[root] != kNone) return vertex_node_[root];
-    auto v = cell_point<Exact>(cells_[root]);
+    auto v = cell_point<Exact>(root);
     const double w = CGAL::to_double(v->W);
     out_.nodes.push_back(Node{CGAL::to_double(v->X) / w, CGAL::to_double(v->Y) / w});
     return vertex_node_[root] = static_cast<int>(out_.nodes.size()) - 1;
   }
 
-  // True when the circulator turns counter-clockwise around c_j - c_i. Cells are positively
-  // oriented, so orientation(c_i, c_j, c_prev, c_next) is the parity of that vertex permutation.
-  static bool circulates_ccw(Cell c, int ii, int ij, Cell next) {
-    const int prev_third = c->index(next);  // the vertex off the facet shared with `next`
+  // True when the ring turns counter-clockwise around c_j - c_i. Cells are positively oriented, so
+  // orientation(c_i, c_j, c_prev, c_next) is the parity of that vertex permutation.
+  bool circulates_ccw(int c, int ii, int ij, int next) const {
+    const int prev_third = index_of_neighbor(c, next);  // the vertex off the facet shared with `next`
     const int next_third = 6 - ii - ij - prev_third;
     const int perm[4] = {ii, ij, prev_third, next_third};
     int inversions = 0;
@@ -346,10 +398,10 @@ class SpatialExtractor {
   // Each triangulation edge is walked once. Workers take contiguous ranges of cells; a worker meeting
   // an edge not yet marked in its own marks circulates it, marks it in every cell of the ring, and
   // walks it only if the ring's lowest-id finite cell is in its range — so exactly one worker walks each
-  // edge, without shared state (CGAL's finite_edges iterator would circulate every edge too).
+  // edge, without shared state.
   struct WalkState {
-    std::vector<std::uint8_t> done;  // per cell, bit local_edge(i, j)
-    std::vector<Cell> ring;
+    LargeVector<std::uint8_t> done;  // per cell, bit local_edge(i, j)
+    std::vector<int> ring;
     std::vector<Token> tokens;
     WalkScratch scratch;
     std::vector<Arc> arcs;
@@ -363,12 +415,12 @@ class SpatialExtractor {
       WalkState& st = states[w];
       st.done.assign(cells_.size(), 0);
       st.arcs.reserve(3 * sites_.size() / workers_ + 16);
+      st.mends.reserve(3 * sites_.size() / workers_ + 16);
       for (std::size_t k = begin; k < end; ++k) {
-        Cell c = cells_[k];
-        if (data_[k].infinite) continue;
+        if (infinite(static_cast<int>(k))) continue;
         for (int i = 0; i < 4; ++i)
           for (int j = i + 1; j < 4; ++j)
-            if (!(st.done[k] & (1u << local_edge(i, j)))) walk_edge(st, c, i, j, begin, end);
+            if (!(st.done[k] & (1u << local_edge(i, j)))) walk_edge(st, static_cast<int>(k), i, j, begin, end);
       }
     });
     std::size_t total = out_.arcs.size();
@@ -382,37 +434,46 @@ class SpatialExtractor {
     apply_mends(out_, mends_);
   }
 
-  void walk_edge(WalkState& st, Cell c0, int i0, int j0, std::size_t begin, std::size_t end) {
-    Vertex vi = c0->vertex(i0), vj = c0->vertex(j0);
-    std::vector<Cell>& ring = st.ring;
+  // The cells around the edge (vi, vj) of cell c0, in the order of CGAL's cell circulator
+  // incident_cells(c0, i0, j0), each marked as done for this edge; returns the lowest-id finite one.
+  int circulate(WalkState& st, int c0, int vi, int vj) const {
+    std::vector<int>& ring = st.ring;
     ring.clear();
-    auto circ = rt_.incident_cells(c0, i0, j0), done = circ;
-    int lowest = c0->info();
+    int lowest = c0;
+    int c = c0;
     do {
-      ring.push_back(circ);
-      Cell c = circ;
-      if (!data_[c->info()].infinite) lowest = std::min(lowest, c->info());  // walks start finite
-      st.done[c->info()] |= static_cast<std::uint8_t>(1u << local_edge(c->index(vi), c->index(vj)));
-    } while (++circ != done);
+      ring.push_back(c);
+      if (!infinite(c)) lowest = std::min(lowest, c);  // walks start finite
+      const int ii = index_of_site(c, vi), ij = index_of_site(c, vj);
+      st.done[c] |= static_cast<std::uint8_t>(1u << local_edge(ii, ij));
+      c = cells_[c].neighbor[CGAL::Triangulation_utils_3::next_around_edge(ii, ij)];
+    } while (c != c0);
+    return lowest;
+  }
+
+  void walk_edge(WalkState& st, int c0, int i0, int j0, std::size_t begin, std::size_t end) {
+    const int vi = cells_[c0].site[i0], vj = cells_[c0].site[j0];
+    const int lowest = circulate(st, c0, vi, vj);
     if (lowest < static_cast<int>(begin) || lowest >= static_cast<int>(end)) return;
+    const std::vector<int>& ring = st.ring;
     const std::size_t m = ring.size();
     bool ccw = true;
     for (std::size_t p = 0; p < m; ++p) {
-      if (rt_.is_infinite(ring[p])) continue;
-      ccw = circulates_ccw(ring[p], ring[p]->index(vi), ring[p]->index(vj), ring[(p + 1) % m]);
+      if (infinite(ring[p])) continue;
+      ccw = circulates_ccw(ring[p], index_of_site(ring[p], vi), index_of_site(ring[p], vj), ring[(p + 1) % m]);
       break;
     }
     std::vector<Token>& tokens = st.tokens;
     tokens.clear();
     for (std::size_t p = 0; p < m; ++p) {
-      Cell c = ring[p];
-      const int f = c->index(ring[(p + 1) % m]);
-      if (data_[c->info()].zero) tokens.push_back({vertex_zero_node(c->info()), 0});
-      const EdgePattern& pat = facet_[4 * c->info() + f];
+      const int c = ring[p];
+      const int f = index_of_neighbor(c, ring[(p + 1) % m]);
+      if (zero(c)) tokens.push_back({vertex_zero_node(c), 0});
+      const EdgePattern& pat = facet_[4 * c + f];
       if (pat.empty) continue;
       tokens.push_back({kNone, pat.sign[0]});
       for (int r = 0; r < pat.roots; ++r) {
-        tokens.push_back({facet_node_[2 * (4 * c->info() + f) + r], 0});
+        tokens.push_back({facet_node_[2 * (4 * c + f) + r], 0});
         tokens.push_back({kNone, pat.sign[r + 1]});
       }
     }
@@ -421,19 +482,19 @@ class SpatialExtractor {
     auto link = [&]() -> const std::vector<RawPoint>& {
       if (!have_link) {
         st.link.clear();
-        for (Cell c : ring)
+        for (int c : ring)
           for (int k = 0; k < 4; ++k) {
-            Vertex v = c->vertex(k);
-            if (v != vi && v != vj && !rt_.is_infinite(v)) st.link.push_back(v->point().point());
+            const int v = cells_[c].site[k];
+            if (v != vi && v != vj && v != kInfiniteSite) st.link.push_back(raw(v));
           }
         have_link = true;
       }
       return st.link;
     };
     const std::size_t first = st.arcs.size();
-    emit_arcs(tokens, st.scratch, site_of(vi), site_of(vj), sites_, st.arcs, [&] {
-      if (vi->point().point().z() == vj->point().point().z()) return false;  // U would show
-      return circle_centre_in_facet(vi->point().point(), vj->point().point(), link());
+    emit_arcs(tokens, st.scratch, vi, vj, sites_, st.arcs, [&] {
+      if (sites_[vi].weight == sites_[vj].weight) return false;  // U would show
+      return circle_centre_in_facet(raw(vi), raw(vj), link());
     });
     for (std::size_t k = first; k < st.arcs.size(); ++k)
       st.mends.push_back(ends_within_rounding(st.arcs[k], out_.nodes, sites_, extent_)
