@@ -298,6 +298,7 @@ class SpatialExtractor {
       }
     });
     for (std::size_t f : fallbacks) stats_.exact_fallbacks += f;
+    LargeVector<CellData>().swap(data_);  // the approximate vertices are not read again
     // Applied in CGAL's cell order, so that each class has the root it had there: its vertex is
     // rounded from that cell's homogeneous coordinates.
     std::vector<Union> all;
@@ -472,9 +473,9 @@ class SpatialExtractor {
     std::vector<int> ring;
     std::vector<Token> tokens;
     WalkScratch scratch;
-    std::vector<Arc> arcs;
-    std::vector<ArcMend> mends;  // one per arc
-    std::vector<EdgeArcs> edges;  // the walks that emitted arcs
+    LargeVector<Arc> arcs;  // large buffers: they reuse the blocks released by earlier stages
+    LargeVector<ArcMend> mends;  // one per arc
+    LargeVector<EdgeArcs> edges;  // the walks that emitted arcs
     std::vector<RawPoint> link;
   };
 
