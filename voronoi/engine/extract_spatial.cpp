@@ -8,10 +8,11 @@
 // points at infinity, and for equal weights (vertical facets) the conic touches the line at
 // infinity at the vertical direction U, where unbounded arcs end.
 //
-// The triangulation is read once into flat arrays (per cell its four site indices and four
+// The triangulation is read once into flat arrays (per cell its four vertex ids and four
 // neighbour ids) and released: every later pass, the edge walks included, reads those arrays only.
-// The cells are stored in a spatial order (by the Morton rank of their first-ranked site), so that
-// neighbours are near in memory; CGAL's order scatters them (at 10^5 sites 70 % of neighbours lay
+// Vertices are numbered by their sites' Morton (Z-order) rank, with their points stored in that
+// order, and cells are stored by the rank of their first vertex, so that neighbours and their
+// points are near in memory; CGAL's order scatters cells (at 10^5 sites 70 % of neighbours lay
 // more than 2048 cells apart) and the walks waited on memory. Nothing is decided differently, and
 // nothing comes out in another order: the arrays hold the same cells, vertices and neighbours; each
 // cell keeps its CGAL id (orig_), which decides as before which cell of a facet computes its pattern,
@@ -38,12 +39,13 @@ namespace {
 
 using RT = RegularTriangulation;
 
-inline constexpr int kInfiniteSite = -1;  // the infinite vertex in FlatCell::site
+inline constexpr int kInfiniteVertex = -1;  // the infinite vertex in FlatCell::vertex
 
-// One cell of the triangulation: its vertices (site indices, kInfiniteSite for the infinite vertex)
-// and, opposite vertex k, its neighbour's id. 32 bytes, against CGAL's ~100 reached by pointers.
+// One cell of the triangulation: its vertices (vertex ids: the sites' Morton ranks, see
+// copy_triangulation; kInfiniteVertex for the infinite vertex) and, opposite vertex k, its
+// neighbour's id. 32 bytes, against CGAL's ~100 reached by pointers.
 struct FlatCell {
-  std::array<int, 4> site;
+  std::array<int, 4> vertex;
   std::array<int, 4> neighbor;
 };
 
@@ -110,6 +112,8 @@ class SpatialExtractor {
   LargeVector<FlatCell> cells_;  // in spatial order (see the top of the file)
   LargeVector<int> orig_;        // per cell, its id in CGAL's order
   LargeVector<int> by_orig_;     // per CGAL id, the cell
+  LargeVector<RawPoint> points_;  // per vertex id, its site's (x, y, w)
+  LargeVector<int> vertex_site_;  // per vertex id, its site
   LargeVector<CellData> data_;
   LargeVector<std::uint8_t> flags_;
   LargeVector<EdgePattern> facet_;  // 4 per cell, oriented from the cell towards its neighbour
@@ -133,13 +137,13 @@ class SpatialExtractor {
   bool infinite(int c) const { return flags_[c] & kInfiniteCell; }
   bool zero(int c) const { return flags_[c] & kZeroVertex; }
 
-  // The site as the triangulation stores it: (x, y, w), the same doubles.
-  RawPoint raw(int site) const { return RawPoint(sites_[site].x, sites_[site].y, sites_[site].weight); }
+  // The site of a vertex as the triangulation stores it: (x, y, w), the same doubles.
+  RawPoint raw(int vertex) const { return points_[vertex]; }
 
   // Index in cell c of vertex `site` / of neighbour n (c->index(v), c->index(n) in CGAL).
-  int index_of_site(int c, int site) const {
-    const std::array<int, 4>& s = cells_[c].site;
-    return s[0] == site ? 0 : s[1] == site ? 1 : s[2] == site ? 2 : 3;
+  int index_of_vertex(int c, int v) const {
+    const std::array<int, 4>& s = cells_[c].vertex;
+    return s[0] == v ? 0 : s[1] == v ? 1 : s[2] == v ? 2 : 3;
   }
   int index_of_neighbor(int c, int n) const {
     const std::array<int, 4>& s = cells_[c].neighbor;
@@ -148,14 +152,14 @@ class SpatialExtractor {
   // The vertex of c's neighbour across facet f that is not on that facet.
   int site_beyond(int c, int f) const {
     const int n = cells_[c].neighbor[f];
-    return cells_[n].site[index_of_neighbor(n, c)];
+    return cells_[n].vertex[index_of_neighbor(n, c)];
   }
 
   // The finite facet of an infinite cell, and the far vertex of the finite cell behind it.
   void ray_sites(int c, std::array<RawPoint, 3>& tri, RawPoint& away) const {
-    const int inf = index_of_site(c, kInfiniteSite);
+    const int inf = index_of_vertex(c, kInfiniteVertex);
     for (int k = 0, m = 0; k < 4; ++k)
-      if (k != inf) tri[m++] = raw(cells_[c].site[k]);
+      if (k != inf) tri[m++] = raw(cells_[c].vertex[k]);
     away = raw(site_beyond(c, inf));
   }
 
@@ -168,7 +172,7 @@ class SpatialExtractor {
       return power_ray_direction<NT>(tri, away);
     }
     std::array<RawPoint, 4> s;
-    for (int k = 0; k < 4; ++k) s[k] = raw(cells_[c].site[k]);
+    for (int k = 0; k < 4; ++k) s[k] = raw(cells_[c].vertex[k]);
     return power_vertex<NT>(s);
   }
 
@@ -180,7 +184,15 @@ class SpatialExtractor {
     by_orig_.resize(n);
     flags_.assign(n, 0);
     // Cells by the rank of their first-ranked site (a counting sort, CGAL's order within a rank).
+    // Vertices are numbered by their sites' Morton ranks, and their points stored in that order:
+    // the cells' vertices are then near in memory too.
     const LargeVector<int> rank = morton_ranks(sites_);
+    points_.resize(sites_.size());
+    vertex_site_.resize(sites_.size());
+    for (std::size_t i = 0; i < sites_.size(); ++i) {
+      points_[rank[i]] = RawPoint(sites_[i].x, sites_[i].y, sites_[i].weight);
+      vertex_site_[rank[i]] = static_cast<int>(i);
+    }
     LargeVector<int> first(sites_.size() + 1, 0);
     int id = 0;
     for (auto c = rt_.all_cells_begin(); c != rt_.all_cells_end(); ++c) {
@@ -203,7 +215,7 @@ class SpatialExtractor {
       FlatCell& f = cells_[cell];
       for (int k = 0; k < 4; ++k) {
         const RT::Vertex_handle v = c->vertex(k);
-        f.site[k] = rt_.is_infinite(v) ? kInfiniteSite : site_of(v);
+        f.vertex[k] = rt_.is_infinite(v) ? kInfiniteVertex : rank[site_of(v)];
         f.neighbor[k] = by_orig_[c->neighbor(k)->info()];
       }
       if (rt_.is_infinite(c)) flags_[cell] = kInfiniteCell;
@@ -418,14 +430,14 @@ class SpatialExtractor {
     std::array<RawPoint, 3> points;
     for (int k = 0, m = 0; k < 4; ++k)
       if (k != f) {
-        tri[m] = cells_[cell].site[k];
-        points[m] = raw(tri[m]);
+        tri[m] = vertex_site_[cells_[cell].vertex[k]];
+        points[m] = raw(cells_[cell].vertex[k]);
         ++m;
       }
     // The travel from c's power vertex to n's leaves c (its fourth site falls behind) or, when c is
     // infinite, reaches the finite cell n from infinity.
     const bool c_finite = !infinite(cell);
-    const RawPoint away = raw(c_finite ? cells_[cell].site[f] : site_beyond(cell, f));
+    const RawPoint away = raw(c_finite ? cells_[cell].vertex[f] : site_beyond(cell, f));
     const int sigma = travel_sign(points, away, c_finite);
     bool exact = false;
     const AlongLine which = wanted_root(p, r, sigma);
@@ -493,9 +505,9 @@ class SpatialExtractor {
         for (int i = 0; i < 4; ++i)
           for (int j = i + 1; j < 4; ++j) {
             if (st.done[k] & (1u << local_edge(i, j))) continue;
-            const int lowest = circulate(st, c, cells_[c].site[i], cells_[c].site[j]);
+            const int lowest = circulate(st, c, cells_[c].vertex[i], cells_[c].vertex[j]);
             if (lowest >= static_cast<int>(begin) && lowest < static_cast<int>(end))
-              walk_edge(st, w, lowest, c, cells_[c].site[i], cells_[c].site[j]);
+              walk_edge(st, w, lowest, c, cells_[c].vertex[i], cells_[c].vertex[j]);
           }
       }
     });
@@ -528,7 +540,7 @@ class SpatialExtractor {
     do {
       ring.push_back(c);
       if (!infinite(c) && orig_[c] < orig_[lowest]) lowest = c;  // walks start finite
-      const int ii = index_of_site(c, vi), ij = index_of_site(c, vj);
+      const int ii = index_of_vertex(c, vi), ij = index_of_vertex(c, vj);
       st.done[c] |= static_cast<std::uint8_t>(1u << local_edge(ii, ij));
       c = cells_[c].neighbor[CGAL::Triangulation_utils_3::next_around_edge(ii, ij)];
     } while (c != c0);
@@ -538,9 +550,9 @@ class SpatialExtractor {
   // Walks the edge (a, b) whose ring (circulated from cell `from`) has its lowest CGAL id finite
   // cell at c0.
   void walk_edge(WalkState& st, int w, int c0, int from, int a, int b) {
-    int i0 = index_of_site(c0, a), j0 = index_of_site(c0, b);
+    int i0 = index_of_vertex(c0, a), j0 = index_of_vertex(c0, b);
     if (i0 > j0) std::swap(i0, j0);
-    const int vi = cells_[c0].site[i0], vj = cells_[c0].site[j0];
+    const int vi = cells_[c0].vertex[i0], vj = cells_[c0].vertex[j0];
     if (c0 != from) circulate(st, c0, vi, vj);
     const std::size_t first = st.arcs.size();
     walk_ring(st, vi, vj);
@@ -555,7 +567,7 @@ class SpatialExtractor {
     bool ccw = true;
     for (std::size_t p = 0; p < m; ++p) {
       if (infinite(ring[p])) continue;
-      ccw = circulates_ccw(ring[p], index_of_site(ring[p], vi), index_of_site(ring[p], vj), ring[(p + 1) % m]);
+      ccw = circulates_ccw(ring[p], index_of_vertex(ring[p], vi), index_of_vertex(ring[p], vj), ring[(p + 1) % m]);
       break;
     }
     std::vector<Token>& tokens = st.tokens;
@@ -579,16 +591,16 @@ class SpatialExtractor {
         st.link.clear();
         for (int c : ring)
           for (int k = 0; k < 4; ++k) {
-            const int v = cells_[c].site[k];
-            if (v != vi && v != vj && v != kInfiniteSite) st.link.push_back(raw(v));
+            const int v = cells_[c].vertex[k];
+            if (v != vi && v != vj && v != kInfiniteVertex) st.link.push_back(raw(v));
           }
         have_link = true;
       }
       return st.link;
     };
     const std::size_t first = st.arcs.size();
-    emit_arcs(tokens, st.scratch, vi, vj, sites_, st.arcs, [&] {
-      if (sites_[vi].weight == sites_[vj].weight) return false;  // U would show
+    emit_arcs(tokens, st.scratch, vertex_site_[vi], vertex_site_[vj], sites_, st.arcs, [&] {
+      if (raw(vi).z() == raw(vj).z()) return false;  // U would show
       return circle_centre_in_facet(raw(vi), raw(vj), link());
     });
     for (std::size_t k = first; k < st.arcs.size(); ++k)
