@@ -7,6 +7,19 @@
 // angular sorting of algebraic points and no tolerance. The walk is projective: rays end at
 // points at infinity, and for equal weights (vertical facets) the conic touches the line at
 // infinity at the vertical direction U, where unbounded arcs end.
+//
+// The triangulation is read once into flat arrays (per cell its four vertex ids and four
+// neighbour ids) and released: every later pass, the edge walks included, reads those arrays only.
+// Vertices are numbered by their sites' Morton (Z-order) rank, with their points stored in that
+// order, and cells are stored by the rank of their first vertex, so that neighbours and their
+// points are near in memory; CGAL's order scatters cells (at 10^5 sites 70 % of neighbours lay
+// more than 2048 cells apart) and the walks waited on memory. Nothing is decided differently, and
+// nothing comes out in another order: the arrays hold the same cells, vertices and neighbours; each
+// cell keeps its CGAL id (orig_), which decides as before which cell of a facet computes its pattern,
+// how nodes are numbered, and where each edge's walk starts (its lowest-id finite cell, at the edge's
+// vertex indices there); the walks turn around each edge as CGAL's cell circulator does
+// (Triangulation_utils_3::next_around_edge); every point is rebuilt from the same doubles; and the
+// arcs are put back in the order of the edges' CGAL ids.
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -17,6 +30,7 @@
 #include "voronoi/engine/readable_arcs.h"
 #include "voronoi/engine/self_check.h"
 #include "voronoi/engine/triple_node.h"
+#include "core/large_buffer.h"
 #include "core/parallel.h"
 #include "voronoi/tolerances.h"
 
@@ -24,15 +38,52 @@ namespace covmap::voronoi::engine {
 namespace {
 
 using RT = RegularTriangulation;
-using Cell = RT::Cell_handle;
-using Vertex = RT::Vertex_handle;
+
+inline constexpr int kInfiniteVertex = -1;  // the infinite vertex in FlatCell::vertex
+
+// One cell of the triangulation: its vertices (vertex ids: the sites' Morton ranks, see
+// copy_triangulation; kInfiniteVertex for the infinite vertex) and, opposite vertex k, its
+// neighbour's id. 32 bytes, against CGAL's ~100 reached by pointers.
+struct FlatCell {
+  std::array<int, 4> vertex;
+  std::array<int, 4> neighbor;
+};
+
+// Per site, its rank along a Morton (Z-order) curve of the sites' positions, which lie in
+// (-1, 1) (build_diagram scales them so). Only memory layout depends on it.
+LargeVector<int> morton_ranks(const std::vector<Site>& sites) {
+  constexpr int kBits = 16;
+  constexpr double kScale = 1 << (kBits - 1);
+  auto quantize = [&](double v) {
+    return static_cast<std::uint32_t>(std::clamp((v + 1) * kScale, 0.0, 2 * kScale - 1));
+  };
+  auto spread = [](std::uint64_t v) {  // bit b of v to bit 2b
+    v = (v | (v << 16)) & 0x0000FFFF0000FFFFull;
+    v = (v | (v << 8)) & 0x00FF00FF00FF00FFull;
+    v = (v | (v << 4)) & 0x0F0F0F0F0F0F0F0Full;
+    v = (v | (v << 2)) & 0x3333333333333333ull;
+    v = (v | (v << 1)) & 0x5555555555555555ull;
+    return v;
+  };
+  LargeVector<std::uint64_t> keys(sites.size());
+  for (std::size_t i = 0; i < sites.size(); ++i)
+    keys[i] = ((spread(quantize(sites[i].x)) | (spread(quantize(sites[i].y)) << 1)) << 32) | i;
+  std::sort(keys.begin(), keys.end());
+  LargeVector<int> rank(sites.size());
+  for (std::size_t r = 0; r < keys.size(); ++r) rank[keys[r] & 0xFFFFFFFFu] = static_cast<int>(r);
+  return rank;
+}
 
 // Per cell: its power vertex (finite cells) or outward ray direction (infinite cells).
 struct CellData {
   Homog<Approx> v{};
-  bool valid = false;    // v usable (else recompute with intervals or exactly when needed)
-  bool zero = false;     // the vertex is a zero point: on the paraboloid, or the direction U
-  bool infinite = false;
+  bool valid = false;  // v usable (else recompute with intervals or exactly when needed)
+};
+
+// Per cell flags, apart from the power vertices: the walks read only these.
+enum CellFlag : std::uint8_t {
+  kInfiniteCell = 1,
+  kZeroVertex = 2,  // the vertex is a zero point: on the paraboloid, or the direction U
 };
 
 class SpatialExtractor {
@@ -58,12 +109,17 @@ class SpatialExtractor {
   Diagram& out_;
   BuildStats& stats_;
 
-  std::vector<Cell> cells_;
-  std::vector<CellData> data_;
-  std::vector<EdgePattern> facet_;  // 4 per cell, oriented from the cell towards its neighbour
-  std::vector<int> facet_node_;     // 2 per facet entry: node ids of its interior zero points
-  std::vector<int> uf_;             // union-find: cells sharing one power vertex on the paraboloid
-  std::vector<int> vertex_node_;    // node id of a zero vertex, by union-find root
+  LargeVector<FlatCell> cells_;  // in spatial order (see the top of the file)
+  LargeVector<int> orig_;        // per cell, its id in CGAL's order
+  LargeVector<int> by_orig_;     // per CGAL id, the cell
+  LargeVector<RawPoint> points_;  // per vertex id, its site's (x, y, w)
+  LargeVector<int> vertex_site_;  // per vertex id, its site
+  LargeVector<CellData> data_;
+  LargeVector<std::uint8_t> flags_;
+  LargeVector<EdgePattern> facet_;  // 4 per cell, oriented from the cell towards its neighbour
+  LargeVector<int> facet_node_;     // 2 per facet entry: node ids of its interior zero points
+  LargeVector<int> uf_;             // union-find on CGAL ids: cells sharing one power vertex on the paraboloid
+  LargeVector<int> vertex_node_;    // node id of a zero vertex, by union-find root
   std::vector<std::array<int, 3>> node_facet_;  // per root node: the sites of its facet
   std::vector<AlongLine> node_root_;            // per root node: which root of its facet's line
   int workers_ = 1;
@@ -78,34 +134,97 @@ class SpatialExtractor {
     return c;
   }
 
+  bool infinite(int c) const { return flags_[c] & kInfiniteCell; }
+  bool zero(int c) const { return flags_[c] & kZeroVertex; }
+
+  // The site of a vertex as the triangulation stores it: (x, y, w), the same doubles.
+  RawPoint raw(int vertex) const { return points_[vertex]; }
+
+  // Index in cell c of vertex `site` / of neighbour n (c->index(v), c->index(n) in CGAL).
+  int index_of_vertex(int c, int v) const {
+    const std::array<int, 4>& s = cells_[c].vertex;
+    return s[0] == v ? 0 : s[1] == v ? 1 : s[2] == v ? 2 : 3;
+  }
+  int index_of_neighbor(int c, int n) const {
+    const std::array<int, 4>& s = cells_[c].neighbor;
+    return s[0] == n ? 0 : s[1] == n ? 1 : s[2] == n ? 2 : 3;
+  }
+  // The vertex of c's neighbour across facet f that is not on that facet.
+  int site_beyond(int c, int f) const {
+    const int n = cells_[c].neighbor[f];
+    return cells_[n].vertex[index_of_neighbor(n, c)];
+  }
+
   // The finite facet of an infinite cell, and the far vertex of the finite cell behind it.
-  void ray_sites(Cell c, std::array<RawPoint, 3>& tri, RawPoint& away) const {
-    const int inf = c->index(rt_.infinite_vertex());
+  void ray_sites(int c, std::array<RawPoint, 3>& tri, RawPoint& away) const {
+    const int inf = index_of_vertex(c, kInfiniteVertex);
     for (int k = 0, m = 0; k < 4; ++k)
-      if (k != inf) tri[m++] = c->vertex(k)->point().point();
-    Cell n = c->neighbor(inf);
-    away = n->vertex(n->index(c))->point().point();
+      if (k != inf) tri[m++] = raw(cells_[c].vertex[k]);
+    away = raw(site_beyond(c, inf));
   }
 
   template <class NT>
-  std::optional<Homog<NT>> cell_point(Cell c) const {
-    if (rt_.is_infinite(c)) {
+  std::optional<Homog<NT>> cell_point(int c) const {
+    if (infinite(c)) {
       std::array<RawPoint, 3> tri;
       RawPoint away;
       ray_sites(c, tri, away);
       return power_ray_direction<NT>(tri, away);
     }
     std::array<RawPoint, 4> s;
-    for (int k = 0; k < 4; ++k) s[k] = c->vertex(k)->point().point();
+    for (int k = 0; k < 4; ++k) s[k] = raw(cells_[c].vertex[k]);
     return power_vertex<NT>(s);
   }
 
-  void compute_cells() {
+  // The flat copy of the triangulation, in CGAL's cell order; then the triangulation is released.
+  void copy_triangulation() {
+    const std::size_t n = rt_.tds().number_of_cells();
+    cells_.resize(n);
+    orig_.resize(n);
+    by_orig_.resize(n);
+    flags_.assign(n, 0);
+    // Cells by the rank of their first-ranked site (a counting sort, CGAL's order within a rank).
+    // Vertices are numbered by their sites' Morton ranks, and their points stored in that order:
+    // the cells' vertices are then near in memory too.
+    const LargeVector<int> rank = morton_ranks(sites_);
+    points_.resize(sites_.size());
+    vertex_site_.resize(sites_.size());
+    for (std::size_t i = 0; i < sites_.size(); ++i) {
+      points_[rank[i]] = RawPoint(sites_[i].x, sites_[i].y, sites_[i].weight);
+      vertex_site_[rank[i]] = static_cast<int>(i);
+    }
+    LargeVector<int> first(sites_.size() + 1, 0);
     int id = 0;
     for (auto c = rt_.all_cells_begin(); c != rt_.all_cells_end(); ++c) {
-      c->info() = id++;
-      cells_.push_back(c);
+      int lowest = static_cast<int>(sites_.size());
+      for (int k = 0; k < 4; ++k)
+        if (!rt_.is_infinite(c->vertex(k))) lowest = std::min(lowest, rank[site_of(c->vertex(k))]);
+      c->info() = id;
+      by_orig_[id++] = lowest;
+      ++first[lowest + 1];
     }
+    std::partial_sum(first.begin(), first.end(), first.begin());
+    for (std::size_t o = 0; o < n; ++o) {
+      const int cell = first[by_orig_[o]]++;
+      by_orig_[o] = cell;
+      orig_[cell] = static_cast<int>(o);
+    }
+    id = 0;
+    for (auto c = rt_.all_cells_begin(); c != rt_.all_cells_end(); ++c, ++id) {
+      const int cell = by_orig_[id];
+      FlatCell& f = cells_[cell];
+      for (int k = 0; k < 4; ++k) {
+        const RT::Vertex_handle v = c->vertex(k);
+        f.vertex[k] = rt_.is_infinite(v) ? kInfiniteVertex : rank[site_of(v)];
+        f.neighbor[k] = by_orig_[c->neighbor(k)->info()];
+      }
+      if (rt_.is_infinite(c)) flags_[cell] = kInfiniteCell;
+    }
+    rt_.clear();
+  }
+
+  void compute_cells() {
+    copy_triangulation();
     data_.resize(cells_.size());
     uf_.resize(cells_.size());
     std::iota(uf_.begin(), uf_.end(), 0);
@@ -116,40 +235,41 @@ class SpatialExtractor {
     parallel_chunks(cells_.size(), workers_, [&](std::size_t begin, std::size_t end, int w) {
       for (std::size_t k = begin; k < end; ++k) {
         CellData& d = data_[k];
-        d.infinite = rt_.is_infinite(cells_[k]);
+        const int c = static_cast<int>(k);
+        const bool inf = infinite(c);
         std::optional<bool> zero;
-        if (auto p = cell_point<Approx>(cells_[k])) {
+        if (auto p = cell_point<Approx>(c)) {
           d.v = *p;
           d.valid = true;
-          zero = is_zero_point(*p, d.infinite);
+          zero = is_zero_point(*p, inf);
         }
         if (!zero) {
           CGAL::Protect_FPU_rounding<true> guard;
-          if (auto p = cell_point<Interval>(cells_[k])) zero = is_zero_point(*p, d.infinite);
+          if (auto p = cell_point<Interval>(c)) zero = is_zero_point(*p, inf);
         }
         if (!zero) {
           ++fallbacks[w];
-          zero = is_zero_point(*cell_point<Exact>(cells_[k]), d.infinite);
+          zero = is_zero_point(*cell_point<Exact>(c), inf);
         }
-        d.zero = *zero;
+        if (*zero) flags_[k] |= kZeroVertex;
       }
     });
     for (std::size_t f : fallbacks) stats_.exact_fallbacks += f;
   }
 
   template <class NT>
-  std::optional<EdgePattern> facet_pattern(Cell a, Cell b) const {
+  std::optional<EdgePattern> facet_pattern(int a, int b) const {
     std::optional<Homog<NT>> pa, pb;
     if constexpr (std::is_same_v<NT, Approx>) {
-      if (!data_[a->info()].valid || !data_[b->info()].valid) return std::nullopt;
-      pa = data_[a->info()].v;
-      pb = data_[b->info()].v;
+      if (!data_[a].valid || !data_[b].valid) return std::nullopt;
+      pa = data_[a].v;
+      pb = data_[b].v;
     } else {
       pa = cell_point<NT>(a);
       pb = cell_point<NT>(b);
       if (!pa || !pb) return std::nullopt;
     }
-    return edge_pattern_projective(*pa, *pb, data_[a->info()].infinite, data_[b->info()].infinite);
+    return edge_pattern_projective(*pa, *pb, infinite(a), infinite(b));
   }
 
   void compute_facets() {
@@ -158,62 +278,69 @@ class SpatialExtractor {
     // Pass 1, in parallel: the crossing pattern of every facet, from its lower-id cell (each facet
     // entry pair is written by exactly one worker). Unions of cells sharing a vertex are rare and
     // applied afterwards.
-    std::vector<std::vector<std::pair<int, int>>> unions(workers_);
+    struct Union {
+      int cell, facet, neighbor;  // CGAL ids
+    };
+    std::vector<std::vector<Union>> unions(workers_);
     std::vector<std::size_t> fallbacks(workers_, 0);
     parallel_chunks(cells_.size(), workers_, [&](std::size_t begin, std::size_t end, int w) {
       for (std::size_t k = begin; k < end; ++k) {
-        Cell c = cells_[k];
+        const int c = static_cast<int>(k);
         for (int f = 0; f < 4; ++f) {
-          Cell n = c->neighbor(f);
-          const int nk = n->info();
-          if (nk < static_cast<int>(k)) continue;
-          std::optional<EdgePattern> p = facet_pattern<Approx>(c, n);
+          const int nk = cells_[k].neighbor[f];
+          if (orig_[nk] < orig_[c]) continue;
+          std::optional<EdgePattern> p = facet_pattern<Approx>(c, nk);
           if (!p) {
             CGAL::Protect_FPU_rounding<true> guard;
-            p = facet_pattern<Interval>(c, n);
+            p = facet_pattern<Interval>(c, nk);
           }
           if (!p) {
             ++fallbacks[w];
-            p = facet_pattern<Exact>(c, n);
+            p = facet_pattern<Exact>(c, nk);
           }
-          const int mirror = n->index(c);
+          const int mirror = index_of_neighbor(nk, c);
           EdgePattern& fwd = facet_[4 * k + f];
           EdgePattern& bwd = facet_[4 * nk + mirror];
           fwd = *p;
           bwd = *p;
           std::reverse(bwd.sign, bwd.sign + p->roots + 1);
-          if (p->empty && data_[k].zero && data_[nk].zero)
-            unions[w].emplace_back(static_cast<int>(k), nk);
+          if (p->empty && zero(c) && zero(nk))
+            unions[w].push_back({orig_[c], f, orig_[nk]});
         }
       }
     });
     for (std::size_t f : fallbacks) stats_.exact_fallbacks += f;
-    for (const auto& list : unions)
-      for (auto [a, b] : list) uf_[find(a)] = find(b);
+    LargeVector<CellData>().swap(data_);  // the approximate vertices are not read again
+    // Applied in CGAL's cell order, so that each class has the root it had there: its vertex is
+    // rounded from that cell's homogeneous coordinates.
+    std::vector<Union> all;
+    for (const auto& list : unions) all.insert(all.end(), list.begin(), list.end());
+    std::sort(all.begin(), all.end(),
+              [](const Union& a, const Union& b) { return a.cell != b.cell ? a.cell < b.cell : a.facet < b.facet; });
+    for (const Union& u : all) uf_[find(u.cell)] = find(u.neighbor);
     // Pass 2: number the crossing nodes in a fixed order, then place them in parallel.
     struct Job {
       int cell, facet, root, node;
     };
     std::vector<Job> jobs;
     int next = static_cast<int>(out_.nodes.size());
-    for (std::size_t k = 0; k < cells_.size(); ++k) {
-      Cell c = cells_[k];
+    for (std::size_t o = 0; o < cells_.size(); ++o) {
+      const int c = by_orig_[o];
       for (int f = 0; f < 4; ++f) {
-        Cell n = c->neighbor(f);
-        const int nk = n->info();
-        if (nk < static_cast<int>(k)) continue;
-        const EdgePattern& p = facet_[4 * k + f];
+        const int nk = cells_[c].neighbor[f];
+        if (orig_[nk] < orig_[c]) continue;
+        const EdgePattern& p = facet_[4 * c + f];
         if (p.empty || p.roots == 0) continue;
         // On an edge at infinity (between two directions) the only possible zero is U.
-        const bool at_infinity = data_[k].infinite && data_[nk].infinite;
-        const int mirror = n->index(c);
+        const bool at_infinity = infinite(c) && infinite(nk);
+        const int mirror = index_of_neighbor(nk, c);
         for (int r = 0; r < p.roots; ++r) {
           int node = kInfinityNode;
           if (!at_infinity) {
             node = next++;
-            jobs.push_back({static_cast<int>(k), f, r, node});
+            jobs.push_back({c, f, r, node});
           }
-          facet_node_[2 * (4 * k + f) + r] = node;
+          facet_node_[2 * (4 * c + f) + r] = node;
           facet_node_[2 * (4 * nk + mirror) + (p.roots - 1 - r)] = node;
         }
       }
@@ -229,8 +356,8 @@ class SpatialExtractor {
     });
     for (std::size_t e : exact_nodes) stats_.exact_nodes += e;
     // Zero vertices get their nodes now, so the walks only read.
-    for (std::size_t k = 0; k < cells_.size(); ++k)
-      if (data_[k].zero) vertex_zero_node(static_cast<int>(k));
+    for (std::size_t o = 0; o < cells_.size(); ++o)
+      if (zero(by_orig_[o])) vertex_zero_node(by_orig_[o]);
   }
 
   // Facets whose lifted sites are coplanar and co-circular share one power line, so each of its
@@ -298,43 +425,42 @@ class SpatialExtractor {
   }
 
   void place_root_node(int cell, int f, int r, int node, std::size_t& exact_nodes) {
-    Cell c = cells_[cell];
-    Cell n = c->neighbor(f);
     const EdgePattern& p = facet_[4 * cell + f];
     std::array<int, 3> tri;
-    std::array<RawPoint, 3> raw;
+    std::array<RawPoint, 3> points;
     for (int k = 0, m = 0; k < 4; ++k)
       if (k != f) {
-        tri[m] = site_of(c->vertex(k));
-        raw[m++] = c->vertex(k)->point().point();
+        tri[m] = vertex_site_[cells_[cell].vertex[k]];
+        points[m] = raw(cells_[cell].vertex[k]);
+        ++m;
       }
     // The travel from c's power vertex to n's leaves c (its fourth site falls behind) or, when c is
     // infinite, reaches the finite cell n from infinity.
-    const bool c_finite = !data_[cell].infinite;
-    const RawPoint away = c_finite ? c->vertex(f)->point().point() : n->vertex(n->index(c))->point().point();
-    const int sigma = travel_sign(raw, away, c_finite);
+    const bool c_finite = !infinite(cell);
+    const RawPoint away = raw(c_finite ? cells_[cell].vertex[f] : site_beyond(cell, f));
+    const int sigma = travel_sign(points, away, c_finite);
     bool exact = false;
     const AlongLine which = wanted_root(p, r, sigma);
-    out_.nodes[node] = triple_node(raw, which, extent_, &exact);
+    out_.nodes[node] = triple_node(points, which, extent_, &exact);
     exact_nodes += exact;
     node_facet_[node] = tri;
     node_root_[node] = which;
   }
 
   int vertex_zero_node(int cell) {
-    if (data_[cell].infinite) return kInfinityNode;
-    const int root = find(cell);
+    if (infinite(cell)) return kInfinityNode;
+    const int root = find(orig_[cell]);
     if (vertex_node_[root] != kNone) return vertex_node_[root];
-    auto v = cell_point<Exact>(cells_[root]);
+    auto v = cell_point<Exact>(by_orig_[root]);
     const double w = CGAL::to_double(v->W);
     out_.nodes.push_back(Node{CGAL::to_double(v->X) / w, CGAL::to_double(v->Y) / w});
     return vertex_node_[root] = static_cast<int>(out_.nodes.size()) - 1;
   }
 
-  // True when the circulator turns counter-clockwise around c_j - c_i. Cells are positively
-  // oriented, so orientation(c_i, c_j, c_prev, c_next) is the parity of that vertex permutation.
-  static bool circulates_ccw(Cell c, int ii, int ij, Cell next) {
-    const int prev_third = c->index(next);  // the vertex off the facet shared with `next`
+  // True when the ring turns counter-clockwise around c_j - c_i. Cells are positively oriented, so
+  // orientation(c_i, c_j, c_prev, c_next) is the parity of that vertex permutation.
+  bool circulates_ccw(int c, int ii, int ij, int next) const {
+    const int prev_third = index_of_neighbor(c, next);  // the vertex off the facet shared with `next`
     const int next_third = 6 - ii - ij - prev_third;
     const int perm[4] = {ii, ij, prev_third, next_third};
     int inversions = 0;
@@ -343,17 +469,25 @@ class SpatialExtractor {
     return inversions % 2 == 0;
   }
 
-  // Each triangulation edge is walked once. Workers take contiguous ranges of cells; a worker meeting
-  // an edge not yet marked in its own marks circulates it, marks it in every cell of the ring, and
-  // walks it only if the ring's lowest-id finite cell is in its range — so exactly one worker walks each
-  // edge, without shared state (CGAL's finite_edges iterator would circulate every edge too).
+  // Each triangulation edge is walked once, from where the walk in CGAL's cell order started: its
+  // finite cell L of lowest CGAL id, around (vertex i0, vertex j0) of L, i0 < j0. Workers take
+  // contiguous ranges of cells; a worker meeting an edge not yet marked in its own marks circulates
+  // it, marks it in every cell of the ring, and walks it only if L is in its range — so exactly one
+  // worker walks each edge, without shared state. Each walk's arcs are tagged with the edge's place
+  // in CGAL's order, by which they are put back in that order.
+  struct EdgeArcs {
+    std::int64_t key = 0;  // 6 × (L's CGAL id) + local_edge(i0, j0)
+    int worker = 0;
+    std::size_t begin = 0, end = 0;  // in that worker's arcs
+  };
   struct WalkState {
-    std::vector<std::uint8_t> done;  // per cell, bit local_edge(i, j)
-    std::vector<Cell> ring;
+    LargeVector<std::uint8_t> done;  // per cell, bit local_edge(i, j)
+    std::vector<int> ring;
     std::vector<Token> tokens;
     WalkScratch scratch;
-    std::vector<Arc> arcs;
-    std::vector<ArcMend> mends;  // one per arc
+    LargeVector<Arc> arcs;  // large buffers: they reuse the blocks released by earlier stages
+    LargeVector<ArcMend> mends;  // one per arc
+    LargeVector<EdgeArcs> edges;  // the walks that emitted arcs
     std::vector<RawPoint> link;
   };
 
@@ -363,56 +497,90 @@ class SpatialExtractor {
       WalkState& st = states[w];
       st.done.assign(cells_.size(), 0);
       st.arcs.reserve(3 * sites_.size() / workers_ + 16);
+      st.mends.reserve(3 * sites_.size() / workers_ + 16);
+      st.edges.reserve(3 * sites_.size() / workers_ + 16);
       for (std::size_t k = begin; k < end; ++k) {
-        Cell c = cells_[k];
-        if (data_[k].infinite) continue;
+        const int c = static_cast<int>(k);
+        if (infinite(c)) continue;
         for (int i = 0; i < 4; ++i)
-          for (int j = i + 1; j < 4; ++j)
-            if (!(st.done[k] & (1u << local_edge(i, j)))) walk_edge(st, c, i, j, begin, end);
+          for (int j = i + 1; j < 4; ++j) {
+            if (st.done[k] & (1u << local_edge(i, j))) continue;
+            const int lowest = circulate(st, c, cells_[c].vertex[i], cells_[c].vertex[j]);
+            if (lowest >= static_cast<int>(begin) && lowest < static_cast<int>(end))
+              walk_edge(st, w, lowest, c, cells_[c].vertex[i], cells_[c].vertex[j]);
+          }
       }
     });
+    std::vector<EdgeArcs> edges;
     std::size_t total = out_.arcs.size();
-    for (const WalkState& st : states) total += st.arcs.size();
+    for (const WalkState& st : states) {
+      total += st.arcs.size();
+      edges.insert(edges.end(), st.edges.begin(), st.edges.end());
+    }
+    std::sort(edges.begin(), edges.end(), [](const EdgeArcs& a, const EdgeArcs& b) { return a.key < b.key; });
     out_.arcs.reserve(total);
+    mends_.reserve(total);
     mends_.assign(out_.arcs.size(), ArcMend::kNone);
-    for (WalkState& st : states) {
-      out_.arcs.insert(out_.arcs.end(), st.arcs.begin(), st.arcs.end());
-      mends_.insert(mends_.end(), st.mends.begin(), st.mends.end());
+    for (const EdgeArcs& e : edges) {
+      const WalkState& st = states[e.worker];
+      out_.arcs.insert(out_.arcs.end(), st.arcs.begin() + e.begin, st.arcs.begin() + e.end);
+      mends_.insert(mends_.end(), st.mends.begin() + e.begin, st.mends.begin() + e.end);
     }
     apply_mends(out_, mends_);
   }
 
-  void walk_edge(WalkState& st, Cell c0, int i0, int j0, std::size_t begin, std::size_t end) {
-    Vertex vi = c0->vertex(i0), vj = c0->vertex(j0);
-    std::vector<Cell>& ring = st.ring;
+  // The cells around the edge (vi, vj) of cell c0, in the order of CGAL's cell circulator
+  // incident_cells(c0, index of vi, index of vj), each marked as done for this edge; returns the
+  // finite one of lowest CGAL id (c0 is finite).
+  int circulate(WalkState& st, int c0, int vi, int vj) const {
+    std::vector<int>& ring = st.ring;
     ring.clear();
-    auto circ = rt_.incident_cells(c0, i0, j0), done = circ;
-    int lowest = c0->info();
+    int lowest = c0;
+    int c = c0;
     do {
-      ring.push_back(circ);
-      Cell c = circ;
-      if (!data_[c->info()].infinite) lowest = std::min(lowest, c->info());  // walks start finite
-      st.done[c->info()] |= static_cast<std::uint8_t>(1u << local_edge(c->index(vi), c->index(vj)));
-    } while (++circ != done);
-    if (lowest < static_cast<int>(begin) || lowest >= static_cast<int>(end)) return;
+      ring.push_back(c);
+      if (!infinite(c) && orig_[c] < orig_[lowest]) lowest = c;  // walks start finite
+      const int ii = index_of_vertex(c, vi), ij = index_of_vertex(c, vj);
+      st.done[c] |= static_cast<std::uint8_t>(1u << local_edge(ii, ij));
+      c = cells_[c].neighbor[CGAL::Triangulation_utils_3::next_around_edge(ii, ij)];
+    } while (c != c0);
+    return lowest;
+  }
+
+  // Walks the edge (a, b) whose ring (circulated from cell `from`) has its lowest CGAL id finite
+  // cell at c0.
+  void walk_edge(WalkState& st, int w, int c0, int from, int a, int b) {
+    int i0 = index_of_vertex(c0, a), j0 = index_of_vertex(c0, b);
+    if (i0 > j0) std::swap(i0, j0);
+    const int vi = cells_[c0].vertex[i0], vj = cells_[c0].vertex[j0];
+    if (c0 != from) circulate(st, c0, vi, vj);
+    const std::size_t first = st.arcs.size();
+    walk_ring(st, vi, vj);
+    if (st.arcs.size() > first)
+      st.edges.push_back({6 * static_cast<std::int64_t>(orig_[c0]) + local_edge(i0, j0), w, first, st.arcs.size()});
+  }
+
+  // The walk around the facet of (vi, vj) whose cells st.ring lists, from its first cell.
+  void walk_ring(WalkState& st, int vi, int vj) {
+    const std::vector<int>& ring = st.ring;
     const std::size_t m = ring.size();
     bool ccw = true;
     for (std::size_t p = 0; p < m; ++p) {
-      if (rt_.is_infinite(ring[p])) continue;
-      ccw = circulates_ccw(ring[p], ring[p]->index(vi), ring[p]->index(vj), ring[(p + 1) % m]);
+      if (infinite(ring[p])) continue;
+      ccw = circulates_ccw(ring[p], index_of_vertex(ring[p], vi), index_of_vertex(ring[p], vj), ring[(p + 1) % m]);
       break;
     }
     std::vector<Token>& tokens = st.tokens;
     tokens.clear();
     for (std::size_t p = 0; p < m; ++p) {
-      Cell c = ring[p];
-      const int f = c->index(ring[(p + 1) % m]);
-      if (data_[c->info()].zero) tokens.push_back({vertex_zero_node(c->info()), 0});
-      const EdgePattern& pat = facet_[4 * c->info() + f];
+      const int c = ring[p];
+      const int f = index_of_neighbor(c, ring[(p + 1) % m]);
+      if (zero(c)) tokens.push_back({vertex_zero_node(c), 0});
+      const EdgePattern& pat = facet_[4 * c + f];
       if (pat.empty) continue;
       tokens.push_back({kNone, pat.sign[0]});
       for (int r = 0; r < pat.roots; ++r) {
-        tokens.push_back({facet_node_[2 * (4 * c->info() + f) + r], 0});
+        tokens.push_back({facet_node_[2 * (4 * c + f) + r], 0});
         tokens.push_back({kNone, pat.sign[r + 1]});
       }
     }
@@ -421,19 +589,19 @@ class SpatialExtractor {
     auto link = [&]() -> const std::vector<RawPoint>& {
       if (!have_link) {
         st.link.clear();
-        for (Cell c : ring)
+        for (int c : ring)
           for (int k = 0; k < 4; ++k) {
-            Vertex v = c->vertex(k);
-            if (v != vi && v != vj && !rt_.is_infinite(v)) st.link.push_back(v->point().point());
+            const int v = cells_[c].vertex[k];
+            if (v != vi && v != vj && v != kInfiniteVertex) st.link.push_back(raw(v));
           }
         have_link = true;
       }
       return st.link;
     };
     const std::size_t first = st.arcs.size();
-    emit_arcs(tokens, st.scratch, site_of(vi), site_of(vj), sites_, st.arcs, [&] {
-      if (vi->point().point().z() == vj->point().point().z()) return false;  // U would show
-      return circle_centre_in_facet(vi->point().point(), vj->point().point(), link());
+    emit_arcs(tokens, st.scratch, vertex_site_[vi], vertex_site_[vj], sites_, st.arcs, [&] {
+      if (raw(vi).z() == raw(vj).z()) return false;  // U would show
+      return circle_centre_in_facet(raw(vi), raw(vj), link());
     });
     for (std::size_t k = first; k < st.arcs.size(); ++k)
       st.mends.push_back(ends_within_rounding(st.arcs[k], out_.nodes, sites_, extent_)

@@ -9,7 +9,8 @@
 
 namespace covmap::voronoi::engine {
 
-// Dimension 3: the general case (engine/extract_spatial.cpp).
+// Dimension 3: the general case (engine/extract_spatial.cpp). It copies what it needs of `rt` into
+// flat arrays and clears `rt` (releasing its memory) before extracting.
 void extract_spatial(const std::vector<Site>& sites, RegularTriangulation& rt, Diagram& out,
                      BuildStats& stats);
 // Dimension 2: all lifted sites coplanar, e.g. all weights equal (engine/extract_planar.cpp).

@@ -29,9 +29,10 @@ struct WalkScratch {
 // Appends the arcs of the site pair (si, sj) given the facet boundary walked counter-clockwise
 // around c_j - c_i. `full_inside` is consulted only when the walk has no zero point and lies
 // outside D: it must say whether the whole bisector lies inside the facet.
-template <class FullInside>
+// `Arcs` is a vector of Arc (any allocator).
+template <class Arcs, class FullInside>
 void emit_arcs(const std::vector<Token>& tokens, WalkScratch& scratch, int si, int sj,
-               const std::vector<Site>& sites, std::vector<Arc>& arcs, FullInside&& full_inside);
+               const std::vector<Site>& sites, Arcs& arcs, FullInside&& full_inside);
 
 // The arc of (si, sj) from node `from` to node `to` (kNone / kInfinityNode at infinity).
 Arc make_arc(int si, int sj, int from, int to, const std::vector<Site>& sites);
@@ -41,9 +42,9 @@ Arc make_arc(int si, int sj, int from, int to, const std::vector<Site>& sites);
 bool circle_centre_in_facet(const RawPoint& pi, const RawPoint& pj,
                             const std::vector<RawPoint>& link);
 
-template <class FullInside>
+template <class Arcs, class FullInside>
 void emit_arcs(const std::vector<Token>& tokens, WalkScratch& scratch, int si, int sj,
-               const std::vector<Site>& sites, std::vector<Arc>& arcs, FullInside&& full_inside) {
+               const std::vector<Site>& sites, Arcs& arcs, FullInside&& full_inside) {
   std::vector<int>& zeros = scratch.zeros;
   std::vector<int>& after = scratch.after;
   zeros.clear();
