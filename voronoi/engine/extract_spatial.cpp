@@ -27,6 +27,7 @@
 #include "voronoi/engine/edge_pattern.h"
 #include "voronoi/engine/extractors.h"
 #include "voronoi/engine/facet_walk.h"
+#include "voronoi/engine/flat_triangulation.h"
 #include "voronoi/engine/readable_arcs.h"
 #include "voronoi/engine/self_check.h"
 #include "voronoi/engine/triple_node.h"
@@ -39,51 +40,10 @@ namespace {
 
 using RT = RegularTriangulation;
 
-inline constexpr int kInfiniteVertex = -1;  // the infinite vertex in FlatCell::vertex
-
-// One cell of the triangulation: its vertices (vertex ids: the sites' Morton ranks, see
-// copy_triangulation; kInfiniteVertex for the infinite vertex) and, opposite vertex k, its
-// neighbour's id. 32 bytes, against CGAL's ~100 reached by pointers.
-struct FlatCell {
-  std::array<int, 4> vertex;
-  std::array<int, 4> neighbor;
-};
-
-// Per site, its rank along a Morton (Z-order) curve of the sites' positions, which lie in
-// (-1, 1) (build_diagram scales them so). Only memory layout depends on it.
-LargeVector<int> morton_ranks(const std::vector<Site>& sites) {
-  constexpr int kBits = 16;
-  constexpr double kScale = 1 << (kBits - 1);
-  auto quantize = [&](double v) {
-    return static_cast<std::uint32_t>(std::clamp((v + 1) * kScale, 0.0, 2 * kScale - 1));
-  };
-  auto spread = [](std::uint64_t v) {  // bit b of v to bit 2b
-    v = (v | (v << 16)) & 0x0000FFFF0000FFFFull;
-    v = (v | (v << 8)) & 0x00FF00FF00FF00FFull;
-    v = (v | (v << 4)) & 0x0F0F0F0F0F0F0F0Full;
-    v = (v | (v << 2)) & 0x3333333333333333ull;
-    v = (v | (v << 1)) & 0x5555555555555555ull;
-    return v;
-  };
-  LargeVector<std::uint64_t> keys(sites.size());
-  for (std::size_t i = 0; i < sites.size(); ++i)
-    keys[i] = ((spread(quantize(sites[i].x)) | (spread(quantize(sites[i].y)) << 1)) << 32) | i;
-  std::sort(keys.begin(), keys.end());
-  LargeVector<int> rank(sites.size());
-  for (std::size_t r = 0; r < keys.size(); ++r) rank[keys[r] & 0xFFFFFFFFu] = static_cast<int>(r);
-  return rank;
-}
-
 // Per cell: its power vertex (finite cells) or outward ray direction (infinite cells).
 struct CellData {
   Homog<Approx> v{};
   bool valid = false;  // v usable (else recompute with intervals or exactly when needed)
-};
-
-// Per cell flags, apart from the power vertices: the walks read only these.
-enum CellFlag : std::uint8_t {
-  kInfiniteCell = 1,
-  kZeroVertex = 2,  // the vertex is a zero point: on the paraboloid, or the direction U
 };
 
 class SpatialExtractor {
@@ -176,51 +136,15 @@ class SpatialExtractor {
     return power_vertex<NT>(s);
   }
 
-  // The flat copy of the triangulation, in CGAL's cell order; then the triangulation is released.
+  // The flat copy of the triangulation (flat_triangulation.h); the triangulation is released.
   void copy_triangulation() {
-    const std::size_t n = rt_.tds().number_of_cells();
-    cells_.resize(n);
-    orig_.resize(n);
-    by_orig_.resize(n);
-    flags_.assign(n, 0);
-    // Cells by the rank of their first-ranked site (a counting sort, CGAL's order within a rank).
-    // Vertices are numbered by their sites' Morton ranks, and their points stored in that order:
-    // the cells' vertices are then near in memory too.
-    const LargeVector<int> rank = morton_ranks(sites_);
-    points_.resize(sites_.size());
-    vertex_site_.resize(sites_.size());
-    for (std::size_t i = 0; i < sites_.size(); ++i) {
-      points_[rank[i]] = RawPoint(sites_[i].x, sites_[i].y, sites_[i].weight);
-      vertex_site_[rank[i]] = static_cast<int>(i);
-    }
-    LargeVector<int> first(sites_.size() + 1, 0);
-    int id = 0;
-    for (auto c = rt_.all_cells_begin(); c != rt_.all_cells_end(); ++c) {
-      int lowest = static_cast<int>(sites_.size());
-      for (int k = 0; k < 4; ++k)
-        if (!rt_.is_infinite(c->vertex(k))) lowest = std::min(lowest, rank[site_of(c->vertex(k))]);
-      c->info() = id;
-      by_orig_[id++] = lowest;
-      ++first[lowest + 1];
-    }
-    std::partial_sum(first.begin(), first.end(), first.begin());
-    for (std::size_t o = 0; o < n; ++o) {
-      const int cell = first[by_orig_[o]]++;
-      by_orig_[o] = cell;
-      orig_[cell] = static_cast<int>(o);
-    }
-    id = 0;
-    for (auto c = rt_.all_cells_begin(); c != rt_.all_cells_end(); ++c, ++id) {
-      const int cell = by_orig_[id];
-      FlatCell& f = cells_[cell];
-      for (int k = 0; k < 4; ++k) {
-        const RT::Vertex_handle v = c->vertex(k);
-        f.vertex[k] = rt_.is_infinite(v) ? kInfiniteVertex : rank[site_of(v)];
-        f.neighbor[k] = by_orig_[c->neighbor(k)->info()];
-      }
-      if (rt_.is_infinite(c)) flags_[cell] = kInfiniteCell;
-    }
-    rt_.clear();
+    FlatTriangulation flat = flatten_triangulation(sites_, rt_);
+    cells_ = std::move(flat.cells);
+    orig_ = std::move(flat.orig);
+    by_orig_ = std::move(flat.by_orig);
+    points_ = std::move(flat.points);
+    vertex_site_ = std::move(flat.vertex_site);
+    flags_ = std::move(flat.flags);
   }
 
   void compute_cells() {
