@@ -141,7 +141,13 @@ TEST(Audit, SameNumbersWhateverTheThreadCount) {
     EXPECT_EQ(a.sensors[k].position.y, b.sensors[k].position.y) << a.sensors[k].id;
     EXPECT_EQ(a.sensors[k].weight, b.sensors[k].weight) << a.sensors[k].id;
     EXPECT_EQ(a.sensors[k].verdict, b.sensors[k].verdict) << a.sensors[k].id;
+    // The two recomputed diagrams' comparisons run on two threads, or one.
+    EXPECT_EQ(a.sensors[k].iou_refined, b.sensors[k].iou_refined) << a.sensors[k].id;
+    EXPECT_EQ(a.sensors[k].iou_reported, b.sensors[k].iou_reported) << a.sensors[k].id;
   }
+  EXPECT_EQ(a.refined_agreement.mean_iou, b.refined_agreement.mean_iou);
+  ASSERT_TRUE(a.reported_agreement && b.reported_agreement);
+  EXPECT_EQ(a.reported_agreement->mean_iou, b.reported_agreement->mean_iou);
   EXPECT_EQ(a.messages, b.messages);
 }
 
