@@ -104,10 +104,10 @@ AuditedMap audit_map(const AuditCommandOptions& options, const AuditProgress& pr
                                      options.command_line, &ao};
   context.render.basemap_url = options.basemap_url;
   context.render.full_precision = options.full_precision;
-  auto files = report::render_audit_reports(context, options.format,
-                                                  [&](const std::string& file) { say("writing " + file); });
+  io::ReportFolderWriter folder(options.output_dir, options.force);
+  report::write_audit_reports(context, options.format, folder, [&](const std::string& file) { say("writing " + file); });
   say("moving the reports into place");
-  io::write_report_folder(options.output_dir, std::move(files), options.force);
+  folder.commit();
   audited.counts = report::count_verdicts(audited.result.sensors);
   return audited;
 }

@@ -10,6 +10,11 @@
 // - write_new_folder_atomically: `folder` must not exist; the files are written into a hidden
 //   temporary folder beside it which is then renamed to `folder` in one step.
 // - write_files_into_directory: write_files_atomically for files in one (possibly new) folder.
+// - StagedFiles / StagedFolder: the same two guarantees for outputs too large to hold in memory
+//   (a 3·10⁴-cell audit's reports are 0.3 GB): each file is written through a stream straight into
+//   its temporary as soon as it is ready, and commit() puts them all in place as above. Destroyed
+//   without commit() (an exception while rendering), they remove every temporary. stage() may be
+//   called from several threads at once.
 // Temporaries are named ".covmap-tmp-<pid>-<n>-<name>" and registered with io::PendingPath, so
 // SIGINT/SIGTERM remove them; after a SIGKILL, remove_stale_temporaries (output_plan.h) does.
 // Failures throw OutputError naming the output and the system's reason ("No space left on
@@ -19,12 +24,18 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <ostream>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace covmap::io {
+
+class PendingPath;  // io/interrupt_cleanup.h
 
 class OutputError : public std::runtime_error {
  public:
@@ -42,6 +53,44 @@ struct FileText {
 
 // File names (no folders) and their complete contents.
 using NamedTexts = std::vector<std::pair<std::string, std::string>>;
+
+// Writes one file's content to `out`; an exception abandons the whole output.
+using StreamWriter = std::function<void(std::ostream& out)>;
+
+struct Staged;
+
+// Files replaced together (write_files_atomically, file by file).
+class StagedFiles {
+ public:
+  StagedFiles();
+  ~StagedFiles();
+  StagedFiles(const StagedFiles&) = delete;
+  StagedFiles& operator=(const StagedFiles&) = delete;
+  void stage(const std::filesystem::path& target, const StreamWriter& write);
+  void commit();
+
+ private:
+  std::mutex mutex_;
+  std::vector<std::unique_ptr<Staged>> staged_;
+  bool committed_ = false;
+};
+
+// A new folder written file by file (write_new_folder_atomically); `folder` must not exist.
+class StagedFolder {
+ public:
+  explicit StagedFolder(const std::filesystem::path& folder);
+  ~StagedFolder();
+  StagedFolder(const StagedFolder&) = delete;
+  StagedFolder& operator=(const StagedFolder&) = delete;
+  void stage(const std::string& name, const StreamWriter& write);
+  void commit();
+
+ private:
+  std::filesystem::path folder_, temp_;
+  std::mutex mutex_;
+  std::vector<std::unique_ptr<PendingPath>> guards_;
+  bool committed_ = false;
+};
 
 void write_files_atomically(const std::vector<FileText>& files);
 void write_new_folder_atomically(const std::filesystem::path& folder, const NamedTexts& files);

@@ -148,28 +148,62 @@ void check_output_plan(const OutputPlan& plan) {
   }
 }
 
-void write_report_folder(const fs::path& given, NamedTexts files, bool force) {
-  const fs::path folder = normalized_output_path(given);
-  if (folder.has_parent_path()) remove_stale_temporaries(folder.parent_path());
+ReportFolderWriter::ReportFolderWriter(const fs::path& given, bool force) : folder_(normalized_output_path(given)) {
+  if (folder_.has_parent_path()) remove_stale_temporaries(folder_.parent_path());
   else remove_stale_temporaries(".");
-  const FolderLook look = checked_folder(folder, force);
+  const FolderLook look = checked_folder(folder_, force);
+  existing_ = look.state != FolderState::kMissing;
+  if (existing_) {
+    remove_stale_temporaries(folder_);
+    into_folder_ = std::make_unique<StagedFiles>();
+  } else {
+    new_folder_ = std::make_unique<StagedFolder>(folder_);
+  }
+}
+
+void ReportFolderWriter::add(const std::string& name, const StreamWriter& write) {
+  {
+    std::lock_guard lock(names_mutex_);
+    names_.push_back(name);
+  }
+  if (existing_) into_folder_->stage(folder_ / name, write);
+  else new_folder_->stage(name, write);
+}
+
+void ReportFolderWriter::add(const std::string& name, std::string text) {
+  add(name, [&text](std::ostream& out) { out.write(text.data(), static_cast<std::streamsize>(text.size())); });
+}
+
+void ReportFolderWriter::commit() {
   std::ostringstream marker;
   marker << kMarkerTitle << "\n";
-  for (const auto& [name, text] : files) marker << name << "\n";
-  // The marker joins the files themselves (no copy of their texts: a 3·10⁴-cell audit's are 0.3 GB).
-  files.emplace_back(kFolderMarker, marker.str());
-  if (look.state == FolderState::kMissing) {
-    write_new_folder_atomically(folder, files);
+  std::vector<std::string> names = names_;  // added from several threads: listed in a fixed order
+  std::sort(names.begin(), names.end());
+  for (const std::string& name : names) marker << name << "\n";
+  const std::string marker_text = marker.str();
+  const StreamWriter write_marker = [&marker_text](std::ostream& out) { out << marker_text; };
+  if (!existing_) {
+    new_folder_->stage(kFolderMarker, write_marker);
+    new_folder_->commit();
     return;
   }
-  remove_stale_temporaries(folder);
-  const std::vector<std::string> earlier = marker_listing(folder);
-  write_files_into_directory(folder, files);
+  const std::vector<std::string> earlier = marker_listing(folder_);
+  into_folder_->stage(folder_ / kFolderMarker, write_marker);
+  into_folder_->commit();
   for (const std::string& name : earlier) {
-    if (std::any_of(files.begin(), files.end(), [&](const auto& f) { return f.first == name; })) continue;
+    if (std::find(names_.begin(), names_.end(), name) != names_.end()) continue;
     std::error_code ignored;
-    if (fs::is_regular_file(folder / name, ignored)) fs::remove(folder / name, ignored);
+    if (fs::is_regular_file(folder_ / name, ignored)) fs::remove(folder_ / name, ignored);
   }
+}
+
+void write_report_folder(const fs::path& given, NamedTexts files, bool force) {
+  ReportFolderWriter writer(given, force);
+  for (auto& [name, text] : files) {
+    writer.add(name, std::move(text));
+    std::string().swap(text);
+  }
+  writer.commit();
 }
 
 int remove_stale_temporaries(const fs::path& dir) {

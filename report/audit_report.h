@@ -43,6 +43,7 @@
 #include <vector>
 
 #include "io/coverage_map.h"
+#include "io/output_plan.h"
 #include "audit/audit.h"
 
 namespace covmap::report {
@@ -113,12 +114,13 @@ std::optional<GisFormat> gis_format_from_name(std::string_view name);  // nullop
 // The files of an audit's report folder, in the order they are rendered: report.json, report.html,
 // then the GIS layers of `format`.
 std::vector<std::string> audit_report_file_names(GisFormat format);
-// Every file of the folder, rendered (nothing is written: io/output_plan.h writes them all or
-// nothing). `progress`, if set, hears the name of each file before it is rendered. Throws
-// std::runtime_error if GDAL cannot make the GeoPackage.
-std::vector<std::pair<std::string, std::string>> render_audit_reports(
-    const AuditReportContext& context, GisFormat format,
-    const std::function<void(const std::string& file)>& progress = {});
+// Every file of the folder, each written into `folder` as it is rendered (io/output_plan.h's
+// ReportFolderWriter, which the caller commits: all or nothing). The diagram layer, by far the
+// largest, is rendered on a second thread beside the others. `progress`, if set, hears the name of
+// each file before it is rendered. Throws std::runtime_error if GDAL cannot make the GeoPackage,
+// io::OutputError if a file cannot be written.
+void write_audit_reports(const AuditReportContext& context, GisFormat format, io::ReportFolderWriter& folder,
+                         const std::function<void(const std::string& file)>& progress = {});
 
 void write_audit_json(const AuditReportContext& context, std::ostream& out);       // report.json
 void write_audit_html(const AuditReportContext& context, std::ostream& out);       // report.html

@@ -57,46 +57,46 @@ std::vector<std::string> audit_report_file_names(GisFormat format) {
   return {};
 }
 
-std::vector<std::pair<std::string, std::string>> render_audit_reports(
-    const AuditReportContext& context, GisFormat format, const std::function<void(const std::string& file)>& progress) {
+void write_audit_reports(const AuditReportContext& context, GisFormat format, io::ReportFolderWriter& folder,
+                         const std::function<void(const std::string& file)>& progress) {
   const auto say = [&](const std::string& file) {
     if (progress) progress(file);
+  };
+  const auto streamed = [&folder](const std::string& name, Writer write, const AuditReportContext& c) {
+    folder.add(name, [write, &c](std::ostream& out) { write(c, out); });
   };
   // The layers of a GeoPackage are in the map's own CRS; GeoJSON is WGS84 (RFC 7946).
   AuditReportContext layer_context = context;
   layer_context.render.crs_coordinates = context.render.crs_coordinates || format == GisFormat::kGeoPackage;
-  // The diagram layer is by far the largest (58 MB of GeoJSON at 10⁴ cells) and reads only the
-  // finished result: it is rendered on a second thread while the others are.
-  std::future<std::string> diagram =
-      std::async(std::launch::async, [&layer_context] { return rendered(write_diagram_geojson, layer_context); });
-  std::vector<std::pair<std::string, std::string>> files;
-  say("report.json");
-  files.emplace_back("report.json", rendered(write_audit_json, context));
-  say("report.html");
-  files.emplace_back("report.html", rendered(write_audit_html, context));
-  struct Layer {
-    const char* name;
-    gis::LayerGeometry geometry;
-    Writer write;
-  };
-  const Layer layers[] = {{"sensors", gis::LayerGeometry::kPoint, write_sensors_geojson},
-                          {"shifts", gis::LayerGeometry::kLineString, write_shifts_geojson},
-                          {"diagram", gis::LayerGeometry::kMultiPolygon, nullptr}};
-  const auto layer_text = [&](const Layer& layer) {
-    return layer.write ? rendered(layer.write, layer_context) : diagram.get();
-  };
   if (format == GisFormat::kGeoJson) {
-    for (const Layer& layer : layers) {
-      say(std::string(layer.name) + ".geojson");
-      files.emplace_back(std::string(layer.name) + ".geojson", layer_text(layer));
-    }
-    return files;
+    // The diagram layer is by far the largest (58 MB at 10⁴ cells) and reads only the finished
+    // result: it is written on a second thread while the others are.
+    std::future<void> diagram = std::async(std::launch::async, [&] {
+      streamed("diagram.geojson", write_diagram_geojson, layer_context);
+    });
+    say("report.json");
+    streamed("report.json", write_audit_json, context);
+    say("report.html");
+    streamed("report.html", write_audit_html, context);
+    say("sensors.geojson");
+    streamed("sensors.geojson", write_sensors_geojson, layer_context);
+    say("shifts.geojson");
+    streamed("shifts.geojson", write_shifts_geojson, layer_context);
+    say("diagram.geojson");
+    diagram.get();
+    return;
   }
+  say("report.json");
+  streamed("report.json", write_audit_json, context);
+  say("report.html");
+  streamed("report.html", write_audit_html, context);
+  // GDAL makes the GeoPackage from the three layers as GeoJSON, in memory.
   say(kGeoPackageFile);
-  std::vector<gis::GeoJsonLayer> tables;
-  for (const Layer& layer : layers) tables.push_back({layer.name, layer.geometry, layer_text(layer)});
-  files.emplace_back(kGeoPackageFile, gis::geopackage_bytes(tables, geopackage_crs(context.map)));
-  return files;
+  const std::vector<gis::GeoJsonLayer> tables = {
+      {"sensors", gis::LayerGeometry::kPoint, rendered(write_sensors_geojson, layer_context)},
+      {"shifts", gis::LayerGeometry::kLineString, rendered(write_shifts_geojson, layer_context)},
+      {"diagram", gis::LayerGeometry::kMultiPolygon, rendered(write_diagram_geojson, layer_context)}};
+  folder.add(kGeoPackageFile, gis::geopackage_bytes(tables, geopackage_crs(context.map)));
 }
 
 }  // namespace covmap::report

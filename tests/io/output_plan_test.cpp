@@ -106,5 +106,64 @@ TEST(OutputPlan, LeftoversOfKilledRunsAreRemovedAndNothingElse) {
   EXPECT_FALSE(fs::exists(dir / "out.tmp-12"));
 }
 
+// Files written as they are produced: nothing shows until commit(); a failure half-way (a writer
+// throwing after part of its file) leaves no trace in a new folder and the old version in an
+// existing one.
+TEST(ReportFolderWriter, StreamedFilesAppearOnlyOnCommit) {
+  TempDir dir;
+  {
+    ReportFolderWriter writer(dir / "out", false);
+    writer.add("big.geojson", [](std::ostream& out) {
+      for (int i = 0; i < 100000; ++i) out << i << ",";
+    });
+    writer.add("report.json", std::string("{}"));
+    EXPECT_FALSE(fs::exists(dir / "out"));
+    writer.commit();
+  }
+  const std::string big = read_text(dir / "out" / "big.geojson");
+  EXPECT_EQ(big.substr(0, 6), "0,1,2,");
+  EXPECT_EQ(big.substr(big.size() - 6), "99999,");
+  // The marker lists both, so a later run may replace them.
+  const std::string marker = read_text(dir / "out" / kFolderMarker);
+  EXPECT_NE(marker.find("big.geojson\n"), std::string::npos);
+  EXPECT_NE(marker.find("report.json\n"), std::string::npos);
+}
+
+TEST(ReportFolderWriter, AWriterFailingHalfWayLeavesNothingInANewFolder) {
+  TempDir dir;
+  EXPECT_THROW(
+      {
+        ReportFolderWriter writer(dir / "out", false);
+        writer.add("report.json", std::string("{}"));
+        writer.add("diagram.geojson", [](std::ostream& out) {
+          out << "{\"type\":";
+          throw std::runtime_error("renderer failed");
+        });
+        writer.commit();
+      },
+      std::runtime_error);
+  EXPECT_TRUE(fs::is_empty(dir.path()));  // no folder, no temporaries
+}
+
+TEST(ReportFolderWriter, AWriterFailingHalfWayKeepsTheEarlierReports) {
+  TempDir dir;
+  write_report_folder(dir / "out", kReports, false);
+  dir.write("out/mine.txt", "the user's");
+  EXPECT_THROW(
+      {
+        ReportFolderWriter writer(dir / "out", true);
+        writer.add("report.json", std::string("{\"new\":1}"));
+        writer.add("report.html", [](std::ostream&) { throw std::runtime_error("renderer failed"); });
+        writer.commit();
+      },
+      std::runtime_error);
+  EXPECT_EQ(read_text(dir / "out" / "report.json"), "{}");
+  EXPECT_EQ(read_text(dir / "out" / "report.html"), "<html>");
+  EXPECT_EQ(read_text(dir / "out" / "mine.txt"), "the user's");
+  size_t entries = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir / "out")) ++entries;
+  EXPECT_EQ(entries, 4u);  // report.json, report.html, the marker, mine.txt: no temporaries
+}
+
 }  // namespace
 }  // namespace covmap::io
