@@ -31,9 +31,10 @@
 // of log(|q − s_i| / |q − s_j|) + log w_j over its samples q). A solution that leaves a free site
 // outside its own cell or on another site is a degenerate minimum and is never taken; among the
 // others the lowest cost wins. Sensors are taken in index order, each re-solve seeing the ones
-// before, and a suspect solved as a neighbour of an earlier one is done; a suspect's starts are
-// solved concurrently (each alone, on one thread) and compared in start order: the result does not
-// depend on threads or timing.
+// before, and a suspect solved as a neighbour of an earlier one is done. Suspects whose
+// neighbourhoods share no sensor cannot see each other, so they run at once in waves
+// (resolve_misplaced), every start of each on its own thread, compared in start order: the result
+// is the sequence's, whatever the threads or timing.
 #include <algorithm>
 #include <cmath>
 #include <exception>
@@ -336,32 +337,69 @@ void resolve_misplaced(const RefinementSetup& setup, const SiteEstimates& estima
                        " sensors looked stuck in local minima: too many for local causes; not solved again locally");
     return;
   }
-  std::vector<int> local_of(n, -1);
   int resolved = 0, moved = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (suspect[i] == Suspicion::kNone) continue;
-    ++resolved;
-    const Neighbourhood nb = neighbourhood(setup, adj, sites, i, local_of);
-    // The starts are independent solves: on the refinement's threads, compared in start order.
-    const std::vector<std::vector<Site>> starts = local_starts(setup, estimates, cells, raster, reported_of, adj, sites, nb);
-    std::vector<LocalResult> solved(starts.size());
-    parallel_items(starts.size(), setup.options.threads, [&](std::size_t k) {
-      solved[k] = solve_from(setup, nb, starts[k], refined.range);
-      solved[k].admissible = !solved[k].sites.empty() && admissible(setup, cells, raster, adj, nb, solved[k].sites);
+  // The suspects' re-solves in index order, each seeing the ones before, but run wave by wave: a
+  // wave takes, in index order, every remaining suspect whose neighbourhood (free and held sensors)
+  // shares no sensor with that of any earlier remaining suspect. Such a re-solve reads nothing an
+  // earlier one writes, and writes nothing a later one reads (nor marks it done), so the wave's
+  // re-solves may run at once and the result is the one of the plain sequence, bit for bit. On a
+  // large map nearly all suspects are far apart: most go in the first wave, on every thread.
+  std::vector<std::size_t> remaining;
+  for (std::size_t i = 0; i < n; ++i)
+    if (suspect[i] != Suspicion::kNone) remaining.push_back(i);
+  std::vector<int> local_of(n, -1);
+  std::vector<char> claimed(n, 0);
+  while (!remaining.empty()) {
+    std::vector<std::size_t> wave, deferred;
+    std::vector<Neighbourhood> hoods;
+    std::vector<int> touched;
+    for (std::size_t i : remaining) {
+      if (suspect[i] == Suspicion::kNone) continue;  // done as an earlier suspect's neighbour
+      Neighbourhood nb = neighbourhood(setup, adj, sites, i, local_of);
+      const bool free_of_earlier = std::none_of(nb.sensors.begin(), nb.sensors.end(), [&](int j) { return claimed[j] != 0; });
+      for (int j : nb.sensors)
+        if (!claimed[j]) claimed[j] = 1, touched.push_back(j);
+      if (!free_of_earlier) {
+        deferred.push_back(i);
+        continue;
+      }
+      wave.push_back(i);
+      hoods.push_back(std::move(nb));
+    }
+    for (int j : touched) claimed[j] = 0;
+    // Every start of every re-solve of the wave is an independent solve: on the refinement's
+    // threads, each compared with its own suspect's other starts in start order.
+    std::vector<std::vector<std::vector<Site>>> starts;
+    std::vector<std::pair<std::size_t, std::size_t>> items;  // (wave member, start)
+    for (std::size_t w = 0; w < wave.size(); ++w) {
+      starts.push_back(local_starts(setup, estimates, cells, raster, reported_of, adj, sites, hoods[w]));
+      for (std::size_t k = 0; k < starts.back().size(); ++k) items.emplace_back(w, k);
+    }
+    std::vector<LocalResult> solved(items.size());
+    parallel_items(items.size(), setup.options.threads, [&](std::size_t t) {
+      const auto [w, k] = items[t];
+      solved[t] = solve_from(setup, hoods[w], starts[w][k], refined.range);
+      solved[t].admissible = !solved[t].sites.empty() && admissible(setup, cells, raster, adj, hoods[w], solved[t].sites);
     });
-    LocalResult best;
-    int which = -1;
-    for (std::size_t k = 0; k < solved.size(); ++k)
-      if (better(solved[k], best)) best = std::move(solved[k]), which = static_cast<int>(k);
-    if (best.sites.empty() || !best.admissible) continue;  // nothing better than a degenerate minimum
-    for (std::size_t l = 0; l < nb.free; ++l) sites[nb.sensors[l]] = best.sites[l];
-    // Its neighbours were solved with it, from the same starts: a later suspect among them is done.
-    // So is an island host anywhere in the free set (it was solved from its centroid with its
-    // island); a misfit two rings away needs starts of its own (measured: one ended 3.1 bins off).
-    for (int j : adj.neighbours[i]) suspect[j] = Suspicion::kNone;
-    for (std::size_t l = 0; l < nb.free; ++l)
-      if (suspect[nb.sensors[l]] == Suspicion::kIslandHost) suspect[nb.sensors[l]] = Suspicion::kNone;
-    moved += which > 0;
+    for (std::size_t w = 0, t = 0; w < wave.size(); ++w) {
+      const std::size_t i = wave[w];
+      const Neighbourhood& nb = hoods[w];
+      ++resolved;
+      LocalResult best;
+      int which = -1;
+      for (std::size_t k = 0; k < starts[w].size(); ++k, ++t)
+        if (better(solved[t], best)) best = std::move(solved[t]), which = static_cast<int>(k);
+      if (best.sites.empty() || !best.admissible) continue;  // nothing better than a degenerate minimum
+      for (std::size_t l = 0; l < nb.free; ++l) sites[nb.sensors[l]] = best.sites[l];
+      // Its neighbours were solved with it, from the same starts: a later suspect among them is
+      // done. So is an island host anywhere in the free set (it was solved from its centroid with
+      // its island); a misfit two rings away needs starts of its own (measured: one ended 3.1 bins off).
+      for (int j : adj.neighbours[i]) suspect[j] = Suspicion::kNone;
+      for (std::size_t l = 0; l < nb.free; ++l)
+        if (suspect[nb.sensors[l]] == Suspicion::kIslandHost) suspect[nb.sensors[l]] = Suspicion::kNone;
+      moved += which > 0;
+    }
+    remaining = std::move(deferred);
   }
   if (resolved)
     messages.push_back(std::to_string(resolved) +
