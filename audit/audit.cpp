@@ -98,12 +98,12 @@ AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSen
   out.boundary_samples = setup.samples.size();
   StageTimer timer(t0, out.timings);
   timer.lap("cleaning and starting values");
-  fitting::RefineResult refined = multi_start_refinement(setup, estimates, start, cells, raster, reported_of, out.messages);
+  fitting::RefineResult refined = multi_start_refinement(setup, estimates, start, cells, raster, reported_of,
+                                                         out.messages, [&](const std::string& part) { timer.lap(part); });
   check_range_edges(setup, refined, cells, options, out.cleaned, out.messages);
   out.boundary_samples = setup.samples.size();
   out.refinement_summary = refined.summary.brief();
   out.refinement_converged = refined.summary.converged;
-  timer.lap(setup.n <= tolerance::kMultiStartSensors ? "refinement (several starts)" : "refinement");
   progress("verification", 0.7);
 
   // 4. Powers and the common factor of weights; 5. per sensor: reconstruction, uncertainty, verdict.

@@ -11,6 +11,8 @@
 //   recomputed diagrams    recomputed_diagrams.cpp     diagrams of the sensors and their agreement
 #pragma once
 
+#include <functional>
+
 #include <cstddef>
 #include <map>
 #include <optional>
@@ -91,11 +93,13 @@ fitting::RefineResult refine_from(const RefinementSetup& setup, std::vector<Site
                                   const std::vector<Point>& centroids, std::vector<std::string>& messages);
 
 // The refinement from several starts (on maps small enough), then the restarts of sensors that
-// escaped their cells, then the local re-solves (resolve_misplaced).
+// escaped their cells, then the local re-solves (resolve_misplaced). `lap`, if set, hears the name
+// of each of these three parts as it ends (the audit's stage times).
 fitting::RefineResult multi_start_refinement(const RefinementSetup& setup, const SiteEstimates& estimates,
                                              const std::vector<Site>& start, const MapCells& cells,
                                              const MapRaster& raster, const ReportedOf& reported_of,
-                                             std::vector<std::string>& messages);
+                                             std::vector<std::string>& messages,
+                                             const std::function<void(const std::string& part)>& lap = {});
 
 // ---- Range edges the fit does not bear out (range_edge_check.cpp) ----
 

@@ -56,7 +56,11 @@ void restart_escaped(const RefinementSetup& setup, const MapCells& cells, const 
 fitting::RefineResult multi_start_refinement(const RefinementSetup& setup, const SiteEstimates& estimates,
                                              const std::vector<Site>& start, const MapCells& cells,
                                              const MapRaster& raster, const ReportedOf& reported_of,
-                                             std::vector<std::string>& messages) {
+                                             std::vector<std::string>& messages,
+                                             const std::function<void(const std::string& part)>& lap) {
+  const auto lapped = [&lap](const std::string& part) {
+    if (lap) lap(part);
+  };
   const std::size_t n = setup.n;
   const std::vector<Point>& centroids = cells.centroids;
   const bool multi_start = n <= tolerance::kMultiStartSensors;
@@ -94,8 +98,11 @@ fitting::RefineResult multi_start_refinement(const RefinementSetup& setup, const
                          std::to_string(solved[k].summary.final_cost) + " < " + std::to_string(refined.summary.final_cost) + ")");
     refined = std::move(solved[k]);
   }
+  lapped(multi_start ? "refinement (several starts)" : "refinement");
   restart_escaped(setup, cells, raster, refined, messages);
+  lapped("refinement: restarts of escaped sensors");
   resolve_misplaced(setup, estimates, cells, raster, reported_of, refined, messages);
+  lapped("refinement: local re-solves");
   // The re-solves moved sites: the residuals the model fit and the range-edge check read must be
   // those of the sites returned.
   if (refined.sample_residual.size() == setup.samples.size())

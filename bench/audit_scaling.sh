@@ -15,7 +15,7 @@ sizes=("$@")
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 
-echo "| cells | vertices | read | cleaning | refinement | diagrams | reports | audit wall | user | peak RSS | reference (engine, 10⁵ sites) |"
+echo "| cells | vertices | read | cleaning | refinement (joint / restarts / local re-solves) | diagrams | reports | audit wall | user | peak RSS | reference (engine, 10⁵ sites) |"
 echo "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
 for n in "${sizes[@]}"; do
   side=$(python3 -c "import math; print(round(2 * math.sqrt($n), 3))")
@@ -42,9 +42,15 @@ peak_mib = int(field("Maximum resident set size (kbytes)")) / 1024
 reports = wall - r["timings"]["seconds"]  # the rest of the process: writing the reports, start-up
 def s(name):
     return "%.1f s" % stages[name] if name in stages else "–"
+def refinement():
+    parts = [stages.get(name, 0.0) for name in ("refinement", "refinement (several starts)")]
+    joint = sum(parts)
+    restarts = stages.get("refinement: restarts of escaped sensors", 0.0)
+    local = stages.get("refinement: local re-solves", 0.0)
+    return "%.1f s (%.1f / %.1f / %.1f)" % (joint + restarts + local, joint, restarts, local)
 print("| %s | %s | %s | %s | %s | %s | %.1f s | **%.1f s** | %.1f s | %.0f MiB | %s |" % (
     f"{int(r['map']['cells']):,}".replace(",", " "), f"{int(r['map']['vertices']):,}".replace(",", " "),
-    s("reading map and sensors"), s("cleaning and starting values"), s("refinement"),
+    s("reading map and sensors"), s("cleaning and starting values"), refinement(),
     s("recomputed diagrams and comparison"), reports, wall, user, peak_mib, reference))
 PY
 done
