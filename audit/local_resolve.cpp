@@ -38,6 +38,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <functional>
 #include <map>
 #include <utility>
 
@@ -317,6 +318,71 @@ Suspicion suspicion(const RefinementSetup& setup, const MapCells& cells, const M
   return island ? Suspicion::kIslandHost : Suspicion::kNone;
 }
 
+// The re-solves of `suspects` (in index order), each seeing the ones before, run wave by wave: a
+// wave takes, in index order, every remaining suspect whose neighbourhood (free and held sensors)
+// shares no sensor with that of any earlier remaining suspect. Such a re-solve reads nothing an
+// earlier one writes, and writes nothing a later one reads (nor marks it done), so the wave's
+// re-solves may run at once and the result is the one of the plain sequence, bit for bit. On a
+// large map nearly all suspects are far apart: most go in the first wave, on every thread.
+// still_suspect(i): false for a suspect an earlier one's re-solve settled. starts_of(nb): the
+// starts of a neighbourhood. take(i, nb, best, which): the best solution of suspect i (which: its
+// start), in index order; it may write the free sensors of nb and settle others.
+struct WaveSteps {
+  std::function<bool(std::size_t i)> still_suspect;
+  std::function<std::vector<std::vector<Site>>(const Neighbourhood& nb)> starts_of;
+  std::function<void(std::size_t i, const Neighbourhood& nb, LocalResult& best, int which)> take;
+};
+
+void solve_in_waves(const RefinementSetup& setup, const MapCells& cells, const MapRaster& raster,
+                    const Adjacency& adj, const fitting::RefineResult& refined, std::vector<std::size_t> remaining,
+                    const WaveSteps& steps) {
+  const std::size_t n = setup.n;
+  const std::vector<Site>& sites = refined.sites;
+  std::vector<int> local_of(n, -1);
+  std::vector<char> claimed(n, 0);
+  while (!remaining.empty()) {
+    std::vector<std::size_t> wave, deferred;
+    std::vector<Neighbourhood> hoods;
+    std::vector<int> touched;
+    for (std::size_t i : remaining) {
+      if (!steps.still_suspect(i)) continue;
+      Neighbourhood nb = neighbourhood(setup, adj, sites, i, local_of);
+      const bool free_of_earlier = std::none_of(nb.sensors.begin(), nb.sensors.end(), [&](int j) { return claimed[j] != 0; });
+      for (int j : nb.sensors)
+        if (!claimed[j]) claimed[j] = 1, touched.push_back(j);
+      if (!free_of_earlier) {
+        deferred.push_back(i);
+        continue;
+      }
+      wave.push_back(i);
+      hoods.push_back(std::move(nb));
+    }
+    for (int j : touched) claimed[j] = 0;
+    // Every start of every re-solve of the wave is an independent solve: on the refinement's
+    // threads, each compared with its own suspect's other starts in start order.
+    std::vector<std::vector<std::vector<Site>>> starts;
+    std::vector<std::pair<std::size_t, std::size_t>> items;  // (wave member, start)
+    for (std::size_t w = 0; w < wave.size(); ++w) {
+      starts.push_back(steps.starts_of(hoods[w]));
+      for (std::size_t k = 0; k < starts.back().size(); ++k) items.emplace_back(w, k);
+    }
+    std::vector<LocalResult> solved(items.size());
+    parallel_items(items.size(), setup.options.threads, [&](std::size_t t) {
+      const auto [w, k] = items[t];
+      solved[t] = solve_from(setup, hoods[w], starts[w][k], refined.range);
+      solved[t].admissible = !solved[t].sites.empty() && admissible(setup, cells, raster, adj, hoods[w], solved[t].sites);
+    });
+    for (std::size_t w = 0, t = 0; w < wave.size(); ++w) {
+      LocalResult best;
+      int which = -1;
+      for (std::size_t k = 0; k < starts[w].size(); ++k, ++t)
+        if (better(solved[t], best)) best = std::move(solved[t]), which = static_cast<int>(k);
+      steps.take(wave[w], hoods[w], best, which);
+    }
+    remaining = std::move(deferred);
+  }
+}
+
 }  // namespace
 
 void resolve_misplaced(const RefinementSetup& setup, const SiteEstimates& estimates, const MapCells& cells,
@@ -338,69 +404,27 @@ void resolve_misplaced(const RefinementSetup& setup, const SiteEstimates& estima
     return;
   }
   int resolved = 0, moved = 0;
-  // The suspects' re-solves in index order, each seeing the ones before, but run wave by wave: a
-  // wave takes, in index order, every remaining suspect whose neighbourhood (free and held sensors)
-  // shares no sensor with that of any earlier remaining suspect. Such a re-solve reads nothing an
-  // earlier one writes, and writes nothing a later one reads (nor marks it done), so the wave's
-  // re-solves may run at once and the result is the one of the plain sequence, bit for bit. On a
-  // large map nearly all suspects are far apart: most go in the first wave, on every thread.
-  std::vector<std::size_t> remaining;
+  std::vector<std::size_t> order;
   for (std::size_t i = 0; i < n; ++i)
-    if (suspect[i] != Suspicion::kNone) remaining.push_back(i);
-  std::vector<int> local_of(n, -1);
-  std::vector<char> claimed(n, 0);
-  while (!remaining.empty()) {
-    std::vector<std::size_t> wave, deferred;
-    std::vector<Neighbourhood> hoods;
-    std::vector<int> touched;
-    for (std::size_t i : remaining) {
-      if (suspect[i] == Suspicion::kNone) continue;  // done as an earlier suspect's neighbour
-      Neighbourhood nb = neighbourhood(setup, adj, sites, i, local_of);
-      const bool free_of_earlier = std::none_of(nb.sensors.begin(), nb.sensors.end(), [&](int j) { return claimed[j] != 0; });
-      for (int j : nb.sensors)
-        if (!claimed[j]) claimed[j] = 1, touched.push_back(j);
-      if (!free_of_earlier) {
-        deferred.push_back(i);
-        continue;
-      }
-      wave.push_back(i);
-      hoods.push_back(std::move(nb));
-    }
-    for (int j : touched) claimed[j] = 0;
-    // Every start of every re-solve of the wave is an independent solve: on the refinement's
-    // threads, each compared with its own suspect's other starts in start order.
-    std::vector<std::vector<std::vector<Site>>> starts;
-    std::vector<std::pair<std::size_t, std::size_t>> items;  // (wave member, start)
-    for (std::size_t w = 0; w < wave.size(); ++w) {
-      starts.push_back(local_starts(setup, estimates, cells, raster, reported_of, adj, sites, hoods[w]));
-      for (std::size_t k = 0; k < starts.back().size(); ++k) items.emplace_back(w, k);
-    }
-    std::vector<LocalResult> solved(items.size());
-    parallel_items(items.size(), setup.options.threads, [&](std::size_t t) {
-      const auto [w, k] = items[t];
-      solved[t] = solve_from(setup, hoods[w], starts[w][k], refined.range);
-      solved[t].admissible = !solved[t].sites.empty() && admissible(setup, cells, raster, adj, hoods[w], solved[t].sites);
-    });
-    for (std::size_t w = 0, t = 0; w < wave.size(); ++w) {
-      const std::size_t i = wave[w];
-      const Neighbourhood& nb = hoods[w];
-      ++resolved;
-      LocalResult best;
-      int which = -1;
-      for (std::size_t k = 0; k < starts[w].size(); ++k, ++t)
-        if (better(solved[t], best)) best = std::move(solved[t]), which = static_cast<int>(k);
-      if (best.sites.empty() || !best.admissible) continue;  // nothing better than a degenerate minimum
-      for (std::size_t l = 0; l < nb.free; ++l) sites[nb.sensors[l]] = best.sites[l];
-      // Its neighbours were solved with it, from the same starts: a later suspect among them is
-      // done. So is an island host anywhere in the free set (it was solved from its centroid with
-      // its island); a misfit two rings away needs starts of its own (measured: one ended 3.1 bins off).
-      for (int j : adj.neighbours[i]) suspect[j] = Suspicion::kNone;
-      for (std::size_t l = 0; l < nb.free; ++l)
-        if (suspect[nb.sensors[l]] == Suspicion::kIslandHost) suspect[nb.sensors[l]] = Suspicion::kNone;
-      moved += which > 0;
-    }
-    remaining = std::move(deferred);
-  }
+    if (suspect[i] != Suspicion::kNone) order.push_back(i);
+  WaveSteps steps;
+  steps.still_suspect = [&](std::size_t i) { return suspect[i] != Suspicion::kNone; };
+  steps.starts_of = [&](const Neighbourhood& nb) {
+    return local_starts(setup, estimates, cells, raster, reported_of, adj, sites, nb);
+  };
+  steps.take = [&](std::size_t i, const Neighbourhood& nb, LocalResult& best, int which) {
+    ++resolved;
+    if (best.sites.empty() || !best.admissible) return;  // nothing better than a degenerate minimum
+    for (std::size_t l = 0; l < nb.free; ++l) sites[nb.sensors[l]] = best.sites[l];
+    // Its neighbours were solved with it, from the same starts: a later suspect among them is
+    // done. So is an island host anywhere in the free set (it was solved from its centroid with
+    // its island); a misfit two rings away needs starts of its own (measured: one ended 3.1 bins off).
+    for (int j : adj.neighbours[i]) suspect[j] = Suspicion::kNone;
+    for (std::size_t l = 0; l < nb.free; ++l)
+      if (suspect[nb.sensors[l]] == Suspicion::kIslandHost) suspect[nb.sensors[l]] = Suspicion::kNone;
+    moved += which > 0;
+  };
+  solve_in_waves(setup, cells, raster, adj, refined, std::move(order), steps);
   if (resolved)
     messages.push_back(std::to_string(resolved) +
                        " sensor(s) outside their own cell, with a weight far from their neighbours', merged with a "
