@@ -1,8 +1,12 @@
 #include "fitting/problem_setup.h"
 
+#include "fitting/boundary_group_cost.h"
+
 #include <cmath>
 #include <algorithm>
+#include <map>
 #include <numeric>
+#include <utility>
 
 #include <ceres/manifold.h>
 
@@ -85,7 +89,8 @@ BuiltProblem build_problem(std::vector<SiteBlock>& blocks, double* log_range, co
                            ceres::LossFunction* loss, std::span<const double> sample_factor) {
   ceres::Problem::Options problem_options;
   problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-  BuiltProblem built{std::make_unique<ceres::Problem>(problem_options), {}};
+  BuiltProblem built;
+  built.problem = std::make_unique<ceres::Problem>(problem_options);
   ceres::Problem& problem = *built.problem;
   // Blocks in site order, so the covariance and diagnostics see a stable column order.
   for (std::size_t i = 0; i < blocks.size(); ++i) {
@@ -93,17 +98,39 @@ BuiltProblem build_problem(std::vector<SiteBlock>& blocks, double* log_range, co
   }
   if (layout.range) problem.AddParameterBlock(log_range, 1);
   if (layout.range && layout.hold_range) problem.SetParameterBlockConstant(log_range);
-  built.sample_blocks.reserve(samples.size());
+  built.sample_blocks.resize(samples.size());
+  // Under a loss, a pair's boundary samples form one block (boundary_group_cost.h); without one
+  // (the covariance problem) each sample is its own.
+  std::map<std::pair<int, int>, std::size_t> pair_of;
+  std::vector<std::vector<std::size_t>> pairs;
   for (std::size_t i = 0; i < samples.size(); ++i) {
     const BoundarySample& s = samples[i];
     const double factor = sample_factor.empty() ? 1.0 : sample_factor[i];
     if (s.site_b == kNone) {
-      built.sample_blocks.push_back(problem.AddResidualBlock(RangeResidual::Create(s.p.x, s.p.y, factor / s.sigma), loss,
-                                                             blocks[s.site_a].data(), log_range));
-      continue;
+      built.sample_blocks[i] = problem.AddResidualBlock(RangeResidual::Create(s.p.x, s.p.y, factor / s.sigma), loss,
+                                                        blocks[s.site_a].data(), log_range);
+    } else if (loss == nullptr) {
+      built.sample_blocks[i] = problem.AddResidualBlock(BoundaryResidual::Create(s.p.x, s.p.y, factor / s.sigma),
+                                                        nullptr, blocks[s.site_a].data(), blocks[s.site_b].data());
+    } else {
+      const auto [at, added] = pair_of.try_emplace({s.site_a, s.site_b}, pairs.size());
+      if (added) pairs.emplace_back();
+      pairs[at->second].push_back(i);
     }
-    built.sample_blocks.push_back(problem.AddResidualBlock(BoundaryResidual::Create(s.p.x, s.p.y, factor / s.sigma),
-                                                           loss, blocks[s.site_a].data(), blocks[s.site_b].data()));
+  }
+  for (const std::vector<std::size_t>& members : pairs) {
+    std::vector<PairSample> points;
+    points.reserve(members.size());
+    for (std::size_t i : members) {
+      const double factor = sample_factor.empty() ? 1.0 : sample_factor[i];
+      points.push_back({samples[i].p.x, samples[i].p.y, factor / samples[i].sigma});
+    }
+    auto* cost = new PairCost(std::move(points), loss);
+    built.pair_losses.push_back(std::make_unique<PairLoss>(cost));
+    const BoundarySample& first = samples[members.front()];
+    const ceres::ResidualBlockId id = problem.AddResidualBlock(cost, built.pair_losses.back().get(),
+                                                               blocks[first.site_a].data(), blocks[first.site_b].data());
+    for (std::size_t i : members) built.sample_blocks[i] = id;
   }
   for (const SitePrior& p : priors) {
     if (layout.sample_count[p.site] == 0) continue;  // unobserved sites are set from priors directly

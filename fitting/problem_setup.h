@@ -37,13 +37,15 @@ Layout make_layout(std::span<const Site> initial, std::span<const BoundarySample
 std::vector<SiteBlock> initial_blocks(std::span<const Site> initial);
 
 struct BuiltProblem {
+  std::vector<std::unique_ptr<ceres::LossFunction>> pair_losses;  // of the pair blocks; outlive the problem
   std::unique_ptr<ceres::Problem> problem;
-  std::vector<ceres::ResidualBlockId> sample_blocks;  // per sample, in order
+  std::vector<ceres::ResidualBlockId> sample_blocks;  // per sample, in order: the block holding it
 };
 
 // Blocks of the sites with samples (and `log_range`, ρ = log R, when layout.range), one residual
 // per sample (its 1/σ times sample_factor[i], or times 1 when sample_factor is empty) under `loss`
-// (not owned; may be nullptr), their priors, and the gauge (a SubsetManifold holding u of each
+// (not owned; may be nullptr; with a loss, the boundary samples of each pair of sites share one
+// block, each still under its own loss: boundary_group_cost.h), their priors, and the gauge (a SubsetManifold holding u of each
 // group_reference). `blocks` and `log_range` must outlive the problem.
 BuiltProblem build_problem(std::vector<SiteBlock>& blocks, double* log_range, const Layout& layout,
                            std::span<const BoundarySample> samples, std::span<const SitePrior> priors,
