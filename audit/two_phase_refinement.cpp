@@ -77,6 +77,7 @@ fitting::RefineResult refine_from(const RefinementSetup& setup, std::vector<Site
   quick.compute_covariance = false;
   fitting::RefineOptions first = quick;
   first.inner_iterations = true;  // phase 1 has weight priors, no held reference: allowed
+  first.function_tolerance = tolerance::kPhase1FunctionTolerance;
   quick.nonmonotonic_steps = true;
   // Phase 2 starts at phase 1's optimum and only releases the weights' priors: a few dozen
   // iterations settle it; its long tail (cost changes of parts in 10⁵) is cut off.
