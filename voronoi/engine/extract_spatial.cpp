@@ -248,37 +248,47 @@ class SpatialExtractor {
     std::sort(all.begin(), all.end(),
               [](const Union& a, const Union& b) { return a.cell != b.cell ? a.cell < b.cell : a.facet < b.facet; });
     for (const Union& u : all) uf_[find(u.cell)] = find(u.neighbor);
-    // Pass 2: number the crossing nodes in a fixed order, then place them in parallel.
-    struct Job {
-      int cell, facet, root, node;
+    // Pass 2: the crossing nodes are numbered in CGAL's cell order, facet by facet, and placed. In
+    // parallel over contiguous ranges of CGAL ids: each worker first counts the nodes of its
+    // range, so that it knows where its numbers start, then numbers and places them (each facet
+    // is handled by the worker holding its lower-id cell). The numbers are those of one
+    // sequential pass.
+    const auto numbered = [&](int c, int f) {  // how many nodes facet entry (c, f) numbers
+      const int nk = cells_[c].neighbor[f];
+      const EdgePattern& p = facet_[4 * c + f];
+      if (orig_[nk] < orig_[c] || p.empty) return 0;
+      // On an edge at infinity (between two directions) the only possible zero is U: no node.
+      return infinite(c) && infinite(nk) ? 0 : static_cast<int>(p.roots);
     };
-    std::vector<Job> jobs;
-    int next = static_cast<int>(out_.nodes.size());
-    for (std::size_t o = 0; o < cells_.size(); ++o) {
-      const int c = by_orig_[o];
-      for (int f = 0; f < 4; ++f) {
-        const int nk = cells_[c].neighbor[f];
-        if (orig_[nk] < orig_[c]) continue;
-        const EdgePattern& p = facet_[4 * c + f];
-        if (p.empty || p.roots == 0) continue;
-        // On an edge at infinity (between two directions) the only possible zero is U.
-        const bool at_infinity = infinite(c) && infinite(nk);
-        const int mirror = index_of_neighbor(nk, c);
-        const int first = at_infinity ? kInfinityNode : next;
-        if (!at_infinity)
-          for (int r = 0; r < p.roots; ++r) jobs.push_back({c, f, r, next++});
-        facet_first_[4 * c + f] = first;
-        facet_first_[4 * nk + mirror] = first;
+    std::vector<int> first_node(workers_ + 1, 0);
+    parallel_chunks(cells_.size(), workers_, [&](std::size_t begin, std::size_t end, int w) {
+      int count = 0;
+      for (std::size_t o = begin; o < end; ++o)
+        for (int f = 0; f < 4; ++f) count += numbered(by_orig_[o], f);
+      first_node[w + 1] = count;
+    });
+    first_node[0] = static_cast<int>(out_.nodes.size());
+    std::partial_sum(first_node.begin(), first_node.end(), first_node.begin());
+    out_.nodes.resize(first_node[workers_]);
+    node_facet_.resize(first_node[workers_]);
+    node_root_.resize(first_node[workers_]);
+    std::vector<std::size_t> exact_nodes(workers_, 0);
+    parallel_chunks(cells_.size(), workers_, [&](std::size_t begin, std::size_t end, int w) {
+      int next = first_node[w];
+      for (std::size_t o = begin; o < end; ++o) {
+        const int c = by_orig_[o];
+        for (int f = 0; f < 4; ++f) {
+          const int nk = cells_[c].neighbor[f];
+          const EdgePattern& p = facet_[4 * c + f];
+          if (orig_[nk] < orig_[c] || p.empty || p.roots == 0) continue;
+          const bool at_infinity = infinite(c) && infinite(nk);
+          const int first = at_infinity ? kInfinityNode : next;
+          facet_first_[4 * c + f] = first;
+          facet_first_[4 * nk + index_of_neighbor(nk, c)] = first;
+          if (!at_infinity)
+            for (int r = 0; r < p.roots; ++r) place_root_node(c, f, r, next++, exact_nodes[w]);
+        }
       }
-    }
-    out_.nodes.resize(next);
-    node_facet_.resize(next);
-    node_root_.resize(next);
-    const int node_workers = worker_count(jobs.size());
-    std::vector<std::size_t> exact_nodes(node_workers, 0);
-    parallel_chunks(jobs.size(), node_workers, [&](std::size_t begin, std::size_t end, int w) {
-      for (std::size_t j = begin; j < end; ++j)
-        place_root_node(jobs[j].cell, jobs[j].facet, jobs[j].root, jobs[j].node, exact_nodes[w]);
     });
     for (std::size_t e : exact_nodes) stats_.exact_nodes += e;
     // Zero vertices get their nodes now, so the walks only read.
