@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <unordered_map>
 #include <vector>
 
 #include "voronoi/arc_path.h"
@@ -16,39 +17,45 @@ constexpr double kOffCentre = 0.38196601125010515;  // 1/φ²
 
 // Paths for the containment tests of holes the ray cannot place (every hole when tracing by
 // sites): computed on first use and kept, since one large face's outer cycle is tested against
-// many holes.
+// many holes. A map, not an array over all arcs: only the arcs of the candidate faces are ever
+// asked for (an array cost ~0.3 GB of fresh memory at 10^6 faces).
 class PathCache {
  public:
   explicit PathCache(const Diagram& d) : d_(d) {}
   const ArcPathView& operator()(int arc) {
-    if (path_cache_.empty()) {
-      path_cache_.resize(d_.arcs.size());
-      path_cached_.assign(d_.arcs.size(), 0);
-    }
-    if (!path_cached_[arc]) path_cache_[arc] = arc_path(d_.arcs[arc], d_.nodes), path_cached_[arc] = 1;
-    return path_cache_[arc];
+    auto [it, added] = paths_.try_emplace(arc);
+    if (added) it->second = arc_path(d_.arcs[arc], d_.nodes);
+    return it->second;
   }
 
  private:
   const Diagram& d_;
-  LargeVector<ArcPathView> path_cache_;
-  LargeVector<char> path_cached_;
+  std::unordered_map<int, ArcPathView> paths_;  // node-based: references stay valid
 };
 
 // Candidate outer cycles for a point, through a grid over their bounding boxes (built on first
 // use: most graphs have no hole that needs a containment test). Without it, tracing by geometry
-// (one label for all faces) would test every hole against every face.
+// (one label for all faces) would test every hole against every face. Tracing by sites, a hole
+// only goes into a face of its own site, so only those faces get a box (the others are left out
+// of the grid, which keeps its cells and the candidates' order): at 10^6 faces the boxes of all
+// the arcs cost ~1 s, the holes' own sites' a few percent of that.
 class FaceGrid {
  public:
-  FaceGrid(const Diagram& d, const FaceAssembly& fa) : d_(d), fa_(fa) {}
+  FaceGrid(const Diagram& d, bool by_sites, const CycleSet& cs, const FaceAssembly& fa)
+      : d_(d), by_sites_(by_sites), cs_(cs), fa_(fa) {}
   std::vector<int> candidates(Point p) {
     if (!face_grid_) {
+      std::vector<char> hole_site(by_sites_ ? d_.sites.size() : 0, 0);
+      for (int c : fa_.holes)
+        if (by_sites_) hole_site[cs_.cycles[c].site] = 1;
       LargeVector<Box> boxes(fa_.outer_area.size(), Box{});
-      for (std::size_t f = 0; f < fa_.outer_area.size(); ++f)
+      for (std::size_t f = 0; f < fa_.outer_area.size(); ++f) {
+        if (by_sites_ && !hole_site[d_.faces[f].site]) continue;
         for (const HalfArc& h : outer_cycle_of(d_, fa_, static_cast<int>(f))) {
           const Box b = arc_bounds(d_.arcs[h.arc], d_.nodes);
           boxes[f].add_box(b);
         }
+      }
       // Over the central nodes: a few faces reaching far out would otherwise stretch the cells
       // until every face shares one.
       face_grid_ = make_grid(boxes.size(), [&](std::size_t f) { return boxes[f]; }, central_box(d_.nodes), fa_.outer_area.size(),
@@ -64,6 +71,8 @@ class FaceGrid {
 
  private:
   const Diagram& d_;
+  const bool by_sites_;
+  const CycleSet& cs_;
   const FaceAssembly& fa_;
   std::optional<BoxGrid> face_grid_;
 };
@@ -108,7 +117,7 @@ int containing_face(const Diagram& d, bool by_sites, const CycleSet& cs, const L
 void place_holes(Diagram& d, bool by_sites, const CycleSet& cs, const LargeVector<int>& cycle_of_half,
                  const std::vector<int>& ray_face, FaceAssembly& fa) {
   PathCache cached_path(d);
-  FaceGrid grid(d, fa);
+  FaceGrid grid(d, by_sites, cs, fa);
   for (std::size_t hk = 0; hk < fa.holes.size(); ++hk) {
     const Cycle& hole = cs.cycles[fa.holes[hk]];
     int target = ray_face[hk];

@@ -28,6 +28,8 @@ FaceAssembly outer_faces(Diagram& d, bool by_sites, const CycleSet& cs) {
   // Faces: one per outer cycle, plus at most one per hole (a site's unbounded face made for its
   // holes), so no reallocation of a million faces when the first of those appears.
   d.faces.reserve(cycles.size() + 1);
+  // One entry per site with a face: reserved, so that a million sites do not rehash ~20 times.
+  fa.faces_of_site.reserve(d.sites.size());
   advise_huge_pages(d.faces.data(), d.faces.capacity() * sizeof(Face));
   for (std::size_t c = 0; c < cycles.size(); ++c) {
     const Cycle& cyc = cycles[c];

@@ -175,6 +175,31 @@ TEST(EngineSelfCheck, ASiteThatBoundsNoArcIsRefused) {
   }
 }
 
+// The self-check runs on all cores; it must still report the failure a sequential scan meets
+// first: that of the lowest-index arc. Nodes moved off their curves in both halves of a diagram
+// large enough for two workers; the oracle is the lowest arc touching a moved node.
+TEST(EngineSelfCheck, ReportsTheFirstFailingArcInArcOrder) {
+  Diagram d = build_diagram(random_sites(9000, 0, 1000, 17));
+  ASSERT_GT(d.arcs.size(), 20000u);
+  const std::size_t picks[] = {d.arcs.size() * 3 / 4, d.arcs.size() / 3, d.arcs.size() - 5};
+  std::vector<int> moved;
+  for (std::size_t k : picks)
+    if (d.arcs[k].from != kNone) moved.push_back(d.arcs[k].from);
+  for (int n : moved) d.nodes[n].x += 50;
+  std::size_t first = d.arcs.size();
+  for (std::size_t k = 0; k < d.arcs.size() && first == d.arcs.size(); ++k)
+    for (int n : moved)
+      if (d.arcs[k].from == n || d.arcs[k].to == n) first = k;
+  ASSERT_LT(first, d.arcs.size());
+  const std::string expected = "the bisector of sites " + std::to_string(d.arcs[first].left_site) + " ('";
+  try {
+    engine::self_check(d);
+    ADD_FAILURE() << "nodes moved by 50 passed the self-check";
+  } catch (const EngineFailure& e) {
+    EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what() << "\nexpected arc " << first;
+  }
+}
+
 TEST(EngineRange, ExtentsTooSmallForNormalNodesAreRefused) {
   // Sites at multiples of 5e-324 were written with nodes of one or two bits.
   std::vector<Site> sites;

@@ -5,6 +5,7 @@
 #include <CGAL/Gmpq.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "voronoi/engine/lifted_traits.h"
@@ -72,6 +73,38 @@ TEST_P(LiftedPredicates, AgreeWithExactCgalOnLiftedPoints) {
     }
   }
   EXPECT_GT(zeros_seen, 10) << "the grid should produce exact degeneracies";
+}
+
+// Off the grid, near-degenerate: five sites on a circle (equal weights, so the lifted points are
+// nearly co-spherical) moved by a few ulps, at magnitudes where the semi-static power filter
+// (lifted_traits.cpp) decides most signs by a margin of a few rounding errors. Its answer must be
+// the exact one whenever it answers.
+TEST(LiftedPredicates, PowerTestNearCoSphericalPointsIsExact) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> angle(0, 6.283185307179586), centre(-1, 1);
+  std::uniform_int_distribution<int> ulps(-4, 4), pick(0, 2);
+  const double scales[] = {1.0, 1e-3, 1e5};
+  int positive = 0, negative = 0, zero = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    const double scale = scales[pick(rng)];
+    const double cx = centre(rng) * scale, cy = centre(rng) * scale, r = 0.3 * scale;
+    auto nudge = [&](double v) {
+      for (int k = ulps(rng); k != 0; k += k > 0 ? -1 : 1) v = std::nextafter(v, k > 0 ? INFINITY : -INFINITY);
+      return v;
+    };
+    std::array<RawPoint, 5> p;
+    for (auto& q : p) {
+      const double a = angle(rng);
+      q = RawPoint(nudge(cx + r * std::cos(a)), nudge(cy + r * std::sin(a)), trial % 3 == 0 ? nudge(1.0) : 1.0);
+    }
+    std::array<QK::Weighted_point_3, 5> l;
+    for (int i = 0; i < 5; ++i) l[i] = lift(p[i]);
+    const auto exact = QK().power_side_of_oriented_power_sphere_3_object()(l[0], l[1], l[2], l[3], l[4]);
+    ASSERT_EQ(lifted::power_side(p[0], p[1], p[2], p[3], p[4]), exact) << "trial " << trial;
+    (exact > 0 ? positive : exact < 0 ? negative : zero) += 1;
+  }
+  EXPECT_GT(positive, 1000);
+  EXPECT_GT(negative, 1000);
 }
 
 INSTANTIATE_TEST_SUITE_P(Weights, LiftedPredicates, ::testing::Values(false, true),

@@ -1,9 +1,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <string>
 
+#include "core/large_buffer.h"
 #include "voronoi/engine.h"
 #include "voronoi/diagram_edit.h"
 #include "voronoi/faces.h"
@@ -39,20 +41,22 @@ void straighten_flat_arcs(Diagram& d) {
   for (Arc& a : d.arcs) {
     const Circle* c = std::get_if<Circle>(&a.curve);
     if (!c || a.from == kNone || a.to == kNone || a.from == a.to) continue;
+    // Only circles that are huge against their sites' distance (weights equal to ~6 digits or
+    // more) qualify: a tiny arc of an ordinary circle is as well written as a circle, and its
+    // curve type tells readers (recognition) that the weights differ. Tested first: it rules out
+    // almost every arc.
+    const Site& si = d.sites[a.left_site];
+    const Site& sj = d.sites[a.right_site];
+    const double spacing = std::hypot(sj.x - si.x, sj.y - si.y);
+    if (!(c->r > tolerance::kHugeCircleRatio * spacing)) continue;
     const Node& p = d.nodes[a.from];
     const Node& q = d.nodes[a.to];
     const double chord = std::hypot(q.x - p.x, q.y - p.y);
     const double representation =
         4 * 0x1p-52 * std::max({std::fabs(c->cx), std::fabs(c->cy), c->r});
-    // Only circles that are huge against their sites' distance (weights equal to ~6 digits or
-    // more) qualify: a tiny arc of an ordinary circle is as well written as a circle, and its
-    // curve type tells readers (recognition) that the weights differ.
-    const Site& si = d.sites[a.left_site];
-    const Site& sj = d.sites[a.right_site];
-    const double spacing = std::hypot(sj.x - si.x, sj.y - si.y);
     const double sagitta = chord * chord / (8 * c->r);
     const double line_allowance = allowed_off(extent, std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(q.x), std::fabs(q.y)}));
-    if (chord > 0 && c->r > tolerance::kHugeCircleRatio * spacing && sagitta < representation && sagitta <= line_allowance)
+    if (chord > 0 && sagitta < representation && sagitta <= line_allowance)
       a.curve = Line{p.x, p.y, q.x - p.x, q.y - p.y};
   }
 }
@@ -177,16 +181,41 @@ Diagram build_diagram(std::span<const Site> input, BuildStats* stats_out) {
   points.reserve(input.size());
   for (std::size_t i = 0; i < out.sites.size(); ++i)
     points.emplace_back(RawPoint(out.sites[i].x, out.sites[i].y, out.sites[i].weight), static_cast<double>(i));
-  RegularTriangulation rt(points.begin(), points.end());
-  stats.triangulation_seconds = seconds_since(start);
-  stats.triangulation_dimension = rt.dimension();
-  start = Clock::now();
-  if (rt.dimension() == 3)
-    extract_spatial(out.sites, rt, out, stats);
-  else if (rt.dimension() == 2)
-    extract_planar(out.sites, rt, out, stats);
-  else
-    extract_linear(out.sites, rt, out);
+  // The cell layout by dimension: see regular_triangulation.h. A spatial triangulation is copied
+  // into flat arrays (timed with the extraction) and released before extracting.
+  std::optional<FlatTriangulation> flat;
+  const bool spatial = lifted::span_space(points);
+  const auto spatial_flat = [&](auto& rt) {
+    std::vector<RawWeightedPoint>().swap(points);  // the vertices hold copies
+    stats.triangulation_seconds = seconds_since(start);
+    stats.triangulation_dimension = rt.dimension();
+    start = Clock::now();
+    flat = flatten_triangulation(out.sites, rt);
+  };
+  if (spatial) {
+    SpatialTriangulation rt(points.begin(), points.end());
+    if (rt.dimension() != 3) throw EngineFailure("lifted sites spanning space gave a triangulation of dimension < 3");
+    spatial_flat(rt);
+  } else {
+    RegularTriangulation rt(points.begin(), points.end());
+    if (rt.dimension() == 3) {  // not reached: coplanar lifted sites span no space
+      spatial_flat(rt);
+    } else {
+      std::vector<RawWeightedPoint>().swap(points);
+      stats.triangulation_seconds = seconds_since(start);
+      stats.triangulation_dimension = rt.dimension();
+      start = Clock::now();
+      if (rt.dimension() == 2)
+        extract_planar(out.sites, rt, out, stats);
+      else
+        extract_linear(out.sites, rt, out);
+    }
+  }
+  if (flat) extract_spatial(out.sites, std::move(*flat), out, stats);
+  // The extractor's arrays (~0.6 GB at 10^6 sites) are released by now; core/large_buffer.h would
+  // keep up to 1 GiB of them resident for reuse, but face tracing needs other sizes, and the cache
+  // would hold the build's peak memory through its last stage.
+  release_large_buffers();
   drop_unused_nodes(out);  // copies left by nodes found twice on a shared power line
   refuse_unwritable_bisectors(out);
   const auto check_start = Clock::now();

@@ -38,8 +38,6 @@
 namespace covmap::voronoi::engine {
 namespace {
 
-using RT = RegularTriangulation;
-
 // Per cell: its power vertex (finite cells) or outward ray direction (infinite cells).
 struct CellData {
   Homog<Approx> v{};
@@ -48,14 +46,15 @@ struct CellData {
 
 class SpatialExtractor {
  public:
-  SpatialExtractor(const std::vector<Site>& sites, RT& rt, Diagram& out, BuildStats& stats)
-      : sites_(sites), rt_(rt), out_(out), stats_(stats) {}
+  SpatialExtractor(const std::vector<Site>& sites, FlatTriangulation& flat, Diagram& out, BuildStats& stats)
+      : sites_(sites), flat_(flat), out_(out), stats_(stats) {}
 
   void run() {
     extent_ = site_extent(sites_);
     compute_cells();
     compute_facets();
     merge_shared_line_nodes();
+    release_before_walks();
     walk_all_edges();
   }
 
@@ -65,7 +64,7 @@ class SpatialExtractor {
 
  private:
   const std::vector<Site>& sites_;
-  RT& rt_;
+  FlatTriangulation& flat_;  // moved into the arrays below
   Diagram& out_;
   BuildStats& stats_;
 
@@ -77,9 +76,13 @@ class SpatialExtractor {
   LargeVector<CellData> data_;
   LargeVector<std::uint8_t> flags_;
   LargeVector<EdgePattern> facet_;  // 4 per cell, oriented from the cell towards its neighbour
-  LargeVector<int> facet_node_;     // 2 per facet entry: node ids of its interior zero points
+  // Per facet entry, the node id of its first interior zero point in the numbering cell's order
+  // (kInfinityNode at infinity): the facet's nodes have consecutive ids (facet_node()).
+  LargeVector<int> facet_first_;
+  LargeVector<int> node_rep_;       // per root node, the node it was merged into; empty if none was
   LargeVector<int> uf_;             // union-find on CGAL ids: cells sharing one power vertex on the paraboloid
   LargeVector<int> vertex_node_;    // node id of a zero vertex, by union-find root
+  std::vector<std::pair<int, int>> zero_nodes_;  // (cell, node) of the finite zero-vertex cells, by cell
   std::vector<std::array<int, 3>> node_facet_;  // per root node: the sites of its facet
   std::vector<AlongLine> node_root_;            // per root node: which root of its facet's line
   int workers_ = 1;
@@ -136,9 +139,8 @@ class SpatialExtractor {
     return power_vertex<NT>(s);
   }
 
-  // The flat copy of the triangulation (flat_triangulation.h); the triangulation is released.
   void copy_triangulation() {
-    FlatTriangulation flat = flatten_triangulation(sites_, rt_);
+    FlatTriangulation flat = std::move(flat_);
     cells_ = std::move(flat.cells);
     orig_ = std::move(flat.orig);
     by_orig_ = std::move(flat.by_orig);
@@ -198,7 +200,6 @@ class SpatialExtractor {
 
   void compute_facets() {
     facet_.assign(4 * cells_.size(), EdgePattern{});
-    facet_node_.assign(8 * cells_.size(), kNone);
     // Pass 1, in parallel: the crossing pattern of every facet, from its lower-id cell (each facet
     // entry pair is written by exactly one worker). Unions of cells sharing a vertex are rare and
     // applied afterwards.
@@ -234,7 +235,12 @@ class SpatialExtractor {
       }
     });
     for (std::size_t f : fallbacks) stats_.exact_fallbacks += f;
-    LargeVector<CellData>().swap(data_);  // the approximate vertices are not read again
+    // The approximate vertices (72 bytes a cell, ~0.45 GB at 10^6 sites) are not read again: their
+    // block goes back to the system rather than to core/large_buffer.h's cache, where it would stay
+    // resident through the walks, the peak of the build. The node ids are allocated only now.
+    LargeVector<CellData>().swap(data_);
+    release_large_buffers();
+    facet_first_.assign(4 * cells_.size(), kNone);
     // Applied in CGAL's cell order, so that each class has the root it had there: its vertex is
     // rounded from that cell's homogeneous coordinates.
     std::vector<Union> all;
@@ -242,46 +248,71 @@ class SpatialExtractor {
     std::sort(all.begin(), all.end(),
               [](const Union& a, const Union& b) { return a.cell != b.cell ? a.cell < b.cell : a.facet < b.facet; });
     for (const Union& u : all) uf_[find(u.cell)] = find(u.neighbor);
-    // Pass 2: number the crossing nodes in a fixed order, then place them in parallel.
-    struct Job {
-      int cell, facet, root, node;
+    // Pass 2: the crossing nodes are numbered in CGAL's cell order, facet by facet, and placed. In
+    // parallel over contiguous ranges of CGAL ids: each worker first counts the nodes of its
+    // range, so that it knows where its numbers start, then numbers and places them (each facet
+    // is handled by the worker holding its lower-id cell). The numbers are those of one
+    // sequential pass.
+    const auto numbered = [&](int c, int f) {  // how many nodes facet entry (c, f) numbers
+      const int nk = cells_[c].neighbor[f];
+      const EdgePattern& p = facet_[4 * c + f];
+      if (orig_[nk] < orig_[c] || p.empty) return 0;
+      // On an edge at infinity (between two directions) the only possible zero is U: no node.
+      return infinite(c) && infinite(nk) ? 0 : static_cast<int>(p.roots);
     };
-    std::vector<Job> jobs;
-    int next = static_cast<int>(out_.nodes.size());
-    for (std::size_t o = 0; o < cells_.size(); ++o) {
-      const int c = by_orig_[o];
-      for (int f = 0; f < 4; ++f) {
-        const int nk = cells_[c].neighbor[f];
-        if (orig_[nk] < orig_[c]) continue;
-        const EdgePattern& p = facet_[4 * c + f];
-        if (p.empty || p.roots == 0) continue;
-        // On an edge at infinity (between two directions) the only possible zero is U.
-        const bool at_infinity = infinite(c) && infinite(nk);
-        const int mirror = index_of_neighbor(nk, c);
-        for (int r = 0; r < p.roots; ++r) {
-          int node = kInfinityNode;
-          if (!at_infinity) {
-            node = next++;
-            jobs.push_back({c, f, r, node});
-          }
-          facet_node_[2 * (4 * c + f) + r] = node;
-          facet_node_[2 * (4 * nk + mirror) + (p.roots - 1 - r)] = node;
+    std::vector<int> first_node(workers_ + 1, 0);
+    parallel_chunks(cells_.size(), workers_, [&](std::size_t begin, std::size_t end, int w) {
+      int count = 0;
+      for (std::size_t o = begin; o < end; ++o)
+        for (int f = 0; f < 4; ++f) count += numbered(by_orig_[o], f);
+      first_node[w + 1] = count;
+    });
+    first_node[0] = static_cast<int>(out_.nodes.size());
+    std::partial_sum(first_node.begin(), first_node.end(), first_node.begin());
+    out_.nodes.resize(first_node[workers_]);
+    node_facet_.resize(first_node[workers_]);
+    node_root_.resize(first_node[workers_]);
+    std::vector<std::size_t> exact_nodes(workers_, 0);
+    parallel_chunks(cells_.size(), workers_, [&](std::size_t begin, std::size_t end, int w) {
+      int next = first_node[w];
+      for (std::size_t o = begin; o < end; ++o) {
+        const int c = by_orig_[o];
+        for (int f = 0; f < 4; ++f) {
+          const int nk = cells_[c].neighbor[f];
+          const EdgePattern& p = facet_[4 * c + f];
+          if (orig_[nk] < orig_[c] || p.empty || p.roots == 0) continue;
+          const bool at_infinity = infinite(c) && infinite(nk);
+          const int first = at_infinity ? kInfinityNode : next;
+          facet_first_[4 * c + f] = first;
+          facet_first_[4 * nk + index_of_neighbor(nk, c)] = first;
+          if (!at_infinity)
+            for (int r = 0; r < p.roots; ++r) place_root_node(c, f, r, next++, exact_nodes[w]);
         }
       }
-    }
-    out_.nodes.resize(next);
-    node_facet_.resize(next);
-    node_root_.resize(next);
-    const int node_workers = worker_count(jobs.size());
-    std::vector<std::size_t> exact_nodes(node_workers, 0);
-    parallel_chunks(jobs.size(), node_workers, [&](std::size_t begin, std::size_t end, int w) {
-      for (std::size_t j = begin; j < end; ++j)
-        place_root_node(jobs[j].cell, jobs[j].facet, jobs[j].root, jobs[j].node, exact_nodes[w]);
     });
     for (std::size_t e : exact_nodes) stats_.exact_nodes += e;
     // Zero vertices get their nodes now, so the walks only read.
     for (std::size_t o = 0; o < cells_.size(); ++o)
       if (zero(by_orig_[o])) vertex_zero_node(by_orig_[o]);
+    for (std::size_t k = 0; k < cells_.size(); ++k) {
+      const int c = static_cast<int>(k);
+      if (zero(c) && !infinite(c)) zero_nodes_.push_back({c, vertex_node_[find(orig_[c])]});
+    }
+  }
+
+  // The node of the r-th interior zero point of facet entry (c, f), in c's order along it.
+  int facet_node(int c, int f, int r) const {
+    const int first = facet_first_[4 * c + f];
+    if (first == kInfinityNode) return kInfinityNode;
+    const int nk = cells_[c].neighbor[f];
+    const int node = first + (orig_[c] < orig_[nk] ? r : facet_[4 * c + f].roots - 1 - r);
+    return node_rep_.empty() ? node : node_rep_[node];
+  }
+
+  // The node of a zero vertex (kInfinityNode for U), once compute_facets has numbered them.
+  int zero_node(int c) const {
+    if (infinite(c)) return kInfinityNode;
+    return std::lower_bound(zero_nodes_.begin(), zero_nodes_.end(), std::pair<int, int>(c, kNone))->second;
   }
 
   // Facets whose lifted sites are coplanar and co-circular share one power line, so each of its
@@ -344,8 +375,8 @@ class SpatialExtractor {
       }
     }
     if (!merged) return;
-    for (int& node : facet_node_)
-      if (node >= 0) node = find(node);
+    node_rep_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) node_rep_[i] = find(static_cast<int>(i));
   }
 
   void place_root_node(int cell, int f, int r, int node, std::size_t& exact_nodes) {
@@ -393,6 +424,18 @@ class SpatialExtractor {
     return inversions % 2 == 0;
   }
 
+  // The walks read neither the CGAL-to-flat map nor the union-find of zero vertices (each has its
+  // node in zero_nodes_ by now) nor the merge's data; released so that the walks' output can take
+  // their place.
+  void release_before_walks() {
+    LargeVector<int>().swap(by_orig_);
+    std::vector<std::array<int, 3>>().swap(node_facet_);
+    std::vector<AlongLine>().swap(node_root_);
+    LargeVector<int>().swap(uf_);
+    LargeVector<int>().swap(vertex_node_);
+    release_large_buffers();
+  }
+
   // Each triangulation edge is walked once, from where the walk in CGAL's cell order started: its
   // finite cell L of lowest CGAL id, around (vertex i0, vertex j0) of L, i0 < j0. Workers take
   // contiguous ranges of cells; a worker meeting an edge not yet marked in its own marks circulates
@@ -435,22 +478,70 @@ class SpatialExtractor {
           }
       }
     });
-    std::vector<EdgeArcs> edges;
-    std::size_t total = out_.arcs.size();
-    for (const WalkState& st : states) {
-      total += st.arcs.size();
+    // Nothing but the walks' output is read from here on: the triangulation's arrays (~0.65 GB at
+    // 10^6 sites) go back to the system before the arcs are gathered, the peak of the build.
+    for (WalkState& st : states) LargeVector<std::uint8_t>().swap(st.done);
+    release_walk_input();
+    gather_arcs(states);
+    apply_mends(out_, mends_);
+  }
+
+  void release_walk_input() {
+    LargeVector<FlatCell>().swap(cells_);
+    LargeVector<int>().swap(orig_);
+    LargeVector<RawPoint>().swap(points_);
+    LargeVector<int>().swap(vertex_site_);
+    LargeVector<std::uint8_t>().swap(flags_);
+    LargeVector<EdgePattern>().swap(facet_);
+    LargeVector<int>().swap(facet_first_);
+    LargeVector<int>().swap(node_rep_);
+    release_large_buffers();
+  }
+
+  // Puts the workers' arcs into the diagram in the order of their edges' CGAL ids. The arcs are
+  // appended worker by worker, each worker's buffers released (and returned to the system) at once,
+  // then permuted in place: the arcs are never held twice (~0.2 GB at 10^6 sites).
+  void gather_arcs(std::vector<WalkState>& states) {
+    const std::size_t start = out_.arcs.size();
+    std::size_t total = start, edge_count = 0;
+    std::vector<std::size_t> base(states.size());
+    for (std::size_t w = 0; w < states.size(); ++w) {
+      base[w] = total;
+      total += states[w].arcs.size();
+      edge_count += states[w].edges.size();
+    }
+    // Where each arc goes (relative to start): edges in key order, each edge's arcs in walk order.
+    LargeVector<EdgeArcs> edges;
+    edges.reserve(edge_count);
+    for (WalkState& st : states) {
       edges.insert(edges.end(), st.edges.begin(), st.edges.end());
+      LargeVector<EdgeArcs>().swap(st.edges);
     }
     std::sort(edges.begin(), edges.end(), [](const EdgeArcs& a, const EdgeArcs& b) { return a.key < b.key; });
+    LargeVector<std::uint32_t> dest(total - start);
+    std::uint32_t next = 0;
+    for (const EdgeArcs& e : edges)
+      for (std::size_t k = e.begin; k < e.end; ++k) dest[base[e.worker] + k - start] = next++;
+    LargeVector<EdgeArcs>().swap(edges);
+    release_large_buffers();
     out_.arcs.reserve(total);
     mends_.reserve(total);
-    mends_.assign(out_.arcs.size(), ArcMend::kNone);
-    for (const EdgeArcs& e : edges) {
-      const WalkState& st = states[e.worker];
-      out_.arcs.insert(out_.arcs.end(), st.arcs.begin() + e.begin, st.arcs.begin() + e.end);
-      mends_.insert(mends_.end(), st.mends.begin() + e.begin, st.mends.begin() + e.end);
+    mends_.assign(start, ArcMend::kNone);
+    for (WalkState& st : states) {
+      out_.arcs.insert(out_.arcs.end(), st.arcs.begin(), st.arcs.end());
+      mends_.insert(mends_.end(), st.mends.begin(), st.mends.end());
+      LargeVector<Arc>().swap(st.arcs);
+      LargeVector<ArcMend>().swap(st.mends);
+      release_large_buffers();
     }
-    apply_mends(out_, mends_);
+    // Cycle by cycle: each swap puts one arc where it belongs.
+    for (std::size_t i = 0; i < dest.size(); ++i)
+      while (dest[i] != i) {
+        const std::uint32_t j = dest[i];
+        std::swap(out_.arcs[start + i], out_.arcs[start + j]);
+        std::swap(mends_[start + i], mends_[start + j]);
+        std::swap(dest[i], dest[j]);
+      }
   }
 
   // The cells around the edge (vi, vj) of cell c0, in the order of CGAL's cell circulator
@@ -499,12 +590,12 @@ class SpatialExtractor {
     for (std::size_t p = 0; p < m; ++p) {
       const int c = ring[p];
       const int f = index_of_neighbor(c, ring[(p + 1) % m]);
-      if (zero(c)) tokens.push_back({vertex_zero_node(c), 0});
+      if (zero(c)) tokens.push_back({zero_node(c), 0});
       const EdgePattern& pat = facet_[4 * c + f];
       if (pat.empty) continue;
       tokens.push_back({kNone, pat.sign[0]});
       for (int r = 0; r < pat.roots; ++r) {
-        tokens.push_back({facet_node_[2 * (4 * c + f) + r], 0});
+        tokens.push_back({facet_node(c, f, r), 0});
         tokens.push_back({kNone, pat.sign[r + 1]});
       }
     }
@@ -536,9 +627,8 @@ class SpatialExtractor {
 
 }  // namespace
 
-void extract_spatial(const std::vector<Site>& sites, RegularTriangulation& rt, Diagram& out,
-                     BuildStats& stats) {
-  SpatialExtractor(sites, rt, out, stats).run();
+void extract_spatial(const std::vector<Site>& sites, FlatTriangulation flat, Diagram& out, BuildStats& stats) {
+  SpatialExtractor(sites, flat, out, stats).run();
 }
 
 }  // namespace covmap::voronoi::engine

@@ -48,6 +48,8 @@ struct FlatTriangulation {
 LargeVector<int> morton_ranks(const std::vector<Site>& sites);
 
 // The flat copy of `rt` (a 3-dimensional triangulation of `sites`); `rt` is cleared afterwards.
-FlatTriangulation flatten_triangulation(const std::vector<Site>& sites, RegularTriangulation& rt);
+// Defined for SpatialTriangulation and RegularTriangulation.
+template <class Triangulation>
+FlatTriangulation flatten_triangulation(const std::vector<Site>& sites, Triangulation& rt);
 
 }  // namespace covmap::voronoi::engine

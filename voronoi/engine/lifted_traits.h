@@ -21,6 +21,8 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include <span>
+
 #include "voronoi/engine/exact_sign.h"
 
 namespace covmap::voronoi::engine {
@@ -47,6 +49,10 @@ CGAL::Sign power_side(const RawPoint& p, const RawPoint& q, const RawPoint& r, c
 CGAL::Sign power_side(const RawPoint& p, const RawPoint& q, const RawPoint& r, const RawPoint& t);
 CGAL::Sign power_side(const RawPoint& p, const RawPoint& q, const RawPoint& t);
 CGAL::Sign power_side(const RawPoint& p, const RawPoint& q);
+
+// Whether some four of the lifted points are not coplanar (exact): then their regular
+// triangulation has dimension 3, since no lifted site is hidden.
+bool span_space(std::span<const RawWeightedPoint> points);
 
 }  // namespace lifted
 

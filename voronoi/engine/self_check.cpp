@@ -1,10 +1,12 @@
 #include "voronoi/engine/self_check.h"
 
 #include <algorithm>
+#include <exception>
 #include <cmath>
 #include <sstream>
 #include <string>
 
+#include "core/parallel.h"
 #include "voronoi/engine.h"
 #include "voronoi/tolerances.h"
 
@@ -94,9 +96,31 @@ int circle_winding(const Diagram& d, std::size_t begin, std::size_t end) {
   return static_cast<int>(std::round(total / kTwoPi));
 }
 
+namespace {
+
+// Calls check(k) for every k in [0, n) on all cores and, if any call throws, rethrows what the
+// lowest such k threw: the failure a sequential loop would report.
+template <class Check>
+void check_all(std::size_t n, Check&& check) {
+  const int workers = worker_count(n);
+  std::vector<std::exception_ptr> failure(workers);
+  parallel_chunks(n, workers, [&](std::size_t begin, std::size_t end, int w) {
+    try {
+      for (std::size_t k = begin; k < end; ++k) check(k);
+    } catch (...) {
+      failure[w] = std::current_exception();
+    }
+  });
+  for (const std::exception_ptr& f : failure)
+    if (f) std::rethrow_exception(f);
+}
+
+}  // namespace
+
 void self_check(const Diagram& d) {
   const double extent = site_extent(d.sites);
-  for (const Arc& a : d.arcs) {
+  check_all(d.arcs.size(), [&](std::size_t k) {
+    const Arc& a = d.arcs[k];
     check_ends(d, a, extent);
     const Line* l = std::get_if<Line>(&a.curve);
     if (l && a.from != kNone && a.to != kNone && a.from != a.to) {
@@ -108,7 +132,7 @@ void self_check(const Diagram& d) {
       const double magnitude = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(q.x), std::fabs(q.y)});
       if (along < -allowed_off(extent, magnitude)) fail(d, a, "a line arc runs against its direction");
     }
-  }
+  });
   // Every valid site owns a neighbourhood of itself (coincident sites are refused), so with two or
   // more sites each one bounds some arc; a site without any has lost its whole region.
   if (d.sites.size() > 1) {
@@ -122,14 +146,15 @@ void self_check(const Diagram& d) {
                             d.sites[s].id + "') bounds no arc, so its region was lost");
   }
   // The arcs of each circle, in walk order, and the gaps between them must turn around it once.
-  for (std::size_t begin = 0, end = 0; begin < d.arcs.size(); begin = end) {
-    end = pair_run_end(d, begin);
-    if (!std::holds_alternative<Circle>(d.arcs[begin].curve)) continue;
-    const int winding = circle_winding(d, begin, end);
-    if (winding == 0)
-      fail(d, d.arcs[begin], "an arc's distinct end nodes round to one point, so its sweep cannot be read");
-    if (winding > 1) fail(d, d.arcs[begin], "the rounded nodes of its arcs are out of the order the exact walk found");
-  }
+  // Each run of arcs of one pair of sites is checked from its first arc.
+  check_all(d.arcs.size(), [&](std::size_t begin) {
+    const Arc& a = d.arcs[begin];
+    if (begin > 0 && d.arcs[begin - 1].left_site == a.left_site && d.arcs[begin - 1].right_site == a.right_site) return;
+    if (!std::holds_alternative<Circle>(a.curve)) return;
+    const int winding = circle_winding(d, begin, pair_run_end(d, begin));
+    if (winding == 0) fail(d, a, "an arc's distinct end nodes round to one point, so its sweep cannot be read");
+    if (winding > 1) fail(d, a, "the rounded nodes of its arcs are out of the order the exact walk found");
+  });
 }
 
 }  // namespace covmap::voronoi::engine
