@@ -44,21 +44,19 @@ class PlanarExtractor {
     std::iota(uf_.begin(), uf_.end(), 0);
     // Faces whose sites are co-"circular" in the lifted plane share one power line: one set of
     // nodes, and the zero-width strip between them carries no arc.
-    for (auto e = rt_.finite_edges_begin(); e != rt_.finite_edges_end(); ++e) {
-      Face c = e->first;
-      Face n = c->neighbor(3 - e->second - e->third);
-      if (infinite(c) || infinite(n)) continue;
+    for_each_finite_edge([&](Face c, int i, int j) {
+      Face n = c->neighbor(3 - i - j);
+      if (infinite(c) || infinite(n)) return;
       const RawPoint far = n->vertex(n->index(c))->point().point();
       const auto pts = face_points(c);
       if (lifted::power_side(pts[0], pts[1], pts[2], far) == CGAL::ZERO)
         uf_[find(c->info())] = find(n->info());
-    }
+    });
     for (std::size_t k = 0; k < faces_.size(); ++k)
       if (!infinite(faces_[k]) && find(static_cast<int>(k)) == static_cast<int>(k)) compute_face(k);
     for (std::size_t k = 0; k < faces_.size(); ++k)
       if (!infinite(faces_[k])) data_[k] = data_[find(static_cast<int>(k))];
-    for (auto e = rt_.finite_edges_begin(); e != rt_.finite_edges_end(); ++e)
-      walk_edge(e->first, e->second, e->third);
+    for_each_finite_edge([&](Face c, int i, int j) { walk_edge(c, i, j); });
   }
 
  private:
@@ -71,6 +69,20 @@ class PlanarExtractor {
   std::vector<int> uf_;  // union-find over faces sharing one power line
   WalkScratch scratch_;
   const double extent_ = site_extent(sites_);
+
+  // Every finite edge once, as (face, i, j), faces in id order, edges (0,1), (1,2), (2,0) of each,
+  // each from the lower-id of its two faces. (CGAL's finite_edges picks the face by comparing
+  // addresses, so the output's order would depend on where the allocator put the faces.)
+  template <class F>
+  void for_each_finite_edge(F&& f) {
+    for (Face c : faces_)
+      for (int i = 0; i < 3; ++i) {
+        const int j = (i + 1) % 3;
+        if (c->vertex(i) == rt_.infinite_vertex() || c->vertex(j) == rt_.infinite_vertex()) continue;
+        if (c->neighbor(3 - i - j)->info() < c->info()) continue;
+        f(c, i, j);
+      }
+  }
 
   int find(int f) {
     while (uf_[f] != f) f = uf_[f] = uf_[uf_[f]];
