@@ -73,7 +73,9 @@ AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSen
 
   // 1. Clean the map into chains, junctions and fitted bisectors.
   progress("cleaning", 0.0);
-  out.cleaned = cleaning::clean_coverage_map(map, options.cleaning);
+  cleaning::CleaningOptions cleaning_options = options.cleaning;
+  cleaning_options.threads = options.threads;
+  out.cleaned = cleaning::clean_coverage_map(map, cleaning_options);
   const cleaning::CleanedMap& cleaned = out.cleaned;
   const MapCells cells = map_cells(map, cleaned);
   out.bin_size_m = bin_size(cleaned, cells.box);

@@ -26,6 +26,7 @@ void validate(const CleaningOptions& o) {
     problems += " min_chain_length must be finite and >= 0, got " + std::to_string(o.min_chain_length) + ";";
   if (!std::isfinite(o.line_preference) || o.line_preference < 1.0)
     problems += " line_preference must be finite and >= 1, got " + std::to_string(o.line_preference) + ";";
+  if (o.threads < 1) problems += " threads must be >= 1, got " + std::to_string(o.threads) + ";";
   if (!problems.empty()) {
     problems.pop_back();
     throw std::invalid_argument("clean_coverage_map: invalid options:" + problems);
@@ -97,7 +98,7 @@ CleanedMap clean_coverage_map(std::span<const CoverageCell> cells, const Cleanin
   if (!(snap > 0.0) || perimeter / (cleaning::tolerance::kSampleSpacing * snap) > cleaning::tolerance::kMaxSamples)
     throw SnapTooSmall(snap, perimeter);
   const cleaning::BoundaryIndex index(rings.rings, snap);
-  cleaning::Topology topology = cleaning::build_topology(index, options.min_chain_length * snap);
+  cleaning::Topology topology = cleaning::build_topology(index, options.min_chain_length * snap, options.threads);
   report.junctions_merged = topology.junctions_merged;
   report.short_chains_dropped = topology.short_chains_dropped;
   report.gaps_closed = topology.gaps_closed;

@@ -1,9 +1,11 @@
-#include "cleaning/tolerances.h"
 #include "cleaning/topology.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+
+#include "cleaning/tolerances.h"
+#include "core/parallel.h"
 
 namespace covmap::cleaning {
 namespace {
@@ -369,11 +371,17 @@ Topology Builder::finish() {
 
 }  // namespace
 
-Topology build_topology(const BoundaryIndex& index, double min_length) {
+Topology build_topology(const BoundaryIndex& index, double min_length, int threads) {
   Builder builder(index, min_length);
-  for (std::size_t r = 0; r < index.rings().size(); ++r) {
-    const int ring = static_cast<int>(r);
-    builder.read_ring(ring, sample_ring(index, ring));
+  // Sampling a ring (two thirds of the work: a neighbour query per sample) only reads the index:
+  // a batch of rings is sampled on the threads, then read in ring order. Batches bound the samples
+  // held at once.
+  const std::size_t rings = index.rings().size();
+  std::vector<std::vector<Sample>> batch(tolerance::kSampledRingsBatch);
+  for (std::size_t first = 0; first < rings; first += batch.size()) {
+    const std::size_t count = std::min(batch.size(), rings - first);
+    parallel_items(count, threads, [&](std::size_t k) { batch[k] = sample_ring(index, static_cast<int>(first + k)); });
+    for (std::size_t k = 0; k < count; ++k) builder.read_ring(static_cast<int>(first + k), batch[k]);
   }
   return builder.finish();
 }

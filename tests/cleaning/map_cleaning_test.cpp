@@ -479,6 +479,9 @@ TEST(MapCleaning, RejectsAnEmptyMapAndBadOptions) {
   bad = {};
   bad.snap_distance = -1.0;
   EXPECT_THROW(clean_coverage_map(one, bad), std::invalid_argument);
+  bad = {};
+  bad.threads = 0;
+  EXPECT_THROW(clean_coverage_map(one, bad), std::invalid_argument);
 }
 
 TEST(MapCleaning, SingleCellIsAFrameLoop) {
@@ -567,6 +570,19 @@ TEST(MapCleaning, JitteredAndRoundedCopiesAreClosed) {
   expect_matches(m, sites, r, rectangle(r));
   EXPECT_GT(m.report.gaps_closed, 0u);
   EXPECT_GT(m.report.overlaps_resolved, 0u);
+  // Sampled on three threads, the rings give the same map (and the same against the diagram).
+  CleaningOptions threaded;
+  threaded.threads = 3;
+  const CleanedMap t = clean_coverage_map(polygonize(r, names(sites.size()), o), threaded);
+  expect_matches(t, sites, r, rectangle(r));
+  ASSERT_EQ(t.chains.size(), m.chains.size());
+  for (std::size_t c = 0; c < m.chains.size(); ++c) {
+    ASSERT_EQ(t.chains[c].points.size(), m.chains[c].points.size()) << "chain " << c;
+    for (std::size_t k = 0; k < m.chains[c].points.size(); ++k) {
+      EXPECT_EQ(t.chains[c].points[k].x, m.chains[c].points[k].x);
+      EXPECT_EQ(t.chains[c].points[k].y, m.chains[c].points[k].y);
+    }
+  }
 }
 
 TEST(MapCleaning, EqualWeightsGiveLines) {
