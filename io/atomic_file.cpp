@@ -17,25 +17,6 @@ namespace {
 
 std::string errno_text(int err) { return std::strerror(err); }
 
-// Writes `text` to a new file (which must not exist) with POSIX calls, so the reason of a failure
-// is the system's own (ENOSPC, EFBIG, EACCES) rather than a stream's failbit.
-void write_new_file(const fs::path& file, const std::string& text, const fs::path& shown_as) {
-  const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-  if (fd < 0) throw OutputError(shown_as, "cannot create a file in '" + file.parent_path().string() + "': " + errno_text(errno));
-  std::size_t done = 0;
-  while (done < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      const int err = n < 0 ? errno : EIO;
-      ::close(fd);
-      throw OutputError(shown_as, "error while writing: " + errno_text(err));
-    }
-    done += static_cast<std::size_t>(n);
-  }
-  if (::close(fd) != 0) throw OutputError(shown_as, "error while writing: " + errno_text(errno));
-}
-
 void make_parent_folder(const fs::path& target) {
   const fs::path parent = target.parent_path();
   if (parent.empty()) return;
@@ -60,7 +41,7 @@ struct Staged {
 namespace {
 
 // Writes a new file (which must not exist) through a stream; failures name the output and the
-// system's reason, as write_new_file does.
+// system's reason.
 void write_new_file_streamed(const fs::path& file, const StreamWriter& write, const fs::path& shown_as) {
   const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
   if (fd < 0) throw OutputError(shown_as, "cannot create a file in '" + file.parent_path().string() + "': " + errno_text(errno));
@@ -122,55 +103,19 @@ std::string temporary_name(const std::string& target_name) {
   return name;
 }
 
+// The in-memory forms: the staged classes below with each text written in one piece.
 void write_files_atomically(const std::vector<FileText>& files) {
-  std::vector<Staged> staged;
-  staged.reserve(files.size());
-  try {
-    for (const FileText& f : files) {
-      if (!f.path.has_filename()) throw OutputError(f.path, "it names a folder, not a file");
-      std::error_code ec;
-      if (fs::is_directory(f.path, ec)) throw OutputError(f.path, "it is a folder; give a file name");
-      make_parent_folder(f.path);
-      Staged s;
-      s.target = f.path;
-      s.temp = folder_of(f.path) / temporary_name(f.path.filename().string());
-      s.backup = folder_of(f.path) / temporary_name(f.path.filename().string() + ".old");
-      s.temp_guard = std::make_unique<PendingPath>(s.temp);
-      staged.push_back(std::move(s));
-      write_new_file(staged.back().temp, f.text, f.path);
-    }
-    swap_into_place(staged);
-  } catch (...) {
-    for (Staged& s : staged) {
-      std::error_code ignored;
-      if (!s.replaced) fs::remove(s.temp, ignored);
-    }
-    throw;
-  }
+  StagedFiles staged;
+  for (const FileText& f : files)
+    staged.stage(f.path, [&f](std::ostream& out) { out.write(f.text.data(), static_cast<std::streamsize>(f.text.size())); });
+  staged.commit();
 }
 
 void write_new_folder_atomically(const fs::path& folder, const NamedTexts& files) {
-  make_parent_folder(folder);
-  const fs::path temp = folder_of(folder) / temporary_name(folder.filename().string());
-  std::vector<std::unique_ptr<PendingPath>> guards;
-  guards.push_back(std::make_unique<PendingPath>(temp));
-  std::error_code ec;
-  if (!fs::create_directory(temp, ec) || ec)
-    throw OutputError(folder, "cannot create a folder in '" + folder_of(folder).string() + "': " + ec.message());
-  try {
-    for (const auto& [name, text] : files) {
-      guards.push_back(std::make_unique<PendingPath>(temp / name));
-      write_new_file(temp / name, text, folder / name);
-    }
-    CriticalSection no_interrupts;
-    if (fs::exists(folder, ec)) throw OutputError(folder, "it appeared while covmap was writing; nothing was replaced");
-    fs::rename(temp, folder, ec);
-    if (ec) throw OutputError(folder, "cannot move the finished folder into place: " + ec.message());
-  } catch (...) {
-    std::error_code ignored;
-    fs::remove_all(temp, ignored);
-    throw;
-  }
+  StagedFolder staged(folder);
+  for (const auto& [name, text] : files)
+    staged.stage(name, [&text](std::ostream& out) { out.write(text.data(), static_cast<std::streamsize>(text.size())); });
+  staged.commit();
 }
 
 StagedFiles::StagedFiles() = default;
