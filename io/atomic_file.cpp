@@ -113,8 +113,11 @@ void write_files_atomically(const std::vector<FileText>& files) {
 
 void write_new_folder_atomically(const fs::path& folder, const NamedTexts& files) {
   StagedFolder staged(folder);
-  for (const auto& [name, text] : files)
-    staged.stage(name, [&text](std::ostream& out) { out.write(text.data(), static_cast<std::streamsize>(text.size())); });
+  for (const auto& entry : files) {
+    // A named reference, not a structured binding: clang 14 cannot capture bindings.
+    const std::string& text = entry.second;
+    staged.stage(entry.first, [&text](std::ostream& out) { out.write(text.data(), static_cast<std::streamsize>(text.size())); });
+  }
   staged.commit();
 }
 
