@@ -22,7 +22,7 @@ using Vertex = RT::Vertex_handle;
 
 struct FaceData {
   bool zero = false;            // a_c on the paraboloid
-  EdgePattern half[2];          // lower (-n → a_c) and upper (a_c → +n)
+  EdgePattern half[2]{};        // lower (-n → a_c) and upper (a_c → +n)
   int node[2][2] = {{kNone, kNone}, {kNone, kNone}};
   int centre_node = kNone;
 };
@@ -110,7 +110,7 @@ class PlanarExtractor {
 
   struct FaceResult {
     bool zero;
-    EdgePattern half[2];
+    EdgePattern half[2]{};
   };
 
   void compute_face(std::size_t k) {
