@@ -470,6 +470,7 @@ class SpatialExtractor {
   struct WalkState {
     LargeVector<std::uint8_t> done;  // per cell, bit local_edge(i, j)
     std::vector<int> ring;
+    std::size_t lowest_at = 0;  // where circulate() found the ring's lowest-id finite cell
     std::vector<Token> tokens;
     WalkScratch scratch;
     LargeVector<Arc> arcs;  // large buffers: they reuse the blocks released by earlier stages
@@ -566,15 +567,19 @@ class SpatialExtractor {
 
   // The cells around the edge (vi, vj) of cell c0, in the order of CGAL's cell circulator
   // incident_cells(c0, index of vi, index of vj), each marked as done for this edge; returns the
-  // finite one of lowest CGAL id (c0 is finite).
+  // finite one of lowest CGAL id (c0 is finite), whose place in the ring is st.lowest_at.
   int circulate(WalkState& st, int c0, int vi, int vj) const {
     std::vector<int>& ring = st.ring;
     ring.clear();
     int lowest = c0;
+    st.lowest_at = 0;
     int c = c0;
     do {
+      if (!infinite(c) && orig_[c] < orig_[lowest]) {  // walks start finite
+        lowest = c;
+        st.lowest_at = ring.size();
+      }
       ring.push_back(c);
-      if (!infinite(c) && orig_[c] < orig_[lowest]) lowest = c;  // walks start finite
       const int ii = index_of_vertex(c, vi), ij = index_of_vertex(c, vj);
       st.done[c] |= static_cast<std::uint8_t>(1u << local_edge(ii, ij));
       c = cells_[c].neighbor[CGAL::Triangulation_utils_3::next_around_edge(ii, ij)];
@@ -582,13 +587,20 @@ class SpatialExtractor {
     return lowest;
   }
 
-  // Walks the edge (a, b) whose ring (circulated from cell `from`) has its lowest CGAL id finite
-  // cell at c0.
+  // Walks the edge (a, b) whose ring (circulated from cell `from` around (a, b)) has its lowest
+  // CGAL id finite cell c0 at st.lowest_at.
   void walk_edge(WalkState& st, int w, int c0, int from, int a, int b) {
     int i0 = index_of_vertex(c0, a), j0 = index_of_vertex(c0, b);
-    if (i0 > j0) std::swap(i0, j0);
+    const bool turned = i0 > j0;  // the walk goes around (b, a): the other way round
+    if (turned) std::swap(i0, j0);
     const int vi = cells_[c0].vertex[i0], vj = cells_[c0].vertex[j0];
-    if (c0 != from) circulate(st, c0, vi, vj);
+    if (c0 != from) {
+      // The ring circulated from c0 around (vi, vj) is the same cycle of cells, started at c0 and
+      // turned the other way if (vi, vj) is (b, a): no second circulation.
+      std::vector<int>& ring = st.ring;
+      std::rotate(ring.begin(), ring.begin() + static_cast<std::ptrdiff_t>(st.lowest_at), ring.end());
+      if (turned) std::reverse(ring.begin() + 1, ring.end());
+    }
     const std::size_t first = st.arcs.size();
     walk_ring(st, vi, vj);
     if (st.arcs.size() > first)
