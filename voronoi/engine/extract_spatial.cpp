@@ -519,9 +519,12 @@ class SpatialExtractor {
     release_large_buffers();
   }
 
-  // Puts the workers' arcs into the diagram in the order of their edges' CGAL ids. The arcs are
-  // appended worker by worker, each worker's buffers released (and returned to the system) at once,
-  // then permuted in place: the arcs are never held twice (~0.2 GB at 10^6 sites).
+  // Puts the workers' arcs into the diagram in the order of their edges' CGAL ids: each worker
+  // copies its arcs straight to their places, concurrently. The diagram's arcs are one fresh array
+  // (~0.2 GB at 10^6 sites), advised as huge pages before it is first touched. Before, the arcs
+  // were appended worker by worker and permuted in place by swaps, all on one core through
+  // 4 KiB page faults: 1.5 s of a 30 s build of 10^6 sites. The triangulation's arrays are
+  // released by now, so the arcs held twice here stay far below the walks' peak.
   void gather_arcs(std::vector<WalkState>& states) {
     const std::size_t start = out_.arcs.size();
     std::size_t total = start, edge_count = 0;
@@ -531,7 +534,7 @@ class SpatialExtractor {
       total += states[w].arcs.size();
       edge_count += states[w].edges.size();
     }
-    // Where each arc goes (relative to start): edges in key order, each edge's arcs in walk order.
+    // Where each arc goes: edges in key order, each edge's arcs in walk order.
     LargeVector<EdgeArcs> edges;
     edges.reserve(edge_count);
     for (WalkState& st : states) {
@@ -542,27 +545,24 @@ class SpatialExtractor {
     LargeVector<std::uint32_t> dest(total - start);
     std::uint32_t next = 0;
     for (const EdgeArcs& e : edges)
-      for (std::size_t k = e.begin; k < e.end; ++k) dest[base[e.worker] + k - start] = next++;
+      for (std::size_t k = e.begin; k < e.end; ++k) dest[base[e.worker] + k - start] = static_cast<std::uint32_t>(start) + next++;
     LargeVector<EdgeArcs>().swap(edges);
-    release_large_buffers();
     out_.arcs.reserve(total);
-    mends_.reserve(total);
-    mends_.assign(start, ArcMend::kNone);
-    for (WalkState& st : states) {
-      out_.arcs.insert(out_.arcs.end(), st.arcs.begin(), st.arcs.end());
-      mends_.insert(mends_.end(), st.mends.begin(), st.mends.end());
-      LargeVector<Arc>().swap(st.arcs);
-      LargeVector<ArcMend>().swap(st.mends);
-      release_large_buffers();
-    }
-    // Cycle by cycle: each swap puts one arc where it belongs.
-    for (std::size_t i = 0; i < dest.size(); ++i)
-      while (dest[i] != i) {
-        const std::uint32_t j = dest[i];
-        std::swap(out_.arcs[start + i], out_.arcs[start + j]);
-        std::swap(mends_[start + i], mends_[start + j]);
-        std::swap(dest[i], dest[j]);
+    advise_huge_pages(out_.arcs.data() + start, (total - start) * sizeof(Arc));
+    out_.arcs.resize(total);
+    mends_.assign(total, ArcMend::kNone);
+    parallel_chunks(states.size(), static_cast<int>(states.size()), [&](std::size_t begin, std::size_t end, int) {
+      for (std::size_t w = begin; w < end; ++w) {
+        WalkState& st = states[w];
+        const std::uint32_t* to = dest.data() + (base[w] - start);
+        for (std::size_t k = 0; k < st.arcs.size(); ++k) {
+          out_.arcs[to[k]] = st.arcs[k];
+          mends_[to[k]] = st.mends[k];
+        }
+        LargeVector<Arc>().swap(st.arcs);
+        LargeVector<ArcMend>().swap(st.mends);
       }
+    });
   }
 
   // The cells around the edge (vi, vj) of cell c0, in the order of CGAL's cell circulator
