@@ -16,7 +16,7 @@
 namespace covmap::voronoi::engine {
 namespace {
 
-using RT = RegularTriangulation;
+using RT = SpatialTriangulation;
 using Face = RT::Cell_handle;
 using Vertex = RT::Vertex_handle;
 
@@ -241,7 +241,7 @@ class PlanarExtractor {
 
 }  // namespace
 
-void extract_planar(const std::vector<Site>& sites, RegularTriangulation& rt, Diagram& out,
+void extract_planar(const std::vector<Site>& sites, SpatialTriangulation& rt, Diagram& out,
                     BuildStats& stats) {
   PlanarExtractor(sites, rt, out, stats).run();
 }
