@@ -633,14 +633,17 @@ class SpatialExtractor {
     }
     if (!ccw) std::reverse(tokens.begin(), tokens.end());
     bool have_link = false;  // the link is needed rarely: gathered on first use
+    // Each link vertex once: the one a cell shares with the next cell of the ring (its readers
+    // take a minimum or an "all"; listing each vertex twice only doubled their work).
     auto link = [&]() -> const std::vector<RawPoint>& {
       if (!have_link) {
         st.link.clear();
-        for (int c : ring)
-          for (int k = 0; k < 4; ++k) {
-            const int v = cells_[c].vertex[k];
-            if (v != vi && v != vj && v != kInfiniteVertex) st.link.push_back(raw(v));
-          }
+        for (std::size_t p = 0; p < m; ++p) {
+          const int c = ring[p];
+          const int off = index_of_neighbor(c, ring[(p + 1) % m]);  // the vertex off that facet
+          const int v = cells_[c].vertex[6 - index_of_vertex(c, vi) - index_of_vertex(c, vj) - off];
+          if (v != kInfiniteVertex) st.link.push_back(raw(v));
+        }
         have_link = true;
       }
       return st.link;
