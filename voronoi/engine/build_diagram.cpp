@@ -21,7 +21,7 @@ namespace engine {
 
 // Collinear lifted sites: every power facet is a whole plane, so each triangulation edge carries
 // its full bisector and there are no nodes.
-void extract_linear(const std::vector<Site>& sites, RegularTriangulation& rt, Diagram& out) {
+void extract_linear(const std::vector<Site>& sites, SpatialTriangulation& rt, Diagram& out) {
   for (auto e = rt.finite_edges_begin(); e != rt.finite_edges_end(); ++e) {
     const int si = site_of(e->first->vertex(e->second));
     const int sj = site_of(e->first->vertex(e->third));
@@ -181,35 +181,24 @@ Diagram build_diagram(std::span<const Site> input, BuildStats* stats_out) {
   points.reserve(input.size());
   for (std::size_t i = 0; i < out.sites.size(); ++i)
     points.emplace_back(RawPoint(out.sites[i].x, out.sites[i].y, out.sites[i].weight), static_cast<double>(i));
-  // The cell layout by dimension: see regular_triangulation.h. A spatial triangulation is copied
-  // into flat arrays (timed with the extraction) and released before extracting.
+  // One cell layout in every dimension (regular_triangulation.h). A spatial triangulation is
+  // copied into flat arrays (timed with the extraction) and released before extracting.
   std::optional<FlatTriangulation> flat;
-  const bool spatial = lifted::span_space(points);
-  const auto spatial_flat = [&](auto& rt) {
+  {
+    const bool spatial = lifted::span_space(points);  // exact: CGAL's dimension must agree
+    SpatialTriangulation rt(points.begin(), points.end());
+    if ((rt.dimension() == 3) != spatial)
+      throw EngineFailure("the triangulation's dimension disagrees with the exact rank of the lifted sites");
     std::vector<RawWeightedPoint>().swap(points);  // the vertices hold copies
     stats.triangulation_seconds = seconds_since(start);
     stats.triangulation_dimension = rt.dimension();
     start = Clock::now();
-    flat = flatten_triangulation(out.sites, rt);
-  };
-  if (spatial) {
-    SpatialTriangulation rt(points.begin(), points.end());
-    if (rt.dimension() != 3) throw EngineFailure("lifted sites spanning space gave a triangulation of dimension < 3");
-    spatial_flat(rt);
-  } else {
-    RegularTriangulation rt(points.begin(), points.end());
-    if (rt.dimension() == 3) {  // not reached: coplanar lifted sites span no space
-      spatial_flat(rt);
-    } else {
-      std::vector<RawWeightedPoint>().swap(points);
-      stats.triangulation_seconds = seconds_since(start);
-      stats.triangulation_dimension = rt.dimension();
-      start = Clock::now();
-      if (rt.dimension() == 2)
-        extract_planar(out.sites, rt, out, stats);
-      else
-        extract_linear(out.sites, rt, out);
-    }
+    if (rt.dimension() == 3)
+      flat = flatten_triangulation(out.sites, rt);
+    else if (rt.dimension() == 2)
+      extract_planar(out.sites, rt, out, stats);
+    else
+      extract_linear(out.sites, rt, out);
   }
   if (flat) extract_spatial(out.sites, std::move(*flat), out, stats);
   // The extractor's arrays (~0.6 GB at 10^6 sites) are released by now; core/large_buffer.h would

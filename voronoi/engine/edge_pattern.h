@@ -8,20 +8,25 @@
 
 #include <cstdint>
 #include <optional>
+#include <type_traits>
 
 #include "voronoi/engine/power_geometry.h"
 
 namespace covmap::voronoi::engine {
 
+// No member initializers, so that the 3D extractor's array of facet patterns is allocated without
+// touching its pages (every entry is written, on all cores): EdgePattern{} is the zero pattern,
+// a default-initialized one is indeterminate.
 struct EdgePattern {
-  std::int8_t roots = 0;          // interior zero points, in order from A to B (double root: 1)
-  std::int8_t sign[3] = {0, 0, 0};  // sign of g before, between and after the roots
-  bool empty = false;             // A and B are the same point: the edge has no interior
+  std::int8_t roots;    // interior zero points, in order from A to B (double root: 1)
+  std::int8_t sign[3];  // sign of g before, between and after the roots
+  bool empty;           // A and B are the same point: the edge has no interior
 };
+static_assert(std::is_trivially_default_constructible_v<EdgePattern>);
 
 // Signs of g at the ends and of the bilinear form / discriminant decide the pattern.
 inline EdgePattern pattern_from_signs(int sa, int sab, int sb, int sdisc) {
-  EdgePattern p;
+  EdgePattern p{};
   auto one = [&](int s) {
     p.roots = 0;
     p.sign[0] = static_cast<std::int8_t>(s);
@@ -74,7 +79,7 @@ std::optional<EdgePattern> edge_pattern(const Homog<NT>& a, const Homog<NT>& b) 
     const auto sw = certain_sign(a.X * b.X + a.Y * b.Y + a.Z * b.Z + a.W * b.W);
     if (!m1 || !m2 || !m3 || !m4 || !m5 || !m6 || !sw) return std::nullopt;
     if (*m1 == 0 && *m2 == 0 && *m3 == 0 && *m4 == 0 && *m5 == 0 && *m6 == 0 && *sw > 0) {
-      EdgePattern p;
+      EdgePattern p{};
       p.empty = true;
       return p;
     }

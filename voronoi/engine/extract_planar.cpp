@@ -16,13 +16,13 @@
 namespace covmap::voronoi::engine {
 namespace {
 
-using RT = RegularTriangulation;
+using RT = SpatialTriangulation;
 using Face = RT::Cell_handle;
 using Vertex = RT::Vertex_handle;
 
 struct FaceData {
   bool zero = false;            // a_c on the paraboloid
-  EdgePattern half[2];          // lower (-n → a_c) and upper (a_c → +n)
+  EdgePattern half[2]{};        // lower (-n → a_c) and upper (a_c → +n)
   int node[2][2] = {{kNone, kNone}, {kNone, kNone}};
   int centre_node = kNone;
 };
@@ -110,7 +110,7 @@ class PlanarExtractor {
 
   struct FaceResult {
     bool zero;
-    EdgePattern half[2];
+    EdgePattern half[2]{};
   };
 
   void compute_face(std::size_t k) {
@@ -241,7 +241,7 @@ class PlanarExtractor {
 
 }  // namespace
 
-void extract_planar(const std::vector<Site>& sites, RegularTriangulation& rt, Diagram& out,
+void extract_planar(const std::vector<Site>& sites, SpatialTriangulation& rt, Diagram& out,
                     BuildStats& stats) {
   PlanarExtractor(sites, rt, out, stats).run();
 }

@@ -14,9 +14,9 @@ namespace covmap::voronoi::engine {
 // triangulation (engine/flat_triangulation.h), which it consumes.
 void extract_spatial(const std::vector<Site>& sites, FlatTriangulation flat, Diagram& out, BuildStats& stats);
 // Dimension 2: all lifted sites coplanar, e.g. all weights equal (engine/extract_planar.cpp).
-void extract_planar(const std::vector<Site>& sites, RegularTriangulation& rt, Diagram& out,
+void extract_planar(const std::vector<Site>& sites, SpatialTriangulation& rt, Diagram& out,
                     BuildStats& stats);
 // Dimension ≤ 1: every triangulation edge carries one whole bisector.
-void extract_linear(const std::vector<Site>& sites, RegularTriangulation& rt, Diagram& out);
+void extract_linear(const std::vector<Site>& sites, SpatialTriangulation& rt, Diagram& out);
 
 }  // namespace covmap::voronoi::engine

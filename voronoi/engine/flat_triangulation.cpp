@@ -93,6 +93,5 @@ FlatTriangulation flatten_triangulation(const std::vector<Site>& sites, Triangul
 }
 
 template FlatTriangulation flatten_triangulation(const std::vector<Site>&, SpatialTriangulation&);
-template FlatTriangulation flatten_triangulation(const std::vector<Site>&, RegularTriangulation&);
 
 }  // namespace covmap::voronoi::engine

@@ -48,7 +48,7 @@ struct FlatTriangulation {
 LargeVector<int> morton_ranks(const std::vector<Site>& sites);
 
 // The flat copy of `rt` (a 3-dimensional triangulation of `sites`); `rt` is cleared afterwards.
-// Defined for SpatialTriangulation and RegularTriangulation.
+// Defined for SpatialTriangulation.
 template <class Triangulation>
 FlatTriangulation flatten_triangulation(const std::vector<Site>& sites, Triangulation& rt);
 
