@@ -15,6 +15,7 @@
 #include "fitting/inner_ordering.h"
 #include "fitting/problem_setup.h"
 #include "fitting/robust_loss.h"
+#include "fitting/serial_factorization.h"
 #include "fitting/solver_logging.h"
 #include "fitting/tolerances.h"
 #include "fitting/validate.h"
@@ -158,6 +159,7 @@ RefineResult refine_sites(std::span<const Site> initial, std::span<const Boundar
     ceres::Solver::Options solver = solver_options(options);
     if (solver.use_inner_iterations) solver.inner_iteration_ordering = inner_ordering(blocks, layout, samples);
     Heartbeat heartbeat(options.on_iteration);
+    (void)detail::keep_sparse_factorization_serial();
     if (options.on_iteration) solver.callbacks.push_back(&heartbeat);
     ceres::Solve(solver, built.problem.get(), &solved);
     summary.converged = solved.termination_type == ceres::CONVERGENCE;
