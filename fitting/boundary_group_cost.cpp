@@ -41,26 +41,30 @@ bool PairCost::Evaluate(double const* const* parameters, double* residuals, doub
   const double* b = parameters[1];
   double* ja = jacobians != nullptr ? jacobians[0] : nullptr;
   double* jb = jacobians != nullptr ? jacobians[1] : nullptr;
+  const bool derivatives = ja != nullptr || jb != nullptr;
   // The same Jets as ceres::AutoDiffCostFunction<BoundaryResidual, 1, 3, 3>: a's parameters are
   // derivative slots 0–2, b's 3–5.
   PairJet aj[kSiteBlockSize], bj[kSiteBlockSize];
-  if (ja != nullptr || jb != nullptr) {
+  if (derivatives) {
     for (int k = 0; k < kSiteBlockSize; ++k) {
       aj[k] = PairJet(a[k], k);
       bj[k] = PairJet(b[k], kSiteBlockSize + k);
     }
   }
+  // w_a / w_b once for all the pair's samples (as each sample's functor would compute it).
+  const PairJet ratio_jet = derivatives ? BoundaryResidual::weight_ratio(aj, bj) : PairJet();
+  const double ratio = derivatives ? 0.0 : BoundaryResidual::weight_ratio(a, b);
   double sum_rho = 0.0;
   for (std::size_t i = 0; i < samples_.size(); ++i) {
     const PairSample& p = samples_[i];
     const BoundaryResidual residual(p.x, p.y, p.scale);
     double r = 0.0;
     PairJet rj;
-    if (ja != nullptr || jb != nullptr) {
-      residual(aj, bj, &rj);
+    if (derivatives) {
+      residual.with_ratio(aj, bj, ratio_jet, &rj);
       r = rj.a;
     } else {
-      residual(a, b, &r);
+      residual.with_ratio(a, b, ratio, &r);
     }
     const double s = r * r;
     double rho[3] = {s, 1.0, 0.0};

@@ -56,13 +56,24 @@ class BoundaryResidual {
 
   template <typename T>
   bool operator()(const T* a, const T* b, T* residual) const {
+    return with_ratio(a, b, weight_ratio(a, b), residual);
+  }
+
+  // k = w_a / w_b, which every sample between a and b shares (boundary_group_cost.cpp computes it
+  // once per pair; the residual is the same to the bit).
+  template <typename T>
+  static T weight_ratio(const T* a, const T* b) {
     using std::exp;
+    return exp(a[kLogWeightIndex] - b[kLogWeightIndex]);
+  }
+
+  template <typename T>
+  bool with_ratio(const T* a, const T* b, const T& k, T* residual) const {
     using std::sqrt;
     const T ax = T(px_) - a[0], ay = T(py_) - a[1];
     const T bx = T(px_) - b[0], by = T(py_) - b[1];
     const T da = sqrt(ax * ax + ay * ay);
     const T db = sqrt(bx * bx + by * by);
-    const T k = exp(a[kLogWeightIndex] - b[kLogWeightIndex]);
     const T f = da - k * db;
     const T gx = ax / da - k * bx / db;
     const T gy = ay / da - k * by / db;
