@@ -5,7 +5,7 @@
 
 namespace covmap::cleaning {
 
-UniformGrid::UniformGrid(double cell) : cell_(cell) {
+UniformGrid::UniformGrid(double cell, Index index) : cell_(cell), index_kind_(index) {
   if (!(cell > 0.0) || !std::isfinite(cell)) throw std::invalid_argument("UniformGrid: cell size must be positive");
   for (int level = 0; level < kLevels; ++level) level_cell_[level] = level == 0 ? cell : level_cell_[level - 1] * kLevelRatio;
 }
@@ -53,6 +53,36 @@ void UniformGrid::finish() {
     std::size_t slot = mix(entries_[k].first) & (capacity - 1);
     while (slots_[slot] != kEmpty) slot = (slot + 1) & (capacity - 1);
     slots_[slot] = static_cast<std::uint32_t>(k);
+  }
+  build_dense_tables();
+}
+
+void UniformGrid::build_dense_tables() {
+  if (index_kind_ == Index::kHashOnly) return;
+  constexpr std::uint64_t kMask = (std::uint64_t{1} << 28) - 1;
+  // Each level's entries are one run of the sorted entries (the level is the key's top byte).
+  for (std::size_t begin = 0, end = 0; begin < entries_.size(); begin = end) {
+    const std::uint64_t level = entries_[begin].first >> 56;
+    std::uint64_t x_lo = kMask, x_hi = 0, y_lo = kMask, y_hi = 0;
+    for (end = begin; end < entries_.size() && (entries_[end].first >> 56) == level; ++end) {
+      const std::uint64_t x = entries_[end].first & kMask, y = (entries_[end].first >> 28) & kMask;
+      x_lo = std::min(x_lo, x), x_hi = std::max(x_hi, x), y_lo = std::min(y_lo, y), y_hi = std::max(y_hi, y);
+    }
+    const std::uint64_t nx = x_hi - x_lo + 1, ny = y_hi - y_lo + 1;  // each at most 2^28: no overflow
+    if (nx * ny > std::max<std::uint64_t>(kDenseCellsPerEntry * (end - begin), kDenseCellsAlways)) continue;
+    DenseTable& t = dense_[level];
+    t.x0 = x_lo, t.y0 = y_lo, t.nx = nx, t.ny = ny;
+    t.first.resize(nx * ny + 1);
+    // Entries are sorted row by row, so their cells' positions in the table never decrease.
+    std::size_t e = begin;
+    for (std::uint64_t c = 0; c <= nx * ny; ++c) {
+      while (e < end) {
+        const std::uint64_t x = entries_[e].first & kMask, y = (entries_[e].first >> 28) & kMask;
+        if ((y - y_lo) * nx + (x - x_lo) >= c) break;
+        ++e;
+      }
+      t.first[c] = static_cast<std::uint32_t>(e);
+    }
   }
 }
 

@@ -43,8 +43,12 @@ TEST(NeighbourGrid, FindsEverySegmentWithinACellAtEveryLength) {
       grid.for_each_within_half_cell(p, [&](int item) { half.insert(item); });
       for (int i = 0; i < static_cast<int>(segments.size()); ++i) {
         const double d = distance_to_segment(p, segments[i].first, segments[i].second);
-        if (d <= cell) EXPECT_TRUE(found.count(i)) << "trial " << trial << " item " << i << " at " << d;
-        if (d <= cell / 2) EXPECT_TRUE(half.count(i)) << "trial " << trial << " item " << i << " at " << d;
+        if (d <= cell) {
+          EXPECT_TRUE(found.count(i)) << "trial " << trial << " item " << i << " at " << d;
+        }
+        if (d <= cell / 2) {
+          EXPECT_TRUE(half.count(i)) << "trial " << trial << " item " << i << " at " << d;
+        }
       }
     }
   }
@@ -63,6 +67,53 @@ TEST(NeighbourGrid, AbsurdlyLongSegmentsCostNoMoreThanShortOnes) {
   found.clear();
   grid.for_each_near({5.0002, 5.0001}, [&](int item) { found.insert(item); });
   EXPECT_TRUE(found.count(2));
+}
+
+// Map boundaries: many short edges covering a region densely, as a coverage map's are, and a few
+// long ones (coarse levels). The dense
+// table must then serve every query with exactly the hash's items in the hash's order (the audit's
+// results depend on the order of ties), and find everything within reach (brute force). Regions on
+// both sides of the origin and below it, and one across 2^27 cells, where rows wrap around the key
+// space (the table leaves those to the hash).
+TEST(NeighbourGrid, DenseTableVisitsWhatTheHashVisitsInTheSameOrder) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double cell = 1.0;
+  for (const Point origin : {Point{0, 0}, Point{-40, -40}, Point{-20, 7}, Point{-80.5, -3.25}, Point{134217708, 5}}) {
+    UniformGrid dense(cell), hashed(cell, UniformGrid::Index::kHashOnly);
+    std::vector<std::pair<Point, Point>> segments;
+    for (int i = 0; i < 4000; ++i) {
+      const Point a{origin.x + 40 * unit(rng), origin.y + 40 * unit(rng)};
+      // One in forty is long (up to 10^4 cells, as a map's outer border): the coarse levels too.
+      const double length = cell * (i % 40 == 0 ? std::pow(10.0, 4 * unit(rng)) : 2 * unit(rng));
+      const double angle = 6.283185307179586 * unit(rng);
+      segments.emplace_back(a, Point{a.x + length * std::cos(angle), a.y + length * std::sin(angle)});
+      dense.add_segment(i, segments.back().first, segments.back().second);
+      hashed.add_segment(i, segments.back().first, segments.back().second);
+    }
+    dense.finish();
+    hashed.finish();
+    for (int q = 0; q < 2000; ++q) {
+      const Point p{origin.x - 2 + 44 * unit(rng), origin.y - 2 + 44 * unit(rng)};
+      std::vector<int> near_dense, near_hashed, half_dense, half_hashed;
+      dense.for_each_near(p, [&](int item) { near_dense.push_back(item); });
+      hashed.for_each_near(p, [&](int item) { near_hashed.push_back(item); });
+      dense.for_each_within_half_cell(p, [&](int item) { half_dense.push_back(item); });
+      hashed.for_each_within_half_cell(p, [&](int item) { half_hashed.push_back(item); });
+      ASSERT_EQ(near_dense, near_hashed) << "query " << p.x << ", " << p.y;
+      ASSERT_EQ(half_dense, half_hashed) << "query " << p.x << ", " << p.y;
+      const std::set<int> found(near_dense.begin(), near_dense.end()), half(half_dense.begin(), half_dense.end());
+      for (int i = 0; i < static_cast<int>(segments.size()); ++i) {
+        const double d = distance_to_segment(p, segments[i].first, segments[i].second);
+        if (d <= cell) {
+          EXPECT_TRUE(found.count(i)) << "item " << i << " at " << d;
+        }
+        if (d <= cell / 2) {
+          EXPECT_TRUE(half.count(i)) << "item " << i << " at " << d;
+        }
+      }
+    }
+  }
 }
 
 }  // namespace
