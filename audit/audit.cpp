@@ -82,7 +82,7 @@ AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSen
 
   // 2. Starting values: tolerant recognition; reported values where it found nothing better.
   progress("recognition", 0.2);
-  const SiteEstimates estimates = estimate_sites(cleaned, cells.centroids);
+  const SiteEstimates estimates = estimate_sites(cleaned, cells.centroids, options.threads);
   const ReportedOf reported_of = reported_in_map(reported, cells);
   const MapRaster raster = map_raster(map, cells, out.bin_size_m);
   const std::vector<Site> start = starting_sites(estimates, cells, raster, reported_of, out.messages);

@@ -10,6 +10,7 @@
 #include "mobius/bisector_relation.h"
 #include "mobius/node_constraint.h"
 #include "audit/tolerances.h"
+#include "core/parallel.h"
 #include "voronoi/arc_path.h"
 
 namespace covmap::audit {
@@ -195,20 +196,21 @@ bool underdetermined(const std::vector<SiteConstraint>& cs) {
 
 // 2. Every sensor at its centroid with weight 1; a sensor with junction constraints at their
 // least-squares intersection instead (EstimateSource::kJunctions), with its residual.
+// Each sensor's solve is its own, so they run on the threads, each writing its own entries.
 void locate_at_junctions(const std::vector<std::string>& sensors, std::span<const Point> centroids,
-                         const std::vector<std::vector<SiteConstraint>>& constraints, SiteEstimates& out) {
-  for (std::size_t i = 0; i < sensors.size(); ++i) {
+                         const std::vector<std::vector<SiteConstraint>>& constraints, int threads, SiteEstimates& out) {
+  parallel_items(sensors.size(), threads, [&](std::size_t i) {
     const mobius::Complex centroid = i < centroids.size() ? mobius::Complex(centroids[i].x, centroids[i].y) : mobius::Complex(0, 0);
     out.sites[i] = {sensors[i], centroid.real(), centroid.imag(), 1.0};
     const auto& cs = constraints[i];
     out.constraints[i] = static_cast<int>(cs.size());
-    if (cs.empty()) continue;
+    if (cs.empty()) return;
     const mobius::Complex best = least_squares_intersection(cs, centroid);
     out.sites[i].x = best.real();
     out.sites[i].y = best.imag();
     out.residual[i] = std::sqrt(cost(cs, best) / static_cast<double>(cs.size()));
     out.how[i] = EstimateSource::kJunctions;
-  }
+  });
 }
 
 // An arc between the regions of two different sensors (not the map's frame).
@@ -351,7 +353,7 @@ std::string to_string(EstimateSource s) {
   return "?";
 }
 
-SiteEstimates estimate_sites(const cleaning::CleanedMap& map, std::span<const Point> centroids) {
+SiteEstimates estimate_sites(const cleaning::CleanedMap& map, std::span<const Point> centroids, int threads) {
   const std::size_t n = map.sensors.size();
   SiteEstimates out;
   out.sites.resize(n);
@@ -360,7 +362,7 @@ SiteEstimates estimate_sites(const cleaning::CleanedMap& map, std::span<const Po
   out.constraints.assign(n, 0);
 
   const std::vector<std::vector<SiteConstraint>> constraints = constraints_at_junctions(map.graph, n);
-  locate_at_junctions(map.sensors, centroids, constraints, out);
+  locate_at_junctions(map.sensors, centroids, constraints, threads, out);
   const auto neighbours = site_adjacency(map.graph, n);
   locate_underdetermined(map.graph, neighbours, centroids, constraints, out);
   locate_from_neighbours(map.graph, neighbours, out);

@@ -46,6 +46,7 @@ struct SiteEstimates {
 };
 
 // centroids: per cleaned sensor, a point inside (or at the centre of) its cells, for starting values.
-SiteEstimates estimate_sites(const cleaning::CleanedMap& map, std::span<const Point> centroids);
+// threads: the sensors' junction solves run on up to this many; the result does not depend on it.
+SiteEstimates estimate_sites(const cleaning::CleanedMap& map, std::span<const Point> centroids, int threads = 1);
 
 }  // namespace covmap::audit

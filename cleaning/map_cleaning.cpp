@@ -7,6 +7,7 @@
 #include <variant>
 
 #include "cleaning/curve_fit.h"
+#include "core/parallel.h"
 #include "core/readable_numbers.h"
 #include "cleaning/arc_graph.h"
 #include "cleaning/range_edges.h"
@@ -105,9 +106,28 @@ CleanedMap clean_coverage_map(std::span<const CoverageCell> cells, const Cleanin
   report.overlaps_resolved = topology.overlaps_resolved;
   report.seams = topology.seams;
 
-  // Fit every boundary chain (interior points only), then settle the junctions on the fits.
+  // Fit every boundary chain (interior points only), then settle the junctions on the fits. The
+  // fits are independent, so they run on the threads, each into its own slot; the chains are then
+  // kept or dropped in order, as before.
   const double huber = cleaning::tolerance::kHuberThreshold * snap;
-  for (auto& raw : topology.chains) {
+  std::vector<cleaning::FittedCurve> fits(topology.chains.size());
+  parallel_items(topology.chains.size(), options.threads, [&](std::size_t k) {
+    const cleaning::RawChain& raw = topology.chains[k];
+    if (raw.sensor_b == kNone) return;
+    if (raw.from == kNone || raw.from == raw.to) {  // a loop
+      fits[k] = cleaning::fit_curve(raw.points, huber, options.line_preference, true);
+    } else if (raw.points.size() >= cleaning::tolerance::kMinFitPoints) {
+      fits[k] = cleaning::fit_curve(raw.points, huber, options.line_preference, false);
+    } else {
+      // Too few points of its own (its copies hardly face each other): the junctions help.
+      std::vector<Point> with_ends{topology.junctions[static_cast<std::size_t>(raw.from)]};
+      with_ends.insert(with_ends.end(), raw.points.begin(), raw.points.end());
+      with_ends.push_back(topology.junctions[static_cast<std::size_t>(raw.to)]);
+      fits[k] = cleaning::fit_curve(with_ends, huber, options.line_preference, false);
+    }
+  });
+  for (std::size_t k = 0; k < topology.chains.size(); ++k) {
+    cleaning::RawChain& raw = topology.chains[k];
     BoundaryChain chain;
     chain.sensor_a = raw.sensor_a;
     chain.sensor_b = raw.sensor_b;
@@ -115,23 +135,13 @@ CleanedMap clean_coverage_map(std::span<const CoverageCell> cells, const Cleanin
     chain.to = raw.to;
     chain.points = std::move(raw.points);
     if (chain.sensor_b != kNone) {
+      chain.fit = std::move(fits[k]);
       const bool loop = chain.from == kNone || chain.from == chain.to;
-      if (loop) {
-        chain.fit = cleaning::fit_curve(chain.points, huber, options.line_preference, true);
-        if (chain.points.size() < cleaning::tolerance::kMinFitPoints ||
-            !std::holds_alternative<Circle>(chain.fit.curve)) {
-          // A loop whose copies hardly face each other: nothing to draw a circle through.
-          ++report.short_chains_dropped;
-          continue;
-        }
-      } else if (chain.points.size() >= cleaning::tolerance::kMinFitPoints) {
-        chain.fit = cleaning::fit_curve(chain.points, huber, options.line_preference, false);
-      } else {
-        // Too few points of its own (its copies hardly face each other): the junctions help.
-        std::vector<Point> with_ends{topology.junctions[static_cast<std::size_t>(chain.from)]};
-        with_ends.insert(with_ends.end(), chain.points.begin(), chain.points.end());
-        with_ends.push_back(topology.junctions[static_cast<std::size_t>(chain.to)]);
-        chain.fit = cleaning::fit_curve(with_ends, huber, options.line_preference, false);
+      if (loop && (chain.points.size() < cleaning::tolerance::kMinFitPoints ||
+                   !std::holds_alternative<Circle>(chain.fit.curve))) {
+        // A loop whose copies hardly face each other: nothing to draw a circle through.
+        ++report.short_chains_dropped;
+        continue;
       }
     }
     out.chains.push_back(std::move(chain));
