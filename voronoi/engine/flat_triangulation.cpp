@@ -7,15 +7,12 @@
 #endif
 
 namespace covmap::voronoi::engine {
-namespace {
 
 void trim_heap() {
 #if defined(__GLIBC__)
   malloc_trim(0);
 #endif
 }
-
-}  // namespace
 
 LargeVector<int> morton_ranks(const std::vector<Site>& sites) {
   constexpr int kBits = 16;

@@ -43,6 +43,10 @@ struct FlatTriangulation {
   LargeVector<std::uint8_t> flags;   // per cell: kInfiniteCell set, nothing else yet
 };
 
+// Returns the memory freed into malloc's heaps to the system (glibc's malloc_trim; elsewhere
+// nothing).
+void trim_heap();
+
 // Per site, its rank along a Morton curve of the sites' positions, which lie in (-1, 1)
 // (build_diagram scales them so). Only memory layout depends on it.
 LargeVector<int> morton_ranks(const std::vector<Site>& sites);
