@@ -37,21 +37,29 @@ LargeVector<int> morton_ranks(const std::vector<Site>& sites) {
   return rank;
 }
 
+FlatVertices flat_vertices(const std::vector<Site>& sites) {
+  FlatVertices v;
+  v.rank = morton_ranks(sites);
+  v.points.resize(sites.size());
+  v.vertex_site.resize(sites.size());
+  for (std::size_t i = 0; i < sites.size(); ++i) {
+    v.points[v.rank[i]] = RawPoint(sites[i].x, sites[i].y, sites[i].weight);
+    v.vertex_site[v.rank[i]] = static_cast<int>(i);
+  }
+  return v;
+}
+
 template <class Triangulation>
-FlatTriangulation flatten_triangulation(const std::vector<Site>& sites, Triangulation& rt) {
+FlatTriangulation flatten_triangulation(const std::vector<Site>& sites, FlatVertices vertices, Triangulation& rt) {
   FlatTriangulation flat;
   const std::size_t n = rt.tds().number_of_cells();
   flat.cells.resize(n);
   flat.orig.resize(n);
   flat.by_orig.resize(n);
   flat.flags.assign(n, 0);
-  const LargeVector<int> rank = morton_ranks(sites);
-  flat.points.resize(sites.size());
-  flat.vertex_site.resize(sites.size());
-  for (std::size_t i = 0; i < sites.size(); ++i) {
-    flat.points[rank[i]] = RawPoint(sites[i].x, sites[i].y, sites[i].weight);
-    flat.vertex_site[rank[i]] = static_cast<int>(i);
-  }
+  const LargeVector<int> rank = std::move(vertices.rank);
+  flat.points = std::move(vertices.points);
+  flat.vertex_site = std::move(vertices.vertex_site);
   // Cells by the rank of their first-ranked site: a counting sort, CGAL's order within a rank.
   LargeVector<int> first(sites.size() + 1, 0);
   int id = 0;
@@ -89,6 +97,6 @@ FlatTriangulation flatten_triangulation(const std::vector<Site>& sites, Triangul
   return flat;
 }
 
-template FlatTriangulation flatten_triangulation(const std::vector<Site>&, SpatialTriangulation&);
+template FlatTriangulation flatten_triangulation(const std::vector<Site>&, FlatVertices, SpatialTriangulation&);
 
 }  // namespace covmap::voronoi::engine
