@@ -50,7 +50,13 @@ void straighten_flat_arcs(Diagram& d) {
     // almost every arc.
     const Site& si = d.sites[a.left_site];
     const Site& sj = d.sites[a.right_site];
-    const double spacing = std::hypot(sj.x - si.x, sj.y - si.y);
+    // Most circles are decided without hypot: r² below a quarter of (ratio × spacing)² (rounding
+    // errs by a few ulps, the margin is a factor of 4) is certainly not above ratio × hypot.
+    // Sites and radii are scaled (build_diagram), so the squares neither overflow nor underflow.
+    const double dx = sj.x - si.x, dy = sj.y - si.y;
+    constexpr double kQuarterRatio2 = 0.25 * tolerance::kHugeCircleRatio * tolerance::kHugeCircleRatio;
+    if (c->r * c->r < kQuarterRatio2 * (dx * dx + dy * dy)) continue;
+    const double spacing = std::hypot(dx, dy);
     if (!(c->r > tolerance::kHugeCircleRatio * spacing)) continue;
     const Node& p = d.nodes[a.from];
     const Node& q = d.nodes[a.to];

@@ -364,14 +364,20 @@ class SpatialExtractor {
     }
     const double cell =
         tolerance::kNodeMergeCandidate * std::max(std::hypot(xmax - xmin, ymax - ymin), 1e-300);
-    // Sweep over nodes sorted by x: candidates are within `cell` in both coordinates.
-    std::vector<int> order;
+    // Sweep over nodes sorted by x: candidates are within `cell` in both coordinates. Each entry
+    // carries its x, so neither the sort nor the sweep's test looks the node up. std::sort makes
+    // the same moves for the same comparisons whatever the element, so ties in x (grids) come out
+    // in the order an index array sorted by x got: the same unions, the same representatives.
+    struct ByX {
+      double x;
+      int node;
+    };
+    LargeVector<ByX> order;
     order.reserve(n);
     for (std::size_t i = 0; i < n; ++i)
       if (std::isfinite(out_.nodes[i].x) && std::isfinite(out_.nodes[i].y))
-        order.push_back(static_cast<int>(i));
-    std::sort(order.begin(), order.end(),
-              [&](int a, int b) { return out_.nodes[a].x < out_.nodes[b].x; });
+        order.push_back({out_.nodes[i].x, static_cast<int>(i)});
+    std::sort(order.begin(), order.end(), [](const ByX& a, const ByX& b) { return a.x < b.x; });
     std::vector<int> parent(n);
     std::iota(parent.begin(), parent.end(), 0);
     auto find = [&](int x) {
@@ -380,12 +386,12 @@ class SpatialExtractor {
     };
     bool merged = false;
     for (std::size_t a = 0; a < order.size(); ++a) {
-      const int i = order[a];
+      const int i = order[a].node;
       const Node& p = out_.nodes[i];
       for (std::size_t b = a + 1; b < order.size(); ++b) {
-        const int j = order[b];
+        if (order[b].x - p.x > cell) break;
+        const int j = order[b].node;
         const Node& q = out_.nodes[j];
-        if (q.x - p.x > cell) break;
         if (std::fabs(q.y - p.y) > cell) continue;
         if (node_facet_[j] == node_facet_[i]) continue;  // two crossings of one line
         if (find(j) != find(i) && same_crossing(i, j)) {
@@ -540,7 +546,8 @@ class SpatialExtractor {
       edges.insert(edges.end(), st.edges.begin(), st.edges.end());
       LargeVector<EdgeArcs>().swap(st.edges);
     }
-    std::sort(edges.begin(), edges.end(), [](const EdgeArcs& a, const EdgeArcs& b) { return a.key < b.key; });
+    // Keys are distinct (one per edge), so the two-thread sort gives std::sort's order.
+    parallel_sort(edges.begin(), edges.end(), [](const EdgeArcs& a, const EdgeArcs& b) { return a.key < b.key; });
     LargeVector<std::uint32_t> dest(total - start);
     std::uint32_t next = 0;
     for (const EdgeArcs& e : edges)
