@@ -77,10 +77,12 @@ TEST(SpatialTriangulationTest, CellsAreSmallerThanCgalsDefault) {
 }
 
 // The cells and vertices live in engine/cell_arena.h's huge-page chunks: triangulations built and
-// cleared on several threads at once keep their cells (the same as CGAL's default allocator
-// gives), and every chunk is returned once the last of them is gone.
+// cleared on several threads at once, some in prefaulted chunks, keep their cells (the same as
+// CGAL's default allocator gives), and every chunk is returned once the last of them is gone.
 TEST(SpatialTriangulationTest, ArenaChunksAreSharedByThreadsAndReturned) {
   ASSERT_EQ(arena_mapped_bytes(), 0u);
+  arena_prefault(std::size_t{5} << 20);  // taken by whichever triangulation needs a chunk first
+  EXPECT_GE(arena_mapped_bytes(), std::size_t{5} << 20);
   std::vector<std::vector<std::array<int, 8>>> got(3), expected(3);
   std::vector<std::thread> threads;
   for (int t = 0; t < 3; ++t)
@@ -96,6 +98,7 @@ TEST(SpatialTriangulationTest, ArenaChunksAreSharedByThreadsAndReturned) {
     });
   for (std::thread& t : threads) t.join();
   for (int t = 0; t < 3; ++t) EXPECT_EQ(got[t], expected[t]) << "thread " << t;
+  arena_release_prefaulted();
   EXPECT_EQ(arena_mapped_bytes(), 0u);
 }
 

@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <map>
 #include <mutex>
+#include <utility>
+#include <vector>
 
 #include "core/large_buffer.h"
 
@@ -33,6 +35,7 @@ struct Arena {
   std::uintptr_t current = 0;              // the chunk blocks are carved from; 0: none
   std::size_t live_bytes = 0;              // in blocks not yet freed, over all chunks
   std::size_t mapped_bytes = 0;            // of all chunks
+  std::vector<std::pair<std::uintptr_t, std::size_t>> ready;  // prefaulted chunks, not yet carved
 };
 
 // Never destroyed (like core/large_buffer.cpp's cache): a triangulation freed during static
@@ -88,8 +91,17 @@ void* arena_allocate(std::size_t bytes) {
       return p;
     }
   }
-  // A new chunk, twice what is live (a triangulation grows block by block), within the bounds
-  // above; the rest of the previous one stays unused (its untouched pages cost nothing).
+  // A new chunk: a prefaulted one if it is large enough, else one twice what is live (a
+  // triangulation grows block by block), within the bounds above. The rest of the previous chunk
+  // stays unused (its untouched pages cost nothing).
+  if (!a.ready.empty() && a.ready.front().second >= need) {
+    const auto [base, size] = a.ready.front();
+    a.ready.erase(a.ready.begin());
+    a.current = base;
+    a.chunks[base] = Chunk{size, need, 1};
+    a.live_bytes += need;
+    return reinterpret_cast<void*>(base);
+  }
   const std::size_t size =
       round_up(std::max(std::clamp(2 * a.live_bytes, kMinChunk, kMaxChunk), need), kHugePage);
   void* base = map_chunk(size);
@@ -112,6 +124,30 @@ void arena_deallocate(void* p, std::size_t bytes) noexcept {
   a.mapped_bytes -= it->second.size;
   unmap_chunk(reinterpret_cast<void*>(it->first), it->second.size);
   a.chunks.erase(it);
+}
+
+void arena_prefault(std::size_t bytes) {
+  constexpr std::size_t kPage = 4096;
+  for (std::size_t done = 0; done < bytes;) {
+    const std::size_t size = std::min(kMaxChunk, round_up(bytes - done, kHugePage));
+    auto* p = static_cast<volatile char*>(map_chunk(size));
+    for (std::size_t at = 0; at < size; at += kPage) p[at] = 0;  // with huge pages, 1 in 512 faults
+    Arena& a = arena();
+    const std::lock_guard lock(a.mutex);
+    a.ready.emplace_back(reinterpret_cast<std::uintptr_t>(p), size);
+    a.mapped_bytes += size;
+    done += size;
+  }
+}
+
+void arena_release_prefaulted() noexcept {
+  Arena& a = arena();
+  const std::lock_guard lock(a.mutex);
+  for (const auto& [base, size] : a.ready) {
+    unmap_chunk(reinterpret_cast<void*>(base), size);
+    a.mapped_bytes -= size;
+  }
+  a.ready.clear();
 }
 
 std::size_t arena_mapped_bytes() {
