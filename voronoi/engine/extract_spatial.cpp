@@ -217,6 +217,13 @@ class SpatialExtractor {
 
   void compute_facets() {
     facet_.resize(4 * cells_.size());  // no page touched: pass 1 writes every entry
+    // Per CGAL id, what pass 2 has to do for the cell: the nodes it numbers (bits 0-6) and whether
+    // any of its facet entries gets a first node at all (kWritesFacets: also those at infinity,
+    // which number none). Written in pass 1 by the worker computing the cell's patterns, so that
+    // pass 2 counts from one byte per cell and skips the cells with nothing to do, instead of
+    // reading four facet entries and their neighbours' ids through a cell in another order.
+    constexpr std::uint8_t kWritesFacets = 0x80;
+    LargeVector<std::uint8_t> todo(cells_.size());
     // Pass 1, in parallel: the crossing pattern of every facet, from its lower-id cell (each facet
     // entry pair is written by exactly one worker). Unions of cells sharing a vertex are rare and
     // applied afterwards.
@@ -228,6 +235,7 @@ class SpatialExtractor {
     parallel_chunks(cells_.size(), workers_, [&](std::size_t begin, std::size_t end, int w) {
       for (std::size_t k = begin; k < end; ++k) {
         const int c = static_cast<int>(k);
+        std::uint8_t cell_todo = 0;
         for (int f = 0; f < 4; ++f) {
           const int nk = cells_[k].neighbor[f];
           if (orig_[nk] < orig_[c]) continue;
@@ -248,7 +256,13 @@ class SpatialExtractor {
           std::reverse(bwd.sign, bwd.sign + p->roots + 1);
           if (p->empty && zero(c) && zero(nk))
             unions[w].push_back({orig_[c], f, orig_[nk]});
+          if (!p->empty && p->roots > 0) {
+            cell_todo |= kWritesFacets;
+            // On an edge at infinity (between two directions) the only possible zero is U: no node.
+            if (!(infinite(c) && infinite(nk))) cell_todo += static_cast<std::uint8_t>(p->roots);
+          }
         }
+        todo[orig_[c]] = cell_todo;
       }
     });
     for (std::size_t f : fallbacks) stats_.exact_fallbacks += f;
@@ -273,18 +287,10 @@ class SpatialExtractor {
     // range, so that it knows where its numbers start, then numbers and places them (each facet
     // is handled by the worker holding its lower-id cell). The numbers are those of one
     // sequential pass.
-    const auto numbered = [&](int c, int f) {  // how many nodes facet entry (c, f) numbers
-      const int nk = cells_[c].neighbor[f];
-      const EdgePattern& p = facet_[4 * c + f];
-      if (orig_[nk] < orig_[c] || p.empty) return 0;
-      // On an edge at infinity (between two directions) the only possible zero is U: no node.
-      return infinite(c) && infinite(nk) ? 0 : static_cast<int>(p.roots);
-    };
     std::vector<int> first_node(workers_ + 1, 0);
     parallel_chunks(cells_.size(), workers_, [&](std::size_t begin, std::size_t end, int w) {
       int count = 0;
-      for (std::size_t o = begin; o < end; ++o)
-        for (int f = 0; f < 4; ++f) count += numbered(by_orig_[o], f);
+      for (std::size_t o = begin; o < end; ++o) count += todo[o] & ~kWritesFacets;
       first_node[w + 1] = count;
     });
     first_node[0] = static_cast<int>(out_.nodes.size());
@@ -296,6 +302,7 @@ class SpatialExtractor {
     parallel_chunks(cells_.size(), workers_, [&](std::size_t begin, std::size_t end, int w) {
       int next = first_node[w];
       for (std::size_t o = begin; o < end; ++o) {
+        if (!todo[o]) continue;
         const int c = by_orig_[o];
         for (int f = 0; f < 4; ++f) {
           const int nk = cells_[c].neighbor[f];
