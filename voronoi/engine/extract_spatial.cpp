@@ -171,6 +171,7 @@ class SpatialExtractor {
     uf_.resize(cells_.size());
     vertex_node_.resize(cells_.size());
     out_.nodes.reserve(2 * sites_.size());
+    advise_huge_pages(out_.nodes.data(), out_.nodes.capacity() * sizeof(Node));  // zeroed by one thread
     workers_ = worker_count(cells_.size());
     std::vector<std::size_t> fallbacks(workers_, 0);
     parallel_chunks(cells_.size(), workers_, [&](std::size_t begin, std::size_t end, int w) {
