@@ -46,7 +46,7 @@ class InvalidSites : public std::runtime_error {
 
 // The engine's own check rejected the diagram it was about to return (engine/self_check.h): an
 // internal error, never bad input — the engine refuses what it cannot build (InvalidSites) before
-// any work, so this signals a bug or a case outside what its arithmetic was shown to handle.
+// returning anything else, so this signals a bug or a case outside what its arithmetic was shown to handle.
 class EngineFailure : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
@@ -66,7 +66,10 @@ struct BuildStats {
   double self_check_seconds = 0.0;  // engine/self_check.h (part of extraction_seconds)
 };
 
-// Throws InvalidSites (before any work) or EngineFailure. `stats` (optional) receives counters for benchmarks and reports.
+// Throws InvalidSites or EngineFailure. InvalidSites wins over anything else the build meets: small
+// inputs are validated before any work, large ones (with finite values and positive weights) on a
+// second thread during the triangulation, whose result is dropped if they are invalid.
+// `stats` (optional) receives counters for benchmarks and reports.
 Diagram build_diagram(std::span<const Site> sites, BuildStats* stats = nullptr);
 
 }  // namespace covmap::voronoi

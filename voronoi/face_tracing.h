@@ -168,8 +168,42 @@ LargeVector<int> orient_cycles(const Diagram& d, const TracingGeometry& geometry
 // The faces being made and what placing holes needs to know about them.
 // The cycles' half-arcs are already in Diagram::half_arcs (in the order of cycle_halves); which
 // cycles each face has is written to Diagram::cycles once every hole is placed (store_face_cycles).
+// Per label (a site, kNone outside a clip frame; 0 for every face tracing by geometry), the faces
+// made for it, in the order they were made: lists threaded through the face ids, so a million
+// sites cost no allocation each (a hash map of vectors took ~0.03 s of face tracing at 10^5 sites).
+class FacesOfSite {
+ public:
+  FacesOfSite() = default;
+  // Labels from kNone to sites - 1.
+  explicit FacesOfSite(std::size_t sites) : head_(sites + 1, -1), tail_(sites + 1, -1) {}
+  void add(int site, int face) {
+    if (next_.size() <= static_cast<std::size_t>(face)) next_.resize(face + 1, -1);
+    int& tail = tail_[site + 1];
+    if (tail < 0) {
+      head_[site + 1] = face;
+      sites_.push_back(site);
+    } else {
+      next_[tail] = face;
+    }
+    tail = face;
+  }
+  bool empty(int site) const { return head_[site + 1] < 0; }
+  bool single(int site) const { return !empty(site) && head_[site + 1] == tail_[site + 1]; }
+  int front(int site) const { return head_[site + 1]; }
+  template <class F>
+  void for_each(int site, F&& f) const {
+    for (int face = head_[site + 1]; face >= 0; face = next_[face]) f(face);
+  }
+  // The labels with faces, in the order of their first face.
+  const std::vector<int>& sites() const { return sites_; }
+
+ private:
+  LargeVector<int> head_, tail_, next_;
+  std::vector<int> sites_;
+};
+
 struct FaceAssembly {
-  std::unordered_map<int, LargeVector<int>> faces_of_site;
+  FacesOfSite faces_of_site;
   std::vector<int> holes;  // cycle indices
   LargeVector<int> face_of_cycle, hole_of_cycle;
   LargeVector<double> outer_area;  // per face: |area| of its outer cycle (∞ when unbounded)

@@ -9,26 +9,24 @@ using namespace tracing;
 
 // A diagram of one site (or none with arcs): the whole plane.
 void whole_plane_faces(Diagram& d, FaceAssembly& fa) {
-  std::unordered_map<int, LargeVector<int>>& faces_of_site = fa.faces_of_site;
+  FacesOfSite& faces_of_site = fa.faces_of_site;
   for (std::size_t s = 0; s < d.sites.size(); ++s)
-    if (faces_of_site.find(static_cast<int>(s)) == faces_of_site.end() && d.arcs.empty() &&
-        d.clip.empty()) {
-      faces_of_site[static_cast<int>(s)].push_back(add_face(d, Face{static_cast<int>(s), false, false}));
-    }
+    if (faces_of_site.empty(static_cast<int>(s)) && d.arcs.empty() && d.clip.empty())
+      faces_of_site.add(static_cast<int>(s), add_face(d, Face{static_cast<int>(s), false, false}));
 }
 
 // Orphans: every face of a site but the one containing the site itself. Faces created for holes
 // only (the unbounded component of a site without lines) have no outer cycle.
 void mark_orphans(Diagram& d, const FaceAssembly& fa) {
   const LargeVector<char>& has_outer = fa.has_outer;
-  for (auto& [site, list] : fa.faces_of_site) {
+  for (int site : fa.faces_of_site.sites()) {
     const Point s{d.sites[site].x, d.sites[site].y};
     // Unclipped, a site lies in its own region: a single face is its own.
-    if (list.size() == 1 && d.clip.empty()) {
-      d.faces[list.front()].orphan = false;
+    if (fa.faces_of_site.single(site) && d.clip.empty()) {
+      d.faces[fa.faces_of_site.front(site)].orphan = false;
       continue;
     }
-    for (int f : list) {
+    fa.faces_of_site.for_each(site, [&](int f) {
       Face& face = d.faces[f];
       const bool outer = f < static_cast<int>(has_outer.size()) && has_outer[f];
       const FaceCycles cycles = face_cycles(d, face);
@@ -36,7 +34,7 @@ void mark_orphans(Diagram& d, const FaceAssembly& fa) {
       for (std::size_t b = outer ? 1 : 0; inside && b < cycles.size(); ++b)
         if (cycle_contains(d, cycles[b], s)) inside = false;
       face.orphan = !inside;
-    }
+    });
   }
 }
 

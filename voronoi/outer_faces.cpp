@@ -1,6 +1,7 @@
 // Outer faces for trace_faces(): the cycles' half-arcs into the diagram, one face per outer cycle
 // (counter-clockwise, or through infinity), the clockwise cycles listed as holes; the unbounded
 // face of a site that has only holes; and, once the holes are placed, each face's cycles.
+#include <algorithm>
 #include <cmath>
 
 #include "core/parallel.h"
@@ -28,8 +29,7 @@ FaceAssembly outer_faces(Diagram& d, bool by_sites, const CycleSet& cs) {
   // Faces: one per outer cycle, plus at most one per hole (a site's unbounded face made for its
   // holes), so no reallocation of a million faces when the first of those appears.
   d.faces.reserve(cycles.size() + 1);
-  // One entry per site with a face: reserved, so that a million sites do not rehash ~20 times.
-  fa.faces_of_site.reserve(d.sites.size());
+  fa.faces_of_site = FacesOfSite(std::max<std::size_t>(d.sites.size(), 1));
   advise_huge_pages(d.faces.data(), d.faces.capacity() * sizeof(Face));
   for (std::size_t c = 0; c < cycles.size(); ++c) {
     const Cycle& cyc = cycles[c];
@@ -37,7 +37,7 @@ FaceAssembly outer_faces(Diagram& d, bool by_sites, const CycleSet& cs) {
       fa.outer_area.push_back(cyc.through_infinity ? INFINITY : cyc.area2);
       fa.outer_cycle.push_back({cyc.begin, cyc.end});
       fa.face_of_cycle[c] = static_cast<int>(d.faces.size());
-      fa.faces_of_site[cyc.site].push_back(static_cast<int>(d.faces.size()));
+      fa.faces_of_site.add(cyc.site, static_cast<int>(d.faces.size()));
       d.faces.push_back(Face{by_sites ? cyc.site : kNone, !cyc.through_infinity, false});
     } else {
       fa.hole_of_cycle[c] = static_cast<int>(fa.holes.size());
@@ -54,7 +54,7 @@ int implicit_face_of(Diagram& d, bool by_sites, FaceAssembly& fa, int site) {
     Face f;
     f.site = by_sites ? site : kNone;
     f.bounded = false;
-    fa.faces_of_site[site].push_back(static_cast<int>(d.faces.size()));
+    fa.faces_of_site.add(site, static_cast<int>(d.faces.size()));
     d.faces.push_back(f);
     it = fa.implicit_face.emplace(site, static_cast<int>(d.faces.size()) - 1).first;
   }

@@ -187,6 +187,36 @@ TEST(EngineInput, InvalidSitesAreAllNamed) {
   }
 }
 
+// Large inputs are validated beside the triangulation (build_diagram.cpp, BesideTriangulation):
+// they must be refused exactly as find_invalid_sites refuses them, whatever the triangulation of
+// the invalid sites does meanwhile (duplicates, sites closer than the supported separation, a
+// weight beyond the supported ratio, a coordinate that cannot even be scaled exactly).
+TEST(EngineInput, LargeInvalidInputsAreRefusedAsTheValidationFindsThem) {
+  const auto base = testing::make_sites(testing::Family::UniformWeights, 30000, 7);
+  std::vector<std::vector<Site>> cases(5, base);
+  cases[0][100].x = cases[0][5].x, cases[0][100].y = cases[0][5].y;  // duplicate position
+  cases[1][9].x = 0, cases[1][9].y = 0, cases[1][200].x = 1e-300, cases[1][200].y = 0;  // too close
+  cases[2][300].weight = 1e-20;     // weight ratio beyond 2^40
+  cases[3][400].x = 5e-324;         // cannot be scaled with the others
+  cases[4][500].x = 1e20;           // too far from the others
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    std::vector<InvalidSite> expected = find_invalid_sites(cases[k]);
+    // A denormal coordinate is in range; it is refused by the scaling, which names it.
+    if (k == 3) expected = {{400, cases[k][400].id, ""}};
+    ASSERT_FALSE(expected.empty()) << "case " << k;
+    try {
+      build_diagram(cases[k]);
+      FAIL() << "case " << k << ": expected InvalidSites";
+    } catch (const InvalidSites& e) {
+      ASSERT_EQ(e.problems().size(), expected.size()) << "case " << k;
+      for (std::size_t i = 0; i < expected.size(); ++i) {
+        EXPECT_EQ(e.problems()[i].index, expected[i].index) << "case " << k;
+        if (k != 3) EXPECT_EQ(e.problems()[i].problem, expected[i].problem) << "case " << k;
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace covmap::voronoi
 

@@ -10,6 +10,7 @@
 
 #include <map>
 #include <random>
+#include <thread>
 #include <vector>
 
 #include "site_families.h"
@@ -73,6 +74,32 @@ INSTANTIATE_TEST_SUITE_P(Families, SpatialTriangulationTest,
 TEST(SpatialTriangulationTest, CellsAreSmallerThanCgalsDefault) {
   EXPECT_LT(sizeof(SpatialTriangulation::Triangulation_data_structure::Cell),
             sizeof(RegularTriangulation::Triangulation_data_structure::Cell));
+}
+
+// The cells and vertices live in engine/cell_arena.h's huge-page chunks: triangulations built and
+// cleared on several threads at once, some in prefaulted chunks, keep their cells (the same as
+// CGAL's default allocator gives), and every chunk is returned once the last of them is gone.
+TEST(SpatialTriangulationTest, ArenaChunksAreSharedByThreadsAndReturned) {
+  ASSERT_EQ(arena_mapped_bytes(), 0u);
+  arena_prefault(std::size_t{5} << 20);  // taken by whichever triangulation needs a chunk first
+  EXPECT_GE(arena_mapped_bytes(), std::size_t{5} << 20);
+  std::vector<std::vector<std::array<int, 8>>> got(3), expected(3);
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 3; ++t)
+    threads.emplace_back([&, t] {
+      const auto points = weighted_points(testing::make_sites(Family::UniformWeights, 3000, 10 + t));
+      SpatialTriangulation spatial(points.begin(), points.end());
+      got[t] = cells_in_order(spatial);
+      spatial.clear();
+      SpatialTriangulation again(points.begin(), points.end());  // reuses or maps chunks again
+      EXPECT_EQ(cells_in_order(again), got[t]);
+      RegularTriangulation regular(points.begin(), points.end());
+      expected[t] = cells_in_order(regular);
+    });
+  for (std::thread& t : threads) t.join();
+  for (int t = 0; t < 3; ++t) EXPECT_EQ(got[t], expected[t]) << "thread " << t;
+  arena_release_prefaulted();
+  EXPECT_EQ(arena_mapped_bytes(), 0u);
 }
 
 // The exact affine rank of the lifted points c = (x, y, -1/2)/w² is 3.

@@ -171,6 +171,7 @@ class SpatialExtractor {
     uf_.resize(cells_.size());
     vertex_node_.resize(cells_.size());
     out_.nodes.reserve(2 * sites_.size());
+    advise_huge_pages(out_.nodes.data(), out_.nodes.capacity() * sizeof(Node));  // zeroed by one thread
     workers_ = worker_count(cells_.size());
     std::vector<std::size_t> fallbacks(workers_, 0);
     parallel_chunks(cells_.size(), workers_, [&](std::size_t begin, std::size_t end, int w) {
@@ -217,6 +218,13 @@ class SpatialExtractor {
 
   void compute_facets() {
     facet_.resize(4 * cells_.size());  // no page touched: pass 1 writes every entry
+    // Per CGAL id, what pass 2 has to do for the cell: the nodes it numbers (bits 0-6) and whether
+    // any of its facet entries gets a first node at all (kWritesFacets: also those at infinity,
+    // which number none). Written in pass 1 by the worker computing the cell's patterns, so that
+    // pass 2 counts from one byte per cell and skips the cells with nothing to do, instead of
+    // reading four facet entries and their neighbours' ids through a cell in another order.
+    constexpr std::uint8_t kWritesFacets = 0x80;
+    LargeVector<std::uint8_t> todo(cells_.size());
     // Pass 1, in parallel: the crossing pattern of every facet, from its lower-id cell (each facet
     // entry pair is written by exactly one worker). Unions of cells sharing a vertex are rare and
     // applied afterwards.
@@ -228,6 +236,7 @@ class SpatialExtractor {
     parallel_chunks(cells_.size(), workers_, [&](std::size_t begin, std::size_t end, int w) {
       for (std::size_t k = begin; k < end; ++k) {
         const int c = static_cast<int>(k);
+        std::uint8_t cell_todo = 0;
         for (int f = 0; f < 4; ++f) {
           const int nk = cells_[k].neighbor[f];
           if (orig_[nk] < orig_[c]) continue;
@@ -248,7 +257,13 @@ class SpatialExtractor {
           std::reverse(bwd.sign, bwd.sign + p->roots + 1);
           if (p->empty && zero(c) && zero(nk))
             unions[w].push_back({orig_[c], f, orig_[nk]});
+          if (!p->empty && p->roots > 0) {
+            cell_todo |= kWritesFacets;
+            // On an edge at infinity (between two directions) the only possible zero is U: no node.
+            if (!(infinite(c) && infinite(nk))) cell_todo += static_cast<std::uint8_t>(p->roots);
+          }
         }
+        todo[orig_[c]] = cell_todo;
       }
     });
     for (std::size_t f : fallbacks) stats_.exact_fallbacks += f;
@@ -273,18 +288,10 @@ class SpatialExtractor {
     // range, so that it knows where its numbers start, then numbers and places them (each facet
     // is handled by the worker holding its lower-id cell). The numbers are those of one
     // sequential pass.
-    const auto numbered = [&](int c, int f) {  // how many nodes facet entry (c, f) numbers
-      const int nk = cells_[c].neighbor[f];
-      const EdgePattern& p = facet_[4 * c + f];
-      if (orig_[nk] < orig_[c] || p.empty) return 0;
-      // On an edge at infinity (between two directions) the only possible zero is U: no node.
-      return infinite(c) && infinite(nk) ? 0 : static_cast<int>(p.roots);
-    };
     std::vector<int> first_node(workers_ + 1, 0);
     parallel_chunks(cells_.size(), workers_, [&](std::size_t begin, std::size_t end, int w) {
       int count = 0;
-      for (std::size_t o = begin; o < end; ++o)
-        for (int f = 0; f < 4; ++f) count += numbered(by_orig_[o], f);
+      for (std::size_t o = begin; o < end; ++o) count += todo[o] & ~kWritesFacets;
       first_node[w + 1] = count;
     });
     first_node[0] = static_cast<int>(out_.nodes.size());
@@ -296,6 +303,7 @@ class SpatialExtractor {
     parallel_chunks(cells_.size(), workers_, [&](std::size_t begin, std::size_t end, int w) {
       int next = first_node[w];
       for (std::size_t o = begin; o < end; ++o) {
+        if (!todo[o]) continue;
         const int c = by_orig_[o];
         for (int f = 0; f < 4; ++f) {
           const int nk = cells_[c].neighbor[f];
@@ -364,14 +372,20 @@ class SpatialExtractor {
     }
     const double cell =
         tolerance::kNodeMergeCandidate * std::max(std::hypot(xmax - xmin, ymax - ymin), 1e-300);
-    // Sweep over nodes sorted by x: candidates are within `cell` in both coordinates.
-    std::vector<int> order;
+    // Sweep over nodes sorted by x: candidates are within `cell` in both coordinates. Each entry
+    // carries its x, so neither the sort nor the sweep's test looks the node up. std::sort makes
+    // the same moves for the same comparisons whatever the element, so ties in x (grids) come out
+    // in the order an index array sorted by x got: the same unions, the same representatives.
+    struct ByX {
+      double x;
+      int node;
+    };
+    LargeVector<ByX> order;
     order.reserve(n);
     for (std::size_t i = 0; i < n; ++i)
       if (std::isfinite(out_.nodes[i].x) && std::isfinite(out_.nodes[i].y))
-        order.push_back(static_cast<int>(i));
-    std::sort(order.begin(), order.end(),
-              [&](int a, int b) { return out_.nodes[a].x < out_.nodes[b].x; });
+        order.push_back({out_.nodes[i].x, static_cast<int>(i)});
+    std::sort(order.begin(), order.end(), [](const ByX& a, const ByX& b) { return a.x < b.x; });
     std::vector<int> parent(n);
     std::iota(parent.begin(), parent.end(), 0);
     auto find = [&](int x) {
@@ -380,12 +394,12 @@ class SpatialExtractor {
     };
     bool merged = false;
     for (std::size_t a = 0; a < order.size(); ++a) {
-      const int i = order[a];
+      const int i = order[a].node;
       const Node& p = out_.nodes[i];
       for (std::size_t b = a + 1; b < order.size(); ++b) {
-        const int j = order[b];
+        if (order[b].x - p.x > cell) break;
+        const int j = order[b].node;
         const Node& q = out_.nodes[j];
-        if (q.x - p.x > cell) break;
         if (std::fabs(q.y - p.y) > cell) continue;
         if (node_facet_[j] == node_facet_[i]) continue;  // two crossings of one line
         if (find(j) != find(i) && same_crossing(i, j)) {
@@ -540,7 +554,8 @@ class SpatialExtractor {
       edges.insert(edges.end(), st.edges.begin(), st.edges.end());
       LargeVector<EdgeArcs>().swap(st.edges);
     }
-    std::sort(edges.begin(), edges.end(), [](const EdgeArcs& a, const EdgeArcs& b) { return a.key < b.key; });
+    // Keys are distinct (one per edge), so the two-thread sort gives std::sort's order.
+    parallel_sort(edges.begin(), edges.end(), [](const EdgeArcs& a, const EdgeArcs& b) { return a.key < b.key; });
     LargeVector<std::uint32_t> dest(total - start);
     std::uint32_t next = 0;
     for (const EdgeArcs& e : edges)

@@ -2,20 +2,19 @@
 
 #include <algorithm>
 #include <numeric>
+
+#include "core/parallel.h"
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif
 
 namespace covmap::voronoi::engine {
-namespace {
 
 void trim_heap() {
 #if defined(__GLIBC__)
   malloc_trim(0);
 #endif
 }
-
-}  // namespace
 
 LargeVector<int> morton_ranks(const std::vector<Site>& sites) {
   constexpr int kBits = 16;
@@ -40,58 +39,83 @@ LargeVector<int> morton_ranks(const std::vector<Site>& sites) {
   return rank;
 }
 
+FlatVertices flat_vertices(const std::vector<Site>& sites) {
+  FlatVertices v;
+  v.rank = morton_ranks(sites);
+  v.points.resize(sites.size());
+  v.vertex_site.resize(sites.size());
+  for (std::size_t i = 0; i < sites.size(); ++i) {
+    v.points[v.rank[i]] = RawPoint(sites[i].x, sites[i].y, sites[i].weight);
+    v.vertex_site[v.rank[i]] = static_cast<int>(i);
+  }
+  return v;
+}
+
 template <class Triangulation>
-FlatTriangulation flatten_triangulation(const std::vector<Site>& sites, Triangulation& rt) {
+FlatTriangulation flatten_triangulation(const std::vector<Site>& sites, FlatVertices vertices, Triangulation& rt) {
   FlatTriangulation flat;
   const std::size_t n = rt.tds().number_of_cells();
+  // Sized without touching a page: every entry is written below, on all cores.
   flat.cells.resize(n);
   flat.orig.resize(n);
   flat.by_orig.resize(n);
-  flat.flags.assign(n, 0);
-  const LargeVector<int> rank = morton_ranks(sites);
-  flat.points.resize(sites.size());
-  flat.vertex_site.resize(sites.size());
-  for (std::size_t i = 0; i < sites.size(); ++i) {
-    flat.points[rank[i]] = RawPoint(sites[i].x, sites[i].y, sites[i].weight);
-    flat.vertex_site[rank[i]] = static_cast<int>(i);
-  }
-  // Cells by the rank of their first-ranked site: a counting sort, CGAL's order within a rank.
-  LargeVector<int> first(sites.size() + 1, 0);
+  flat.flags.resize(n);
+  const LargeVector<int> rank = std::move(vertices.rank);
+  flat.points = std::move(vertices.points);
+  flat.vertex_site = std::move(vertices.vertex_site);
+  // The one sequential pass over CGAL's container: each cell's id (its place in the container's
+  // order) and handle. The passes after it read the cells through the handles, on all cores, each
+  // cell's entries written by one worker.
+  using CellHandle = typename Triangulation::Cell_handle;
+  LargeVector<CellHandle> handles(n);
   int id = 0;
-  for (auto c = rt.all_cells_begin(); c != rt.all_cells_end(); ++c) {
-    int lowest = static_cast<int>(sites.size());
-    for (int k = 0; k < 4; ++k)
-      if (!rt.is_infinite(c->vertex(k))) lowest = std::min(lowest, rank[site_of(c->vertex(k))]);
+  for (auto c = rt.all_cells_begin(); c != rt.all_cells_end(); ++c, ++id) {
     c->info() = id;
-    flat.by_orig[id++] = lowest;
-    ++first[lowest + 1];
+    handles[id] = c;
   }
+  const int workers = worker_count(n);
+  const auto infinite = rt.infinite_vertex();
+  // Cells by the rank of their first-ranked site: a counting sort, CGAL's order within a rank.
+  parallel_chunks(n, workers, [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t o = begin; o < end; ++o) {
+      int lowest = static_cast<int>(sites.size());
+      for (int k = 0; k < 4; ++k)
+        if (handles[o]->vertex(k) != infinite) lowest = std::min(lowest, rank[site_of(handles[o]->vertex(k))]);
+      flat.by_orig[o] = lowest;
+    }
+  });
+  LargeVector<int> first(sites.size() + 1, 0);
+  for (std::size_t o = 0; o < n; ++o) ++first[flat.by_orig[o] + 1];
   std::partial_sum(first.begin(), first.end(), first.begin());
   for (std::size_t o = 0; o < n; ++o) {
     const int cell = first[flat.by_orig[o]]++;
     flat.by_orig[o] = cell;
     flat.orig[cell] = static_cast<int>(o);
   }
-  id = 0;
-  for (auto c = rt.all_cells_begin(); c != rt.all_cells_end(); ++c, ++id) {
-    const int cell = flat.by_orig[id];
-    FlatCell& f = flat.cells[cell];
-    for (int k = 0; k < 4; ++k) {
-      const typename Triangulation::Vertex_handle v = c->vertex(k);
-      f.vertex[k] = rt.is_infinite(v) ? kInfiniteVertex : rank[site_of(v)];
-      f.neighbor[k] = flat.by_orig[c->neighbor(k)->info()];
+  parallel_chunks(n, workers, [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t o = begin; o < end; ++o) {
+      const CellHandle c = handles[o];
+      const int cell = flat.by_orig[o];
+      FlatCell& f = flat.cells[cell];
+      bool at_infinity = false;
+      for (int k = 0; k < 4; ++k) {
+        const typename Triangulation::Vertex_handle v = c->vertex(k);
+        at_infinity |= v == infinite;
+        f.vertex[k] = v == infinite ? kInfiniteVertex : rank[site_of(v)];
+        f.neighbor[k] = flat.by_orig[c->neighbor(k)->info()];
+      }
+      flat.flags[cell] = at_infinity ? kInfiniteCell : 0;
     }
-    if (rt.is_infinite(c)) flat.flags[cell] = kInfiniteCell;
-  }
+  });
+  LargeVector<CellHandle>().swap(handles);
   rt.clear();
-  // CGAL's cells live in blocks of at most a few MB, which glibc may have placed in its heaps
-  // rather than in mappings of their own (it stops mapping blocks below the largest one freed so
-  // far); freed there, they would stay resident, ~0.45 GB at 10^6 sites, behind the arrays
-  // allocated since. Return them to the system.
+  // The triangulation's blocks are unmapped as it is cleared (engine/cell_arena.h); what it
+  // allocated besides (CGAL's copy of the points, the spatial sort's buffers) may stay in glibc's
+  // heaps, resident behind the arrays allocated since: returned to the system.
   trim_heap();
   return flat;
 }
 
-template FlatTriangulation flatten_triangulation(const std::vector<Site>&, SpatialTriangulation&);
+template FlatTriangulation flatten_triangulation(const std::vector<Site>&, FlatVertices, SpatialTriangulation&);
 
 }  // namespace covmap::voronoi::engine

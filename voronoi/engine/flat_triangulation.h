@@ -43,13 +43,26 @@ struct FlatTriangulation {
   LargeVector<std::uint8_t> flags;   // per cell: kInfiniteCell set, nothing else yet
 };
 
+// Returns the memory freed into malloc's heaps to the system (glibc's malloc_trim; elsewhere
+// nothing).
+void trim_heap();
+
 // Per site, its rank along a Morton curve of the sites' positions, which lie in (-1, 1)
 // (build_diagram scales them so). Only memory layout depends on it.
 LargeVector<int> morton_ranks(const std::vector<Site>& sites);
 
-// The flat copy of `rt` (a 3-dimensional triangulation of `sites`); `rt` is cleared afterwards.
-// Defined for SpatialTriangulation.
+// The vertex side of the flat copy, which needs only the sites: their Morton ranks, and per vertex
+// id its point and site. build_diagram computes it beside the triangulation.
+struct FlatVertices {
+  LargeVector<int> rank;         // per site, its vertex id
+  LargeVector<RawPoint> points;  // per vertex id, its site's (x, y, w)
+  LargeVector<int> vertex_site;  // per vertex id, its site
+};
+FlatVertices flat_vertices(const std::vector<Site>& sites);
+
+// The flat copy of `rt` (a 3-dimensional triangulation of `sites`, whose flat_vertices are
+// `vertices`); `rt` is cleared afterwards. Defined for SpatialTriangulation.
 template <class Triangulation>
-FlatTriangulation flatten_triangulation(const std::vector<Site>& sites, Triangulation& rt);
+FlatTriangulation flatten_triangulation(const std::vector<Site>& sites, FlatVertices vertices, Triangulation& rt);
 
 }  // namespace covmap::voronoi::engine

@@ -23,6 +23,10 @@
 #include <CGAL/Regular_triangulation_vertex_base_3.h>
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 
+#include <memory>
+#include <type_traits>
+
+#include "voronoi/engine/cell_arena.h"
 #include "voronoi/engine/lifted_traits.h"
 
 namespace covmap::voronoi::engine {
@@ -47,8 +51,41 @@ using RegularTriangulation = CGAL::Regular_triangulation_3<LiftedTraits, Tds>;
 using LeanCellBase = CGAL::Regular_triangulation_cell_base_3<
     LiftedTraits, CGAL::Triangulation_cell_base_with_info_3<int, LiftedTraits>, CGAL::Discard_hidden_points,
     NoHiddenPoints>;
-using SpatialTriangulation =
-    CGAL::Regular_triangulation_3<LiftedTraits, CGAL::Triangulation_data_structure_3<VertexBase, LeanCellBase>>;
+using SpatialTds = CGAL::Triangulation_data_structure_3<VertexBase, LeanCellBase>;
+// SpatialTds's cell and vertex types, named without instantiating it (its containers would
+// instantiate std::allocator of them before the specializations below).
+using SpatialCell = LeanCellBase::Rebind_TDS<SpatialTds>::Other;
+using SpatialVertex = VertexBase::Rebind_TDS<SpatialTds>::Other;
+
+}  // namespace covmap::voronoi::engine
+
+// SpatialTriangulation's cells and vertices live in CGAL's Compact_container, whose blocks come
+// from CGAL_ALLOCATOR(T), i.e. std::allocator<T>, with no other way in: for these two types it is
+// the huge-page arena of engine/cell_arena.h. (A program may specialize std::allocator for its own
+// types; these depend on LiftedTraits. Nothing else allocates them.)
+namespace std {
+template <>
+struct allocator<covmap::voronoi::engine::SpatialCell>
+    : covmap::voronoi::engine::ArenaAllocator<covmap::voronoi::engine::SpatialCell> {
+  allocator() noexcept = default;
+  template <class U>
+  allocator(const allocator<U>&) noexcept {}
+  friend bool operator==(const allocator&, const allocator&) noexcept { return true; }
+};
+template <>
+struct allocator<covmap::voronoi::engine::SpatialVertex>
+    : covmap::voronoi::engine::ArenaAllocator<covmap::voronoi::engine::SpatialVertex> {
+  allocator() noexcept = default;
+  template <class U>
+  allocator(const allocator<U>&) noexcept {}
+  friend bool operator==(const allocator&, const allocator&) noexcept { return true; }
+};
+}  // namespace std
+
+namespace covmap::voronoi::engine {
+
+static_assert(std::is_same_v<SpatialTds::Cell, SpatialCell> && std::is_same_v<SpatialTds::Vertex, SpatialVertex>);
+using SpatialTriangulation = CGAL::Regular_triangulation_3<LiftedTraits, SpatialTds>;
 
 template <class VertexHandle>
 int site_of(VertexHandle v) {
