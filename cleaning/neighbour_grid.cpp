@@ -59,13 +59,12 @@ void UniformGrid::finish() {
 
 void UniformGrid::build_dense_tables() {
   if (index_kind_ == Index::kHashOnly) return;
-  constexpr std::uint64_t kMask = (std::uint64_t{1} << 28) - 1;
   // Each level's entries are one run of the sorted entries (the level is the key's top byte).
   for (std::size_t begin = 0, end = 0; begin < entries_.size(); begin = end) {
-    const std::uint64_t level = entries_[begin].first >> 56;
-    std::uint64_t x_lo = kMask, x_hi = 0, y_lo = kMask, y_hi = 0;
-    for (end = begin; end < entries_.size() && (entries_[end].first >> 56) == level; ++end) {
-      const std::uint64_t x = entries_[end].first & kMask, y = (entries_[end].first >> 28) & kMask;
+    const std::uint64_t level = key_level(entries_[begin].first);
+    std::uint64_t x_lo = kAxisMask, x_hi = 0, y_lo = kAxisMask, y_hi = 0;
+    for (end = begin; end < entries_.size() && key_level(entries_[end].first) == level; ++end) {
+      const std::uint64_t x = key_x(entries_[end].first), y = key_y(entries_[end].first);
       x_lo = std::min(x_lo, x), x_hi = std::max(x_hi, x), y_lo = std::min(y_lo, y), y_hi = std::max(y_hi, y);
     }
     const std::uint64_t nx = x_hi - x_lo + 1, ny = y_hi - y_lo + 1;  // each at most 2^28: no overflow
@@ -77,7 +76,7 @@ void UniformGrid::build_dense_tables() {
     std::size_t e = begin;
     for (std::uint64_t c = 0; c <= nx * ny; ++c) {
       while (e < end) {
-        const std::uint64_t x = entries_[e].first & kMask, y = (entries_[e].first >> 28) & kMask;
+        const std::uint64_t x = key_x(entries_[e].first), y = key_y(entries_[e].first);
         if ((y - y_lo) * nx + (x - x_lo) >= c) break;
         ++e;
       }

@@ -115,13 +115,18 @@ class UniformGrid {
   }
   // Modulo 2^28, offset by 2^27 so that the indices around 0 (maps centred on their origin) stay
   // in order: a dense table needs its box unbroken by the wrap.
+  static constexpr int kAxisBits = 28;
+  static constexpr std::uint64_t kAxisMask = (std::uint64_t{1} << kAxisBits) - 1;
   static std::uint64_t wrapped(std::int64_t i) {
-    constexpr std::uint64_t kMask = (std::uint64_t{1} << 28) - 1;
-    return (static_cast<std::uint64_t>(i) + (std::uint64_t{1} << 27)) & kMask;
+    return (static_cast<std::uint64_t>(i) + (std::uint64_t{1} << (kAxisBits - 1))) & kAxisMask;
   }
+  // A key's wrapped column and row, and its level.
+  static std::uint64_t key_x(std::uint64_t k) { return k & kAxisMask; }
+  static std::uint64_t key_y(std::uint64_t k) { return (k >> kAxisBits) & kAxisMask; }
+  static std::uint64_t key_level(std::uint64_t k) { return k >> 56; }
   // Row-major: sorted keys list a level's cells row by row, x increasing within a row.
   static std::uint64_t key(int level, std::int64_t ix, std::int64_t iy) {
-    return (static_cast<std::uint64_t>(level) << 56) | (wrapped(iy) << 28) | wrapped(ix);
+    return (static_cast<std::uint64_t>(level) << 56) | (wrapped(iy) << kAxisBits) | wrapped(ix);
   }
 
   double cell_;
