@@ -1,15 +1,21 @@
-// write_diagram_json (io/diagram_json.h): the arc graph streamed token by token through JsonOut,
-// with no JSON document in memory (issue 16). The layout is the one documented in FORMATS.md: one
-// element per line, so a diff shows which arc changed.
+// write_diagram_json (io/diagram_json.h): the arc graph written token by token through JsonOut,
+// with no JSON document in memory (issue 16), in pieces of a few hundred elements rendered on the
+// machine's cores and written in order (io/ordered_pieces.h). The layout is the one documented in
+// FORMATS.md: one element per line, so a diff shows which arc changed.
+#include <algorithm>
 #include <cmath>
 #include <ostream>
 #include <stdexcept>
+#include <vector>
+
+#include "core/large_buffer.h"
 
 #include "io/diagram_json.h"
 #include "io/diagram_json_write.h"
 #include "io/json_fields.h"
 #include "io/json_number.h"
 #include "io/json_out.h"
+#include "io/ordered_pieces.h"
 #include "io/site_parsers.h"
 #include "io/text_util.h"
 
@@ -135,21 +141,6 @@ void write_clip_point(JsonOut& out, const Point& p) {
   out.raw("]");
 }
 
-// `"name":[` + one element per line + `]`.
-template <class Element, class WriteElement>
-void write_array(JsonOut& out, std::string_view name, const std::vector<Element>& items, WriteElement&& write,
-                 bool last) {
-  out.raw("\"");
-  out.raw(name);
-  out.raw("\":[");
-  for (std::size_t i = 0; i < items.size(); ++i) {
-    out.raw(i == 0 ? "\n  " : ",\n  ");
-    write(items[i]);
-  }
-  out.raw(items.empty() ? "]" : "\n]");
-  out.raw(last ? "\n" : ",\n");
-}
-
 // Longest spellings: an int index ("-2147483648") and the member names and punctuation of one
 // element of each array, rounded up (the exact layout is in the write_* functions above).
 constexpr std::size_t kIndexChars = 11;
@@ -159,14 +150,101 @@ constexpr std::size_t kDocumentText = 256;  // the format line and the five arra
 
 std::size_t string_bound(const std::string& text) { return 2 + 6 * text.size(); }
 
-void write_document(JsonOut& out, const Diagram& d) {
-  out.raw("{\"format\":\"covmap.arcgraph/1\",\n");
-  write_array(out, "sites", d.sites, [&](const Site& s) { detail::write_site_json(out, s); }, false);
-  write_array(out, "nodes", d.nodes, [&](const Node& n) { write_node(out, n); }, false);
-  write_array(out, "arcs", d.arcs, [&](const Arc& a) { write_arc(out, a); }, false);
-  write_array(out, "faces", d.faces, [&](const Face& f) { write_face(out, d, f); }, false);
-  write_array(out, "clip", d.clip, [&](const Point& p) { write_clip_point(out, p); }, true);
-  out.raw("}\n");
+// The document's five arrays, in file order; each is `"name":[` + one element per line + `]`.
+enum class Section { kSites, kNodes, kArcs, kFaces, kClip };
+constexpr Section kSections[] = {Section::kSites, Section::kNodes, Section::kArcs, Section::kFaces, Section::kClip};
+
+const char* section_name(Section s) {
+  switch (s) {
+    case Section::kSites: return "sites";
+    case Section::kNodes: return "nodes";
+    case Section::kArcs: return "arcs";
+    case Section::kFaces: return "faces";
+    case Section::kClip: return "clip";
+  }
+  return "";
+}
+
+std::size_t section_size(const Diagram& d, Section s) {
+  switch (s) {
+    case Section::kSites: return d.sites.size();
+    case Section::kNodes: return d.nodes.size();
+    case Section::kArcs: return d.arcs.size();
+    case Section::kFaces: return d.faces.size();
+    case Section::kClip: return d.clip.size();
+  }
+  return 0;
+}
+
+// At least the length of the section's elements as written.
+std::size_t section_bound(const Diagram& d, Section s) {
+  switch (s) {
+    case Section::kSites: {
+      std::size_t bytes = 0;
+      for (const Site& site : d.sites) bytes += kElementText + 3 * kNumberChars + string_bound(site.id) + string_bound(site.name);
+      return bytes;
+    }
+    case Section::kNodes: return d.nodes.size() * (kElementText + 2 * kNumberChars);
+    case Section::kArcs: return d.arcs.size() * (kElementText + 4 * kNumberChars + 4 * kIndexChars);
+    // A face: its own text, then per cycle "[", "]" and a comma, per step "[arc,false]" and a comma.
+    case Section::kFaces:
+      return d.faces.size() * (kElementText + kIndexChars) + d.cycles.size() * 3 + d.half_arcs.size() * (kIndexChars + 9);
+    case Section::kClip: return d.clip.size() * (kElementText + 2 * kNumberChars);
+  }
+  return 0;
+}
+
+void write_element(JsonOut& out, const Diagram& d, Section s, std::size_t i) {
+  switch (s) {
+    case Section::kSites: detail::write_site_json(out, d.sites[i]); return;
+    case Section::kNodes: write_node(out, d.nodes[i]); return;
+    case Section::kArcs: write_arc(out, d.arcs[i]); return;
+    case Section::kFaces: write_face(out, d, d.faces[i]); return;
+    case Section::kClip: write_clip_point(out, d.clip[i]); return;
+  }
+}
+
+// One piece of the text: elements [begin, end) of a section, with the section's opening when it
+// starts it (and the document's when it is the first) and its closing when it ends it. The pieces of
+// all sections, in order, are the document.
+struct Piece {
+  Section section = Section::kSites;
+  std::size_t begin = 0, end = 0;
+};
+
+std::vector<Piece> plan_pieces(const Diagram& d, std::size_t piece_bytes) {
+  std::vector<Piece> pieces;
+  for (const Section s : kSections) {
+    const std::size_t n = section_size(d, s);
+    // Elements per piece from the section's average bound; an empty section is one piece too.
+    const std::size_t bound = section_bound(d, s);
+    const std::size_t per_piece = bound <= piece_bytes ? std::max<std::size_t>(n, 1) : std::max<std::size_t>(1, n * piece_bytes / bound);
+    std::size_t begin = 0;
+    do {
+      const std::size_t end = std::min(n, begin + per_piece);
+      pieces.push_back({s, begin, end});
+      begin = end;
+    } while (begin < n);
+  }
+  return pieces;
+}
+
+void write_piece(JsonOut& out, const Diagram& d, const Piece& piece) {
+  const std::size_t n = section_size(d, piece.section);
+  if (piece.begin == 0) {
+    if (piece.section == Section::kSites) out.raw("{\"format\":\"covmap.arcgraph/1\",\n");
+    out.raw("\"");
+    out.raw(section_name(piece.section));
+    out.raw("\":[");
+  }
+  for (std::size_t i = piece.begin; i < piece.end; ++i) {
+    out.raw(i == 0 ? "\n  " : ",\n  ");
+    write_element(out, d, piece.section, i);
+  }
+  if (piece.end == n) {
+    out.raw(n == 0 ? "]" : "\n]");
+    out.raw(piece.section == Section::kClip ? "\n}\n" : ",\n");
+  }
   out.flush();
 }
 
@@ -176,13 +254,23 @@ namespace detail {
 
 std::size_t diagram_json_size_bound(const Diagram& d) {
   std::size_t bytes = kDocumentText;
-  for (const Site& s : d.sites) bytes += kElementText + 3 * kNumberChars + string_bound(s.id) + string_bound(s.name);
-  bytes += d.nodes.size() * (kElementText + 2 * kNumberChars);
-  bytes += d.arcs.size() * (kElementText + 4 * kNumberChars + 4 * kIndexChars);
-  // A face: its own text, then per cycle "[", "]" and a comma, per step "[arc,false]" and a comma.
-  bytes += d.faces.size() * (kElementText + kIndexChars) + d.cycles.size() * 3 + d.half_arcs.size() * (kIndexChars + 9);
-  bytes += d.clip.size() * (kElementText + 2 * kNumberChars);
+  for (const Section s : kSections) bytes += section_bound(d, s);
   return bytes;
+}
+
+void render_diagram_json(const Diagram& d, const DiagramTextPieces& options,
+                         const std::function<void(std::string_view)>& emit) {
+  const std::vector<Piece> pieces = plan_pieces(d, std::max<std::size_t>(options.piece_bytes, 1));
+  OrderedPieces threads;
+  threads.threads = options.threads > 0 ? options.threads : rendering_threads(diagram_json_size_bound(d));
+  threads.window = 4 * static_cast<std::size_t>(threads.threads);
+  render_pieces_in_order(
+      pieces.size(), threads,
+      [&](std::size_t j, std::string& text) {
+        JsonOut out(text);
+        write_piece(out, d, pieces[j]);
+      },
+      emit);
 }
 
 }  // namespace detail
@@ -191,16 +279,19 @@ void write_diagram_json(const Diagram& d, std::ostream& stream) {
   // A non-finite number or a non-UTF-8 string anywhere throws before the first byte is written (the
   // caller's stream then holds nothing half-made).
   check_writable(d);
-  JsonOut out(stream);
-  write_document(out, d);
+  detail::render_diagram_json(d, {}, [&stream](std::string_view piece) {
+    stream.write(piece.data(), static_cast<std::streamsize>(piece.size()));
+  });
 }
 
 std::string diagram_json_text(const Diagram& d) {
   check_writable(d);
   std::string text;
   text.reserve(detail::diagram_json_size_bound(d));
-  JsonOut out(text);
-  write_document(out, d);
+  // In huge pages where the system has them: a fresh 4 KiB page costs a fault (core/large_buffer.h),
+  // and faulting in the 78 MB of a 10^5-site graph page by page took longer than formatting it.
+  advise_huge_pages(text.data(), text.capacity());
+  detail::render_diagram_json(d, {}, [&text](std::string_view piece) { text.append(piece); });
   return text;
 }
 

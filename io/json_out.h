@@ -47,7 +47,9 @@ class JsonOut {
 
   std::ostream* stream_ = nullptr;  // exactly one of the two targets
   std::string* text_ = nullptr;
-  std::unique_ptr<char[]> buffer_ = std::make_unique<char[]>(kBufferBytes);  // 64 KiB: not on the stack
+  // 64 KiB: not on the stack; not zeroed either (every byte is written before it is read, and the
+  // arc graph's writer makes one JsonOut per piece).
+  std::unique_ptr<char[]> buffer_ = std::make_unique_for_overwrite<char[]>(kBufferBytes);
   std::size_t used_ = 0;
 };
 

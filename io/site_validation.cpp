@@ -6,6 +6,7 @@
 #include <string_view>
 #include <unordered_map>
 
+#include "core/large_buffer.h"
 #include "io/text_util.h"
 
 namespace covmap::io::detail {
@@ -55,6 +56,7 @@ void check_unique_positions(std::vector<SiteDraft>& drafts) {
   // slowest part of reading a million sites).
   std::vector<Position> order;
   order.reserve(drafts.size());
+  advise_huge_pages(order.data(), order.capacity() * sizeof(Position));
   for (std::size_t i = 0; i < drafts.size(); ++i) {
     if (drafts[i].usable()) order.push_back({drafts[i].site.x, drafts[i].site.y, i});
   }
@@ -87,6 +89,8 @@ SiteTable finish_sites(std::vector<SiteDraft> drafts, const std::string& file) {
   SiteTable table;
   table.sites.reserve(drafts.size());
   table.origin.reserve(drafts.size());
+  advise_huge_pages(table.sites.data(), table.sites.capacity() * sizeof(Site));  // core/large_buffer.h
+  advise_huge_pages(table.origin.data(), table.origin.capacity() * sizeof(std::string));
   for (auto& d : drafts) {
     table.sites.push_back(std::move(d.site));
     table.origin.push_back(std::move(d.origin));

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "core/large_buffer.h"
 #include "io/input_error.h"
 #include "io/input_limits.h"
 #include "io/json_fields.h"
@@ -56,6 +57,9 @@ std::vector<SiteDraft> scan_site_drafts(JsonScan& scan) {
   constexpr std::size_t kShortestSiteBytes = 30;  // {"id":1,"x":0,"y":0,"weight":1},
   std::vector<SiteDraft> drafts;
   drafts.reserve(std::min(scan.remaining() / kShortestSiteBytes, kMaxSites + 1));
+  // The touched part in huge pages where the system has them (a fault per fresh 4 KiB page cost a
+  // fifth of reading 10^5 sites; core/large_buffer.h).
+  advise_huge_pages(drafts.data(), drafts.capacity() * sizeof(SiteDraft));
   scan.open('[');
   for (bool first = true; scan.next(']', first);) drafts.push_back(scan_site(scan, drafts.size()));
   return drafts;

@@ -8,6 +8,7 @@
 #include <iterator>
 #include <sstream>
 
+#include "core/large_buffer.h"
 #include "io/input_error.h"
 #include "io/input_limits.h"
 #include <nlohmann/json.hpp>
@@ -55,7 +56,12 @@ std::string read_text_file(const std::filesystem::path& path) {
   // ostringstream cost a second for 80 MB, and up to twice the file in memory while it grew).
   // Anything else (a pipe, a file that changes size) goes through the stream.
   if (const auto size = std::filesystem::file_size(path, ec); !ec && std::filesystem::is_regular_file(path, ec)) {
-    std::string content(size, '\0');
+    // In huge pages where the system has them: page by page, the first touch of a fresh 4 KiB page
+    // cost more than parsing it (core/large_buffer.h).
+    std::string content;
+    content.reserve(size);
+    advise_huge_pages(content.data(), content.capacity());
+    content.resize(size);
     in.read(content.data(), static_cast<std::streamsize>(size));
     if (!in.bad() && static_cast<std::uintmax_t>(in.gcount()) == size && in.peek() == std::char_traits<char>::eof())
       return content;
