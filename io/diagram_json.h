@@ -37,11 +37,14 @@
 
 namespace covmap::io {
 
+// Large graphs are rendered in pieces on the machine's cores and written to `out` in order, from the
+// calling thread only (io/ordered_pieces.h); the text is the same whatever the number of cores.
 void write_diagram_json(const Diagram& diagram, std::ostream& out);
 
-// The same text as a string, for callers that render every output before writing any (the CLI's
-// atomic writes). Its capacity is reserved once from an upper bound on the length, so a large graph
-// costs no reallocation: growing a string by doubling cost more than formatting it (issue 16).
+// The same text as a string, for callers that need it whole (`covmap diagram` streams into its
+// atomic write's temporary instead). Its capacity is reserved once from an upper bound on the
+// length, in huge pages where the system has them, so a large graph costs no reallocation and few
+// page faults: growing a string by doubling cost more than formatting it (issue 16).
 // Throws as write_diagram_json.
 std::string diagram_json_text(const Diagram& diagram);
 

@@ -23,6 +23,7 @@ namespace covmap::io {
 namespace {
 
 using detail::JsonOut;
+using namespace std::string_view_literals;  // "..."sv: a literal's length without strlen
 
 // JSON has no NaN or infinity. The first non-finite number in member order is named with its
 // path; paths are only made for it, not for every number written.
@@ -91,7 +92,7 @@ void write_arc(JsonOut& out, const Arc& arc) {
     out.number(c->cy);
     out.raw(",\"r\":");
     out.number(c->r);
-    out.raw(arc.ccw ? ",\"ccw\":true}" : ",\"ccw\":false}");
+    out.raw(arc.ccw ? ",\"ccw\":true}"sv : ",\"ccw\":false}"sv);
   } else {
     const auto& l = std::get<Line>(arc.curve);
     out.raw(",\"line\":{\"x\":");
@@ -108,25 +109,25 @@ void write_arc(JsonOut& out, const Arc& arc) {
   out.index_or_null(arc.left_site);
   out.raw(",");
   out.index_or_null(arc.right_site);
-  out.raw(arc.frame ? "],\"frame\":true}" : "]}");
+  out.raw(arc.frame ? "],\"frame\":true}"sv : "]}"sv);
 }
 
 void write_face(JsonOut& out, const Diagram& d, const Face& face) {
   out.raw("{\"site\":");
   out.index_or_null(face.site);
-  out.raw(face.bounded ? ",\"bounded\":true" : ",\"bounded\":false");
-  out.raw(face.orphan ? ",\"orphan\":true" : ",\"orphan\":false");
+  out.raw(face.bounded ? ",\"bounded\":true"sv : ",\"bounded\":false"sv);
+  out.raw(face.orphan ? ",\"orphan\":true"sv : ",\"orphan\":false"sv);
   out.raw(",\"boundaries\":[");
   bool first_cycle = true;
   for (const auto cycle : face_cycles(d, face)) {
-    out.raw(first_cycle ? "[" : ",[");
+    out.raw(first_cycle ? "["sv : ",["sv);
     first_cycle = false;
     bool first_step = true;
     for (const auto& half : cycle) {
-      out.raw(first_step ? "[" : ",[");
+      out.raw(first_step ? "["sv : ",["sv);
       first_step = false;
       out.integer(half.arc);
-      out.raw(half.forward ? ",true]" : ",false]");
+      out.raw(half.forward ? ",true]"sv : ",false]"sv);
     }
     out.raw("]");
   }
@@ -238,7 +239,7 @@ void write_piece(JsonOut& out, const Diagram& d, const Piece& piece) {
     out.raw("\":[");
   }
   for (std::size_t i = piece.begin; i < piece.end; ++i) {
-    out.raw(i == 0 ? "\n  " : ",\n  ");
+    out.raw(i == 0 ? "\n  "sv : ",\n  "sv);
     write_element(out, d, piece.section, i);
   }
   if (piece.end == n) {

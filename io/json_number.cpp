@@ -3,7 +3,6 @@
 #include <charconv>
 #include <cmath>
 #include <stdexcept>
-#include <string_view>
 
 namespace covmap::io {
 
@@ -13,7 +12,10 @@ char* write_json_number(double value, char* out) {
   // fewest digits that round-trip.
   const auto [end, error] = std::to_chars(out, out + kMaxJsonNumberChars - 2, value);
   if (error != std::errc()) throw std::logic_error("write_json_number: kMaxJsonNumberChars is too small");
-  if (std::string_view(out, end - out).find_first_of(".e") != std::string_view::npos) return end;
+  // A plain loop: find_first_of(".e") calls memchr on the two-character set once per character.
+  for (const char* c = out; c != end; ++c) {
+    if (*c == '.' || *c == 'e') return end;
+  }
   end[0] = '.';
   end[1] = '0';
   return end + 2;

@@ -28,6 +28,11 @@ class JsonOut {
   JsonOut& operator=(const JsonOut&) = delete;
 
   void raw(std::string_view text);
+  // A string literal: its length is known without strlen (the writers' punctuation and names).
+  template <std::size_t N>
+  void raw(const char (&literal)[N]) {
+    raw(std::string_view(literal, N - 1));
+  }
   void number(double value);     // finite (see json_number.h); always a float token
   void integer(long long value);
   void index_or_null(int index);  // null for a negative index (kNone)

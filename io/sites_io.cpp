@@ -62,7 +62,7 @@ void write_sites_json(const std::vector<Site>& sites, std::ostream& stream) {
   detail::JsonOut out(stream);
   out.raw("{\"format\":\"covmap.sites/1\",\"sites\":[");
   for (std::size_t i = 0; i < sites.size(); ++i) {
-    out.raw(i == 0 ? "\n  " : ",\n  ");
+    out.raw(i == 0 ? std::string_view("\n  ") : std::string_view(",\n  "));
     detail::write_site_json(out, sites[i]);
   }
   out.raw(sites.empty() ? "]}\n" : "\n]}\n");
