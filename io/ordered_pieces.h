@@ -1,15 +1,15 @@
 // A long text rendered in pieces on several threads and handed on in order (internal to io/;
-// issue 16: the arc graph of 10^5 sites is 78 MB of text, and formatting its numbers took longer
-// than a quarter of the engine on one core).
+// issue 16: the arc graph of 10^5 sites is 78 MB of text, whose formatting on one core took a tenth
+// of the engine's time).
 //
 // Contract:
 //   - render(j, text) appends piece j to `text` (cleared before each call, its capacity kept); it
 //     must depend on j alone, never on which thread runs it or on the other pieces, so the text
 //     handed on is the same for every thread count.
 //   - emit(piece) receives pieces 0, 1, …, count - 1 in that order, each exactly once, always on the
-//     calling thread (so `emit` may write to a stream that is not thread-safe). The caller renders
-//     too whenever the next piece is not taken yet, so one thread is as good as no thread, and a
-//     piece is emitted while later ones are still being rendered.
+//     calling thread (so `emit` may write to a stream that is not thread-safe). While the next piece
+//     to emit is not ready, the caller renders the next piece not taken yet, so one thread is as good
+//     as no thread, and a piece is emitted while later ones are still being rendered.
 //   - At most `window` pieces are held at a time (rendered and not yet emitted, or being rendered),
 //     so memory stays at a few pieces whatever the length of the text.
 //   - An exception thrown by render or emit stops the other threads after their current piece and
