@@ -39,35 +39,40 @@ void extract_linear(const std::vector<Site>& sites, SpatialTriangulation& rt, Di
 // A line is judged by its own (small) numbers, though, so the sagitta must also be within what
 // any arc end may be off its curve (self_check.h's allowed_off): else the circle stays.
 
+void straighten_arc(Arc& a, const Diagram& d, double extent) {
+  const Circle* c = std::get_if<Circle>(&a.curve);
+  if (!c || a.from == kNone || a.to == kNone || a.from == a.to) return;
+  // Only circles that are huge against their sites' distance (weights equal to ~6 digits or
+  // more) qualify: a tiny arc of an ordinary circle is as well written as a circle, and its
+  // curve type tells readers (recognition) that the weights differ. Tested first: it rules out
+  // almost every arc.
+  const Site& si = d.sites[a.left_site];
+  const Site& sj = d.sites[a.right_site];
+  // Most circles are decided without hypot: r² below a quarter of (ratio × spacing)² (rounding
+  // errs by a few ulps, the margin is a factor of 4) is certainly not above ratio × hypot.
+  // Sites and radii are scaled (build_diagram), so the squares neither overflow nor underflow.
+  const double dx = sj.x - si.x, dy = sj.y - si.y;
+  constexpr double kQuarterRatio2 = 0.25 * tolerance::kHugeCircleRatio * tolerance::kHugeCircleRatio;
+  if (c->r * c->r < kQuarterRatio2 * (dx * dx + dy * dy)) return;
+  const double spacing = std::hypot(dx, dy);
+  if (!(c->r > tolerance::kHugeCircleRatio * spacing)) return;
+  const Node& p = d.nodes[a.from];
+  const Node& q = d.nodes[a.to];
+  const double chord = std::hypot(q.x - p.x, q.y - p.y);
+  const double representation =
+      4 * 0x1p-52 * std::max({std::fabs(c->cx), std::fabs(c->cy), c->r});
+  const double sagitta = chord * chord / (8 * c->r);
+  const double line_allowance = allowed_off(extent, std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(q.x), std::fabs(q.y)}));
+  if (chord > 0 && sagitta < representation && sagitta <= line_allowance)
+    a.curve = Line{p.x, p.y, q.x - p.x, q.y - p.y};
+}
+
+// Each arc on its own: on all cores (0.09 s of 3·10^6 arcs on one).
 void straighten_flat_arcs(Diagram& d) {
   const double extent = site_extent(d.sites);
-  for (Arc& a : d.arcs) {
-    const Circle* c = std::get_if<Circle>(&a.curve);
-    if (!c || a.from == kNone || a.to == kNone || a.from == a.to) continue;
-    // Only circles that are huge against their sites' distance (weights equal to ~6 digits or
-    // more) qualify: a tiny arc of an ordinary circle is as well written as a circle, and its
-    // curve type tells readers (recognition) that the weights differ. Tested first: it rules out
-    // almost every arc.
-    const Site& si = d.sites[a.left_site];
-    const Site& sj = d.sites[a.right_site];
-    // Most circles are decided without hypot: r² below a quarter of (ratio × spacing)² (rounding
-    // errs by a few ulps, the margin is a factor of 4) is certainly not above ratio × hypot.
-    // Sites and radii are scaled (build_diagram), so the squares neither overflow nor underflow.
-    const double dx = sj.x - si.x, dy = sj.y - si.y;
-    constexpr double kQuarterRatio2 = 0.25 * tolerance::kHugeCircleRatio * tolerance::kHugeCircleRatio;
-    if (c->r * c->r < kQuarterRatio2 * (dx * dx + dy * dy)) continue;
-    const double spacing = std::hypot(dx, dy);
-    if (!(c->r > tolerance::kHugeCircleRatio * spacing)) continue;
-    const Node& p = d.nodes[a.from];
-    const Node& q = d.nodes[a.to];
-    const double chord = std::hypot(q.x - p.x, q.y - p.y);
-    const double representation =
-        4 * 0x1p-52 * std::max({std::fabs(c->cx), std::fabs(c->cy), c->r});
-    const double sagitta = chord * chord / (8 * c->r);
-    const double line_allowance = allowed_off(extent, std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(q.x), std::fabs(q.y)}));
-    if (chord > 0 && sagitta < representation && sagitta <= line_allowance)
-      a.curve = Line{p.x, p.y, q.x - p.x, q.y - p.y};
-  }
+  parallel_chunks(d.arcs.size(), worker_count(d.arcs.size()), [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t k = begin; k < end; ++k) straighten_arc(d.arcs[k], d, extent);
+  });
 }
 
 // The engine works on sites scaled by powers of two: positions so that the largest |coordinate| is
@@ -160,6 +165,7 @@ std::vector<Site> scaled_sites(std::span<const Site> input, const Scaling& scali
 std::vector<RawWeightedPoint> scaled_points(std::span<const Site> input, const Scaling& scaling) {
   std::vector<RawWeightedPoint> points;
   points.reserve(input.size());
+  advise_huge_pages(points.data(), points.capacity() * sizeof(RawWeightedPoint));
   const PowerOfTwo position(-scaling.position_exponent), weight(-scaling.weight_exponent);
   for (std::size_t i = 0; i < input.size(); ++i) {
     const ScaledSite s = scale_site(input[i], position, weight);
@@ -174,22 +180,28 @@ std::vector<RawWeightedPoint> scaled_points(std::span<const Site> input, const S
 void scale_back(Diagram& d, const Scaling& scaling) {
   const PowerOfTwo scale(scaling.position_exponent);
   const auto up = [&scale](double& v) { v = scale(v); };
-  for (Node& n : d.nodes) {
-    up(n.x);
-    up(n.y);
-  }
-  for (Arc& a : d.arcs) {
-    if (Circle* c = std::get_if<Circle>(&a.curve)) {
-      up(c->cx);
-      up(c->cy);
-      up(c->r);
-    } else if (Line* l = std::get_if<Line>(&a.curve)) {
-      up(l->x);
-      up(l->y);
-      up(l->dx);
-      up(l->dy);
+  // Every value on its own: on all cores (0.06 s at 10^6 sites on one).
+  parallel_chunks(d.nodes.size(), worker_count(d.nodes.size()), [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t k = begin; k < end; ++k) {
+      up(d.nodes[k].x);
+      up(d.nodes[k].y);
     }
-  }
+  });
+  parallel_chunks(d.arcs.size(), worker_count(d.arcs.size()), [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t k = begin; k < end; ++k) {
+      Arc& a = d.arcs[k];
+      if (Circle* c = std::get_if<Circle>(&a.curve)) {
+        up(c->cx);
+        up(c->cy);
+        up(c->r);
+      } else if (Line* l = std::get_if<Line>(&a.curve)) {
+        up(l->x);
+        up(l->y);
+        up(l->dx);
+        up(l->dy);
+      }
+    }
+  });
   for (const Arc& a : d.arcs) {
     const Circle* c = std::get_if<Circle>(&a.curve);
     const Line* l = std::get_if<Line>(&a.curve);
@@ -323,7 +335,8 @@ Diagram build_diagram(std::span<const Site> input, BuildStats* stats_out) {
     if (beside) helper.start(out.sites, sites_beside ? &scaling : nullptr, spatial);
     std::optional<SpatialTriangulation> rt_storage;
     try {
-      rt_storage.emplace(points.begin(), points.end());
+      rt_storage.emplace();
+      insert_spatially_sorted(*rt_storage, points);
     } catch (...) {
       if (beside) helper.check();
       throw;
