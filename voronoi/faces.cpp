@@ -1,6 +1,7 @@
 #include "voronoi/faces.h"
 
 #include "voronoi/face_tracing.h"
+#include "core/parallel.h"
 
 namespace covmap::voronoi {
 namespace {
@@ -16,26 +17,32 @@ void whole_plane_faces(Diagram& d, FaceAssembly& fa) {
 }
 
 // Orphans: every face of a site but the one containing the site itself. Faces created for holes
-// only (the unbounded component of a site without lines) have no outer cycle.
+// only (the unbounded component of a site without lines) have no outer cycle. Each site's faces are
+// decided by that site alone, so the sites are shared among the workers (0.1–0.3 s at 10^6 sites on
+// one core).
 void mark_orphans(Diagram& d, const FaceAssembly& fa) {
   const LargeVector<char>& has_outer = fa.has_outer;
-  for (int site : fa.faces_of_site.sites()) {
-    const Point s{d.sites[site].x, d.sites[site].y};
-    // Unclipped, a site lies in its own region: a single face is its own.
-    if (fa.faces_of_site.single(site) && d.clip.empty()) {
-      d.faces[fa.faces_of_site.front(site)].orphan = false;
-      continue;
+  const std::vector<int>& sites = fa.faces_of_site.sites();
+  parallel_chunks(sites.size(), worker_count(sites.size()), [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t k = begin; k < end; ++k) {
+      const int site = sites[k];
+      const Point s{d.sites[site].x, d.sites[site].y};
+      // Unclipped, a site lies in its own region: a single face is its own.
+      if (fa.faces_of_site.single(site) && d.clip.empty()) {
+        d.faces[fa.faces_of_site.front(site)].orphan = false;
+        continue;
+      }
+      fa.faces_of_site.for_each(site, [&](int f) {
+        Face& face = d.faces[f];
+        const bool outer = f < static_cast<int>(has_outer.size()) && has_outer[f];
+        const FaceCycles cycles = face_cycles(d, face);
+        bool inside = !outer || cycle_contains(d, cycles.front(), s);
+        for (std::size_t b = outer ? 1 : 0; inside && b < cycles.size(); ++b)
+          if (cycle_contains(d, cycles[b], s)) inside = false;
+        face.orphan = !inside;
+      });
     }
-    fa.faces_of_site.for_each(site, [&](int f) {
-      Face& face = d.faces[f];
-      const bool outer = f < static_cast<int>(has_outer.size()) && has_outer[f];
-      const FaceCycles cycles = face_cycles(d, face);
-      bool inside = !outer || cycle_contains(d, cycles.front(), s);
-      for (std::size_t b = outer ? 1 : 0; inside && b < cycles.size(); ++b)
-        if (cycle_contains(d, cycles[b], s)) inside = false;
-      face.orphan = !inside;
-    });
-  }
+  });
 }
 
 }  // namespace

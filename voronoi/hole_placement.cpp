@@ -2,6 +2,7 @@
 // else by containment tests against the outer cycles of its site's faces near it.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <unordered_map>
 #include <vector>
@@ -9,6 +10,7 @@
 #include "voronoi/arc_path.h"
 #include "voronoi/box_grid.h"
 #include "voronoi/face_tracing.h"
+#include "core/parallel.h"
 
 namespace covmap::voronoi::tracing {
 namespace {
@@ -33,8 +35,8 @@ class PathCache {
   std::unordered_map<int, ArcPathView> paths_;  // node-based: references stay valid
 };
 
-// Candidate outer cycles for a point, through a grid over their bounding boxes (built on first
-// use: most graphs have no hole that needs a containment test). Without it, tracing by geometry
+// Candidate outer cycles for a point, through a grid over their bounding boxes (built by build(),
+// called only when some hole needs a containment test: most graphs have none). Without it, tracing by geometry
 // (one label for all faces) would test every hole against every face. Tracing by sites, a hole
 // only goes into a face of its own site, so only those faces get a box (the others are left out
 // of the grid, which keeps its cells and the candidates' order): at 10^6 faces the boxes of all
@@ -43,8 +45,8 @@ class FaceGrid {
  public:
   FaceGrid(const Diagram& d, bool by_sites, const CycleSet& cs, const FaceAssembly& fa)
       : d_(d), by_sites_(by_sites), cs_(cs), fa_(fa) {}
-  std::vector<int> candidates(Point p) {
-    if (!face_grid_) {
+  void build() {
+    {
       std::vector<char> hole_site(by_sites_ ? d_.sites.size() : 0, 0);
       for (int c : fa_.holes)
         if (by_sites_) hole_site[cs_.cycles[c].site] = 1;
@@ -61,6 +63,9 @@ class FaceGrid {
       face_grid_ = make_grid(boxes.size(), [&](std::size_t f) { return boxes[f]; }, central_box(d_.nodes), fa_.outer_area.size(),
                              /*max_cells=*/64);
     }
+  }
+  // After build(); read only, so any number of threads may ask.
+  std::vector<int> candidates(Point p) const {
     std::vector<int> out(face_grid_->always.begin(), face_grid_->always.end());
     if (face_grid_->nx > 0) {  // clamped like the boxes: a point beyond the grid meets the border cells
       const auto c = face_grid_->cell(face_grid_->column(p.x), face_grid_->row(p.y));
@@ -87,7 +92,7 @@ int outer_face_of_half(const LargeVector<int>& cycle_of_half, const FaceAssembly
 // The innermost outer cycle of the hole's site that contains a point of the hole, among faces not
 // across the hole's own arcs; -1 when none does.
 int containing_face(const Diagram& d, bool by_sites, const CycleSet& cs, const LargeVector<int>& cycle_of_half,
-                    const FaceAssembly& fa, const Cycle& hole, PathCache& cached_path, FaceGrid& grid) {
+                    const FaceAssembly& fa, const Cycle& hole, PathCache& cached_path, const FaceGrid& grid) {
   const HalfArc first = half_of(cs.cycle_halves[hole.begin]);
   const ArcPathView path = arc_path(d.arcs[first.arc], d.nodes);
   // Not the middle of the arc: degenerate inputs (grids) make a hole tangent to another arc at its
@@ -116,14 +121,25 @@ int containing_face(const Diagram& d, bool by_sites, const CycleSet& cs, const L
 
 void place_holes(Diagram& d, bool by_sites, const CycleSet& cs, const LargeVector<int>& cycle_of_half,
                  const std::vector<int>& ray_face, FaceAssembly& fa) {
-  PathCache cached_path(d);
+  const std::size_t n = fa.holes.size();
+  std::vector<int> target(ray_face.begin(), ray_face.begin() + static_cast<std::ptrdiff_t>(n));
   FaceGrid grid(d, by_sites, cs, fa);
-  for (std::size_t hk = 0; hk < fa.holes.size(); ++hk) {
-    const Cycle& hole = cs.cycles[fa.holes[hk]];
-    int target = ray_face[hk];
-    if (target == -2) target = containing_face(d, by_sites, cs, cycle_of_half, fa, hole, cached_path, grid);
-    if (target < 0) target = implicit_face_of(d, by_sites, fa, hole.site);
-    fa.face_of_cycle[fa.holes[hk]] = target;
+  if (std::find(target.begin(), target.end(), -2) != target.end()) grid.build();
+  // Each hole's containment tests depend on that hole alone (each worker caches its own paths), so
+  // they run on all cores, each worker over a contiguous range of holes; a few thousand holes are
+  // worth it (each test walks whole outer cycles). The faces created for holes no face contains are
+  // added afterwards, in hole order, as one pass did.
+  constexpr std::size_t kHolesPerWorker = 512;
+  const int workers = n >= 2 * kHolesPerWorker ? worker_count(std::numeric_limits<std::size_t>::max()) : 1;
+  parallel_chunks(n, workers, [&](std::size_t begin, std::size_t end, int) {
+    PathCache cached_path(d);
+    for (std::size_t hk = begin; hk < end; ++hk)
+      if (target[hk] == -2)
+        target[hk] = containing_face(d, by_sites, cs, cycle_of_half, fa, cs.cycles[fa.holes[hk]], cached_path, grid);
+  });
+  for (std::size_t hk = 0; hk < n; ++hk) {
+    const int hole = fa.holes[hk];
+    fa.face_of_cycle[hole] = target[hk] >= 0 ? target[hk] : implicit_face_of(d, by_sites, fa, cs.cycles[hole].site);
   }
 }
 

@@ -65,6 +65,21 @@ TEST_P(SpatialTriangulationTest, SameCellsInTheSameOrderAsCgalsDefaultCells) {
   }
 }
 
+// build_diagram inserts through insert_spatially_sorted (its own copy of CGAL's range insertion,
+// sorting the points in place): the same cells in the same order as the range constructor.
+TEST_P(SpatialTriangulationTest, EnginesInsertionGivesTheRangeConstructorsCells) {
+  for (const int n : {400, 5000}) {
+    const auto sites = testing::make_sites(GetParam(), n, 7);
+    const auto points = weighted_points(sites);
+    SpatialTriangulation reference(points.begin(), points.end());
+    SpatialTriangulation engine;
+    auto sorted = points;
+    insert_spatially_sorted(engine, sorted);
+    ASSERT_EQ(engine.dimension(), reference.dimension());
+    EXPECT_EQ(cells_in_order(engine), cells_in_order(reference)) << n << " sites";
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Families, SpatialTriangulationTest,
                          ::testing::Values(Family::UniformWeights, Family::EqualWeights, Family::WeightClasses,
                                            Family::SharedMaximum, Family::Grid, Family::Collinear,

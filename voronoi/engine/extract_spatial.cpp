@@ -98,8 +98,10 @@ class SpatialExtractor {
   LargeVector<int> uf_;             // union-find on CGAL ids: cells sharing one power vertex on the paraboloid
   LargeVector<int> vertex_node_;    // node id of a zero vertex, by union-find root
   std::vector<std::pair<int, int>> zero_nodes_;  // (cell, node) of the finite zero-vertex cells, by cell
-  std::vector<std::array<int, 3>> node_facet_;  // per root node: the sites of its facet
-  std::vector<AlongLine> node_root_;            // per root node: which root of its facet's line
+  // Large buffers, sized without being written: every entry is written as its node is placed, on
+  // all cores (as std::vectors they were zero-filled on one core first, through 4 KiB page faults).
+  LargeVector<std::array<int, 3>> node_facet_;  // per root node: the sites of its facet
+  LargeVector<AlongLine> node_root_;            // per root node: which root of its facet's line
   int workers_ = 1;
 
   static int local_edge(int i, int j) {
@@ -385,7 +387,18 @@ class SpatialExtractor {
     for (std::size_t i = 0; i < n; ++i)
       if (std::isfinite(out_.nodes[i].x) && std::isfinite(out_.nodes[i].y))
         order.push_back({out_.nodes[i].x, static_cast<int>(i)});
-    std::sort(order.begin(), order.end(), [](const ByX& a, const ByX& b) { return a.x < b.x; });
+    // Without ties in x the sorted order is unique, and the two-thread sort finds it; with ties
+    // (grids) std::sort runs again on the unsorted order, for the order of ties described above.
+    const auto by_x = [](const ByX& a, const ByX& b) { return a.x < b.x; };
+    parallel_sort(order.begin(), order.end(), by_x);
+    if (std::adjacent_find(order.begin(), order.end(), [](const ByX& a, const ByX& b) { return a.x == b.x; }) !=
+        order.end()) {
+      order.clear();
+      for (std::size_t i = 0; i < n; ++i)
+        if (std::isfinite(out_.nodes[i].x) && std::isfinite(out_.nodes[i].y))
+          order.push_back({out_.nodes[i].x, static_cast<int>(i)});
+      std::sort(order.begin(), order.end(), by_x);
+    }
     std::vector<int> parent(n);
     std::iota(parent.begin(), parent.end(), 0);
     auto find = [&](int x) {
@@ -463,8 +476,8 @@ class SpatialExtractor {
   // their place.
   void release_before_walks() {
     LargeVector<int>().swap(by_orig_);
-    std::vector<std::array<int, 3>>().swap(node_facet_);
-    std::vector<AlongLine>().swap(node_root_);
+    LargeVector<std::array<int, 3>>().swap(node_facet_);
+    LargeVector<AlongLine>().swap(node_root_);
     LargeVector<int>().swap(uf_);
     LargeVector<int>().swap(vertex_node_);
     release_large_buffers();
