@@ -16,10 +16,14 @@
 namespace covmap {
 
 
+// The machine's cores, at least 1 and at most 8: the most workers any loop here uses.
+inline int hardware_workers() {
+  return static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 8u));
+}
+
 inline int worker_count(std::size_t items) {
-  const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
   if (items < 20000) return 1;  // thread start-up costs more than small loops
-  return static_cast<int>(std::min<unsigned>(hw, 8));
+  return hardware_workers();
 }
 
 // Calls f(begin, end, worker) on `workers` contiguous chunks of [0, n), concurrently.

@@ -1,5 +1,7 @@
 #include "io/ordered_pieces.h"
 
+#include "core/parallel.h"
+
 #include <algorithm>
 #include <condition_variable>
 #include <exception>
@@ -138,7 +140,7 @@ void render_pieces_in_order(std::size_t count, const OrderedPieces& options,
 
 int rendering_threads(std::size_t bytes) {
   if (bytes < kThreadedTextBytes) return 1;
-  return static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 4u));
+  return std::min(hardware_workers(), 4);
 }
 
 }  // namespace covmap::io::detail

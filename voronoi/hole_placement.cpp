@@ -2,7 +2,6 @@
 // else by containment tests against the outer cycles of its site's faces near it.
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <optional>
 #include <unordered_map>
 #include <vector>
@@ -35,9 +34,9 @@ class PathCache {
   std::unordered_map<int, ArcPathView> paths_;  // node-based: references stay valid
 };
 
-// Candidate outer cycles for a point, through a grid over their bounding boxes (built by build(),
-// called only when some hole needs a containment test: most graphs have none). Without it, tracing by geometry
-// (one label for all faces) would test every hole against every face. Tracing by sites, a hole
+// Candidate outer cycles for a point, through a grid over their bounding boxes (made by build(),
+// called only when some hole needs a containment test: most graphs have none). Without it, tracing
+// by geometry (one label for all faces) would test every hole against every face. Tracing by sites, a hole
 // only goes into a face of its own site, so only those faces get a box (the others are left out
 // of the grid, which keeps its cells and the candidates' order): at 10^6 faces the boxes of all
 // the arcs cost ~1 s, the holes' own sites' a few percent of that.
@@ -46,23 +45,21 @@ class FaceGrid {
   FaceGrid(const Diagram& d, bool by_sites, const CycleSet& cs, const FaceAssembly& fa)
       : d_(d), by_sites_(by_sites), cs_(cs), fa_(fa) {}
   void build() {
-    {
-      std::vector<char> hole_site(by_sites_ ? d_.sites.size() : 0, 0);
-      for (int c : fa_.holes)
-        if (by_sites_) hole_site[cs_.cycles[c].site] = 1;
-      LargeVector<Box> boxes(fa_.outer_area.size(), Box{});
-      for (std::size_t f = 0; f < fa_.outer_area.size(); ++f) {
-        if (by_sites_ && !hole_site[d_.faces[f].site]) continue;
-        for (const HalfArc& h : outer_cycle_of(d_, fa_, static_cast<int>(f))) {
-          const Box b = arc_bounds(d_.arcs[h.arc], d_.nodes);
-          boxes[f].add_box(b);
-        }
+    std::vector<char> hole_site(by_sites_ ? d_.sites.size() : 0, 0);
+    for (int c : fa_.holes)
+      if (by_sites_) hole_site[cs_.cycles[c].site] = 1;
+    LargeVector<Box> boxes(fa_.outer_area.size(), Box{});
+    for (std::size_t f = 0; f < fa_.outer_area.size(); ++f) {
+      if (by_sites_ && !hole_site[d_.faces[f].site]) continue;
+      for (const HalfArc& h : outer_cycle_of(d_, fa_, static_cast<int>(f))) {
+        const Box b = arc_bounds(d_.arcs[h.arc], d_.nodes);
+        boxes[f].add_box(b);
       }
-      // Over the central nodes: a few faces reaching far out would otherwise stretch the cells
-      // until every face shares one.
-      face_grid_ = make_grid(boxes.size(), [&](std::size_t f) { return boxes[f]; }, central_box(d_.nodes), fa_.outer_area.size(),
-                             /*max_cells=*/64);
     }
+    // Over the central nodes: a few faces reaching far out would otherwise stretch the cells
+    // until every face shares one.
+    face_grid_ = make_grid(boxes.size(), [&](std::size_t f) { return boxes[f]; }, central_box(d_.nodes), fa_.outer_area.size(),
+                           /*max_cells=*/64);
   }
   // After build(); read only, so any number of threads may ask.
   std::vector<int> candidates(Point p) const {
@@ -130,7 +127,7 @@ void place_holes(Diagram& d, bool by_sites, const CycleSet& cs, const LargeVecto
   // worth it (each test walks whole outer cycles). The faces created for holes no face contains are
   // added afterwards, in hole order, as one pass did.
   constexpr std::size_t kHolesPerWorker = 512;
-  const int workers = n >= 2 * kHolesPerWorker ? worker_count(std::numeric_limits<std::size_t>::max()) : 1;
+  const int workers = n >= 2 * kHolesPerWorker ? hardware_workers() : 1;
   parallel_chunks(n, workers, [&](std::size_t begin, std::size_t end, int) {
     PathCache cached_path(d);
     for (std::size_t hk = begin; hk < end; ++hk)

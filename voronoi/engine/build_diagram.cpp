@@ -361,7 +361,7 @@ Diagram build_diagram(std::span<const Site> input, BuildStats* stats_out) {
   // keep up to 1 GiB of them resident for reuse, but face tracing needs other sizes, and the cache
   // would hold the build's peak memory through its last stage.
   release_large_buffers();
-  drop_unused_nodes(out);
+  drop_unused_nodes(out);  // copies left by nodes found twice on a shared power line
   refuse_unwritable_bisectors(out);
   const auto check_start = Clock::now();
   self_check(out);  // before straightening: it reads each circle's arcs in walk order

@@ -384,19 +384,20 @@ class SpatialExtractor {
     };
     LargeVector<ByX> order;
     order.reserve(n);
-    for (std::size_t i = 0; i < n; ++i)
-      if (std::isfinite(out_.nodes[i].x) && std::isfinite(out_.nodes[i].y))
-        order.push_back({out_.nodes[i].x, static_cast<int>(i)});
-    // Without ties in x the sorted order is unique, and the two-thread sort finds it; with ties
-    // (grids) std::sort runs again on the unsorted order, for the order of ties described above.
-    const auto by_x = [](const ByX& a, const ByX& b) { return a.x < b.x; };
-    parallel_sort(order.begin(), order.end(), by_x);
-    if (std::adjacent_find(order.begin(), order.end(), [](const ByX& a, const ByX& b) { return a.x == b.x; }) !=
-        order.end()) {
+    const auto finite_nodes_in_index_order = [&] {
       order.clear();
       for (std::size_t i = 0; i < n; ++i)
         if (std::isfinite(out_.nodes[i].x) && std::isfinite(out_.nodes[i].y))
           order.push_back({out_.nodes[i].x, static_cast<int>(i)});
+    };
+    // Without ties in x the sorted order is unique, and the two-thread sort finds it; with ties
+    // (grids) std::sort runs again on the unsorted order, for the order of ties described above.
+    const auto by_x = [](const ByX& a, const ByX& b) { return a.x < b.x; };
+    finite_nodes_in_index_order();
+    parallel_sort(order.begin(), order.end(), by_x);
+    if (std::adjacent_find(order.begin(), order.end(), [](const ByX& a, const ByX& b) { return a.x == b.x; }) !=
+        order.end()) {
+      finite_nodes_in_index_order();
       std::sort(order.begin(), order.end(), by_x);
     }
     std::vector<int> parent(n);
