@@ -50,8 +50,21 @@ inline constexpr double kAuditLossScale = 3.0;
 // Iteration cap of the refinement's first phase: maps of 10⁴ sensors converge in far fewer; the
 // cap only bounds the time of a start that does not converge.
 inline constexpr int kAuditMaxIterations = 500;
-// Iterations of the second refinement phase (audit/two_phase_refinement.cpp).
+// Iterations of the second refinement phase (audit/two_phase_refinement.cpp), at most.
 inline constexpr int kPhase2Iterations = 60;
+// Phase 2 ends earlier once the map has settled (fitting::SettleRule): when, over the last
+// kPhase2SettleWindow iterations, no more than kPhase2MovingShare of the sensors moved by more
+// than kPhase2SettledBins bins or changed their log weight by more than kPhase2SettledLogWeight.
+// A twentieth of a bin and 0.01 (0.15 dB at α = 3.5) are far below what the staircases resolve
+// (a sample's σ is bin/√12). The few sensors still moving then are those creeping along a flat
+// valley or running off; the restart round and the local re-solves that follow are built for them,
+// while every further joint iteration costs a linear solve of the whole map. On the 10⁴-sensor map
+// of docs/PERFORMANCE.md phase 2's iterations 25–60 moved 4–6 sensors (one running off); at
+// 3·10⁴ sensors tens of thousands still move until Ceres' own tolerance ends it (41 iterations).
+inline constexpr int kPhase2SettleWindow = 5;
+inline constexpr double kPhase2SettledBins = 0.05;
+inline constexpr double kPhase2SettledLogWeight = 0.01;
+inline constexpr double kPhase2MovingShare = 0.01;
 
 // The bin size of a map that is not a raster's staircases (no bin size estimated): the cleaning's
 // snap distance, but at least this fraction of the map's diagonal (a map without any snap).

@@ -80,8 +80,12 @@ fitting::RefineResult refine_from(const RefinementSetup& setup, std::vector<Site
   first.function_tolerance = tolerance::kPhase1FunctionTolerance;
   quick.nonmonotonic_steps = true;
   // Phase 2 starts at phase 1's optimum and only releases the weights' priors: a few dozen
-  // iterations settle it; its long tail (cost changes of parts in 10⁵) is cut off.
+  // iterations settle it; its long tail (cost changes of parts in 10⁵, a few sensors creeping or
+  // running off, which the restart round and the local re-solves then take up) is cut off by the
+  // cap and, earlier, by the settle rule (audit/tolerances.h).
   quick.max_iterations = tolerance::kPhase2Iterations;
+  quick.settle = fitting::SettleRule{tolerance::kPhase2SettleWindow, tolerance::kPhase2SettledBins * setup.bin_size_m,
+                                     tolerance::kPhase2SettledLogWeight, tolerance::kPhase2MovingShare};
   try {
     fitting::RefineResult phase1 = fitting::refine_sites(from, setup.samples, priors_for(setup, from, true), first);
     messages.push_back("refinement phase 1: " + phase1.summary.brief());

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 #include <ceres/solver.h>
@@ -16,6 +17,7 @@
 #include "fitting/problem_setup.h"
 #include "fitting/robust_loss.h"
 #include "fitting/serial_factorization.h"
+#include "fitting/settled_sites.h"
 #include "fitting/solver_logging.h"
 #include "fitting/tolerances.h"
 #include "fitting/validate.h"
@@ -161,10 +163,22 @@ RefineResult refine_sites(std::span<const Site> initial, std::span<const Boundar
     Heartbeat heartbeat(options.on_iteration);
     (void)detail::keep_sparse_factorization_serial();
     if (options.on_iteration) solver.callbacks.push_back(&heartbeat);
+    std::optional<detail::SettledSites> settle;
+    if (options.settle) {
+      settle.emplace(blocks, *options.settle);
+      solver.update_state_every_iteration = true;
+      solver.callbacks.push_back(&*settle);
+    }
     ceres::Solve(solver, built.problem.get(), &solved);
     summary.converged = solved.termination_type == ceres::CONVERGENCE;
     summary.termination = ceres::TerminationTypeToString(solved.termination_type);
     summary.message = solved.message;
+    if (settle && settle->settled()) {
+      summary.converged = true;
+      summary.termination = "SETTLED";
+      summary.message = std::to_string(settle->still_moving()) + " of " + std::to_string(blocks.size()) +
+                        " sites still moving (RefineOptions::settle)";
+    }
     summary.iterations = solved.num_successful_steps + solved.num_unsuccessful_steps;
     summary.initial_cost = solved.initial_cost;
     summary.final_cost = solved.final_cost;

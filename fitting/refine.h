@@ -76,6 +76,21 @@ std::string to_string(RobustLoss loss);  // "none", "huber", "cauchy"
 // Parses to_string's names (exactly); false, *loss untouched, for anything else.
 bool from_string(std::string_view name, RobustLoss* loss);
 
+// Ends a solve once the sites have settled, before Ceres' own tolerances would: every `window`
+// iterations the sites are compared with those `window` iterations before, and the solve stops
+// when no more than `moving_share` of the sites moved by more than `position_step` (units of the
+// sites' coordinates) or changed their log weight by more than `log_weight_step`. On a large map
+// the tail of a solve is often a handful of sites creeping along flat valleys (or running off),
+// each iteration a full linear solve for all of them; a caller that deals with such sites itself
+// (the audit restarts and re-solves them locally) can stop there. Deterministic: it reads only
+// the iterates. Not checked at iteration 0; ends with summary.termination "SETTLED" (converged).
+struct SettleRule {
+  int window = 5;               // >= 1
+  double position_step = 0.0;   // > 0
+  double log_weight_step = 0.0; // > 0
+  double moving_share = 0.0;    // in [0, 1)
+};
+
 struct RefineOptions {
   // Robust loss on the sample residuals (priors are never robustified).
   RobustLoss loss = RobustLoss::kCauchy;
@@ -110,6 +125,8 @@ struct RefineOptions {
   // reach is held_range · initial weight scale) instead of estimating it, e.g. for a local re-solve
   // of part of a map whose R the whole map fixed. Must be finite and > 0 when set.
   std::optional<double> held_range;
+  // Stop once the sites have settled (SettleRule); unset: only Ceres' tolerances and max_iterations.
+  std::optional<SettleRule> settle;
   // Called after every solver iteration with its number (from 0): a heartbeat for long solves.
   // Empty: not called. Must not throw.
   std::function<void(int iteration)> on_iteration;
@@ -142,8 +159,8 @@ enum class SiteStatus {
 std::string to_string(SiteStatus status);  // "refined", "from-prior", "unobserved"
 
 struct RefineSummary {
-  bool converged = false;
-  std::string termination;  // Ceres' termination type (CONVERGENCE, NO_CONVERGENCE, ...) or NO_SAMPLES
+  bool converged = false;   // Ceres' CONVERGENCE, NO_SAMPLES or SETTLED
+  std::string termination;  // Ceres' termination type (CONVERGENCE, NO_CONVERGENCE, ...), NO_SAMPLES or SETTLED
   std::string message;      // Ceres' message, then any covariance remark
   int iterations = 0;
   double initial_cost = 0.0, final_cost = 0.0;  // ½ Σ loss(r²), r in σ units, priors included

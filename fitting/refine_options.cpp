@@ -52,6 +52,16 @@ bool RefineOptions::IsValid(std::string* error) const {
   if (threads < 1) return fail("threads must be at least 1 (got " + std::to_string(threads) + ")");
   if (held_range && !(std::isfinite(*held_range) && *held_range > 0))
     return fail("held_range must be finite and positive (got " + std::to_string(*held_range) + ")");
+  if (settle) {
+    const SettleRule& r = *settle;
+    if (r.window < 1) return fail("settle.window must be at least 1 (got " + std::to_string(r.window) + ")");
+    if (!(std::isfinite(r.position_step) && r.position_step > 0))
+      return fail("settle.position_step must be finite and positive (got " + std::to_string(r.position_step) + ")");
+    if (!(std::isfinite(r.log_weight_step) && r.log_weight_step > 0))
+      return fail("settle.log_weight_step must be finite and positive (got " + std::to_string(r.log_weight_step) + ")");
+    if (!(r.moving_share >= 0 && r.moving_share < 1))
+      return fail("settle.moving_share must be in [0, 1) (got " + std::to_string(r.moving_share) + ")");
+  }
   return true;
 }
 
