@@ -2,51 +2,62 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace covmap::audit {
 namespace {
 
 
-// Squared Euclidean distance transform of a binary mask (Felzenszwalb & Huttenlocher's lower
-// envelope of parabolas, exact, linear time): per bin, the squared distance in bins to the nearest
-// set bin (infinity when there is none).
-std::vector<double> distance_transform(const std::vector<char>& mask, int nx, int ny) {
+// The largest squared distance, in bins, from a bin set in `from` to the nearest bin set in `to`
+// (infinity when `to` has none, 0 when `from` has none): the directed Hausdorff distance, squared.
+// Meijster, Roerdink & Hesselink's exact Euclidean distance transform of `to`, evaluated only where
+// `from` is set: first each bin's distance to the nearest set bin of its column, by a sweep down
+// and one up over whole rows (contiguous in memory), then per row the lower envelope of the
+// parabolas (i − i')² + g(i')² (Felzenszwalb & Huttenlocher). Distances are small integers, so
+// every value is exact and the result does not depend on the order of the passes.
+double directed_squared_distance(const std::vector<char>& from, const std::vector<char>& to, int nx, int ny) {
   const double inf = std::numeric_limits<double>::infinity();
-  std::vector<double> d(mask.size());
-  for (std::size_t k = 0; k < mask.size(); ++k) d[k] = mask[k] ? 0.0 : inf;
-  auto pass = [&](auto index, int count, int lines) {
-    std::vector<double> f(count), out(count), z(count + 1);
-    std::vector<int> v(count);
-    for (int line = 0; line < lines; ++line) {
-      for (int q = 0; q < count; ++q) f[q] = d[index(line, q)];
-      int k = -1;
-      for (int q = 0; q < count; ++q) {
-        if (!std::isfinite(f[q])) continue;
-        double s = 0;
-        while (k >= 0) {
-          s = ((f[q] + q * q) - (f[v[k]] + v[k] * v[k])) / (2.0 * (q - v[k]));
-          if (s <= z[k]) --k;
-          else break;
-        }
-        ++k;
-        v[k] = q;
-        z[k] = k == 0 ? -inf : s;
-        z[k + 1] = inf;
+  // Column distances; `far` (beyond any real one) marks a column without a set bin so far.
+  const int far = nx + ny + 1;
+  std::vector<int> g(to.size());
+  for (int j = 0; j < ny; ++j) {
+    const std::size_t row = static_cast<std::size_t>(j) * nx;
+    for (int i = 0; i < nx; ++i)
+      g[row + i] = to[row + i] ? 0 : (j > 0 ? std::min(g[row - nx + i] + 1, far) : far);
+  }
+  for (int j = ny - 2; j >= 0; --j) {
+    const std::size_t row = static_cast<std::size_t>(j) * nx;
+    for (int i = 0; i < nx; ++i) g[row + i] = std::min(g[row + i], g[row + nx + i] + 1);
+  }
+  double worst = 0.0;
+  std::vector<double> z(nx + 1);
+  std::vector<int> v(nx);
+  for (int j = 0; j < ny; ++j) {
+    const std::size_t row = static_cast<std::size_t>(j) * nx;
+    const auto f = [&](int q) { return static_cast<double>(g[row + q]) * g[row + q]; };
+    int k = -1;
+    double s = 0.0;
+    for (int q = 0; q < nx; ++q) {
+      if (g[row + q] >= far) continue;
+      while (k >= 0) {
+        s = ((f(q) + q * static_cast<double>(q)) - (f(v[k]) + v[k] * static_cast<double>(v[k]))) / (2.0 * (q - v[k]));
+        if (s <= z[k]) --k;
+        else break;
       }
-      if (k < 0) continue;  // no finite value on this line
-      int j = 0;
-      for (int q = 0; q < count; ++q) {
-        while (z[j + 1] < q) ++j;
-        out[q] = (q - v[j]) * static_cast<double>(q - v[j]) + f[v[j]];
-      }
-      for (int q = 0; q < count; ++q) d[index(line, q)] = out[q];
+      ++k;
+      v[k] = q;
+      z[k] = k == 0 ? -inf : s;
+      z[k + 1] = inf;
     }
-  };
-  const auto row_major = [nx](int row, int col) { return static_cast<std::size_t>(row) * nx + col; };
-  const auto col_major = [nx](int col, int row) { return static_cast<std::size_t>(row) * nx + col; };
-  pass(row_major, nx, ny);
-  pass(col_major, ny, nx);
-  return d;
+    int e = 0;
+    for (int q = 0; q < nx; ++q) {
+      if (!from[row + q]) continue;
+      if (k < 0) return inf;  // no bin of `to` at all (then no column has one)
+      while (z[e + 1] < q) ++e;
+      worst = std::max(worst, (q - v[e]) * static_cast<double>(q - v[e]) + f(v[e]));
+    }
+  }
+  return worst;
 }
 
 // Bins inside the map (label != kNone there) where the labelling changes to a 4-neighbour that is
@@ -146,14 +157,9 @@ LabelAgreement compare_labels(const LabelRaster& map, std::span<const int> recom
   const int nx = map.grid.nx, ny = map.grid.ny;
   const auto bm = inner_boundary(map.labels, map.labels, nx, ny);
   const auto br = inner_boundary(map.labels, recomputed, nx, ny);
-  const auto dm = distance_transform(bm, nx, ny);
-  const auto dr = distance_transform(br, nx, ny);
-  double worst = 0.0;
-  bool any_m = false, any_r = false;
-  for (std::size_t k = 0; k < bm.size(); ++k) {
-    if (bm[k]) any_m = true, worst = std::max(worst, dr[k]);
-    if (br[k]) any_r = true, worst = std::max(worst, dm[k]);
-  }
+  const bool any_m = std::find(bm.begin(), bm.end(), 1) != bm.end();
+  const bool any_r = std::find(br.begin(), br.end(), 1) != br.end();
+  const double worst = any_m && any_r ? std::max(directed_squared_distance(bm, br, nx, ny), directed_squared_distance(br, bm, nx, ny)) : 0.0;
   out.hausdorff = (any_m != any_r) ? std::numeric_limits<double>::infinity() : std::sqrt(worst) * map.grid.bin;
   return out;
 }
