@@ -53,7 +53,7 @@ inline constexpr int kAuditMaxIterations = 500;
 // Iterations of the second refinement phase (audit/two_phase_refinement.cpp), at most.
 inline constexpr int kPhase2Iterations = 60;
 // Phase 2 ends earlier once the map has settled (fitting::SettleRule): when, over the last
-// kPhase2SettleWindow iterations, no more than kPhase2MovingShare of the sensors moved by more
+// kPhase2SettleWindow successful iterations, no more than kPhase2MovingShare of the sensors moved by more
 // than kPhase2SettledBins bins or changed their log weight by more than kPhase2SettledLogWeight.
 // A twentieth of a bin and 0.01 (0.15 dB at α = 3.5) are far below what the staircases resolve
 // (a sample's σ is bin/√12). The few sensors still moving then are those creeping along a flat

@@ -46,7 +46,7 @@ using namespace covmap;
 namespace fs = std::filesystem;
 
 struct BenchOptions {
-  int n = 100, seeds = 3, digits = 1;
+  int n = 100, seeds = 3, first_seed = 1, digits = 1;
   double bin = 100.0, jitter = 0.0, spacing = 2000.0, gross = 0.1, ratio = 3.0, alpha = 3.5;
   bool lonlat = false, json_out = false;
   std::string towns;                       // town list: clustered windows of n towns instead of a square
@@ -275,7 +275,8 @@ int main(int argc, char** argv) {
   app.add_option("--spacing", b.spacing, "mean sensor spacing (m): the square side is spacing·sqrt(n)");
   app.add_option("--gross", b.gross, "fraction of reported sensors with gross errors");
   app.add_option("--ratio", b.ratio, "largest / smallest weight (uniform layouts)");
-  app.add_option("--seeds", b.seeds, "repetitions (seeds 1..k)");
+  app.add_option("--seeds", b.seeds, "repetitions (seeds first..first+k-1)");
+  app.add_option("--first-seed", b.first_seed, "the first seed (default 1)");
   app.add_option("--towns", b.towns, "town list (datasets/towns/*.csv): a window of --n real towns per seed")
       ->check(CLI::ExistingFile);
   app.add_option("--town-weights", b.town_weights, "population | power-classes");
@@ -289,7 +290,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   Tally tally;
-  for (int seed = 1; seed <= b.seeds; ++seed) audit_one(b, generate(b, seed), tally);
+  for (int seed = b.first_seed; seed < b.first_seed + b.seeds; ++seed) audit_one(b, generate(b, seed), tally);
   const nlohmann::json out = row(b, tally);
   if (b.json_out) {
     std::cout << out.dump() << "\n";

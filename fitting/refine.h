@@ -77,7 +77,8 @@ std::string to_string(RobustLoss loss);  // "none", "huber", "cauchy"
 bool from_string(std::string_view name, RobustLoss* loss);
 
 // Ends a solve once the sites have settled, before Ceres' own tolerances would: every `window`
-// iterations the sites are compared with those `window` iterations before, and the solve stops
+// successful iterations (rejected steps move nothing, so they do not count) the sites are compared
+// with those of the last comparison, and the solve stops
 // when no more than `moving_share` of the sites moved by more than `position_step` (units of the
 // sites' coordinates) or changed their log weight by more than `log_weight_step`. On a large map
 // the tail of a solve is often a handful of sites creeping along flat valleys (or running off),
@@ -85,7 +86,7 @@ bool from_string(std::string_view name, RobustLoss* loss);
 // (the audit restarts and re-solves them locally) can stop there. Deterministic: it reads only
 // the iterates. Not checked at iteration 0; ends with summary.termination "SETTLED" (converged).
 struct SettleRule {
-  int window = 5;               // >= 1
+  int window = 5;               // successful iterations, >= 1
   double position_step = 0.0;   // > 0
   double log_weight_step = 0.0; // > 0
   double moving_share = 0.0;    // in [0, 1)

@@ -10,7 +10,10 @@ SettledSites::SettledSites(const std::vector<SiteBlock>& blocks, const SettleRul
     : blocks_(blocks), rule_(rule), before_(blocks) {}
 
 ceres::CallbackReturnType SettledSites::operator()(const ceres::IterationSummary& summary) {
-  if (summary.iteration == 0 || summary.iteration % rule_.window != 0) return ceres::SOLVER_CONTINUE;
+  // Only steps that moved the sites count: a run of rejected steps (the trust region shrinking)
+  // leaves every site where it was without the map having settled.
+  if (summary.iteration == 0 || !summary.step_is_successful) return ceres::SOLVER_CONTINUE;
+  if (++steps_ % rule_.window != 0) return ceres::SOLVER_CONTINUE;
   moving_ = 0;
   for (std::size_t i = 0; i < blocks_.size(); ++i) {
     const SiteBlock& now = blocks_[i];

@@ -1,5 +1,6 @@
 // The iteration callback behind RefineOptions::settle (refine.h): it compares the sites every
-// `window` iterations and ends the solve once no more than the rule's share of them still moves.
+// `window` successful iterations and ends the solve once no more than the rule's share of them
+// still moves.
 // Internal to fitting/.
 #pragma once
 
@@ -29,6 +30,7 @@ class SettledSites : public ceres::IterationCallback {
   SettleRule rule_;
   std::vector<SiteBlock> before_;  // the sites at the last checked iteration
   std::size_t moving_ = 0;
+  int steps_ = 0;  // successful iterations so far
   bool settled_ = false;
 };
 
