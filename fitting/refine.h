@@ -78,9 +78,9 @@ bool from_string(std::string_view name, RobustLoss* loss);
 
 // Ends a solve once the sites have settled, before Ceres' own tolerances would: every `window`
 // successful iterations (rejected steps move nothing, so they do not count) the sites are compared
-// with those of the last comparison, and the solve stops
-// when no more than `moving_share` of the sites moved by more than `position_step` (units of the
-// sites' coordinates) or changed their log weight by more than `log_weight_step`. On a large map
+// with those of the last comparison, and the solve stops when no more than `moving_share` of the
+// sites moved by more than `position_step` (units of the sites' coordinates) or changed their log
+// weight by more than `log_weight_step`. On a large map
 // the tail of a solve is often a handful of sites creeping along flat valleys (or running off),
 // each iteration a full linear solve for all of them; a caller that deals with such sites itself
 // (the audit restarts and re-solves them locally) can stop there. Deterministic: it reads only
