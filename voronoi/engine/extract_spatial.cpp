@@ -13,13 +13,16 @@
 // Vertices are numbered by their sites' Morton (Z-order) rank, with their points stored in that
 // order, and cells are stored by the rank of their first vertex, so that neighbours and their
 // points are near in memory; CGAL's order scatters cells (at 10^5 sites 70 % of neighbours lay
-// more than 2048 cells apart) and the walks waited on memory. Nothing is decided differently, and
-// nothing comes out in another order: the arrays hold the same cells, vertices and neighbours; each
-// cell keeps its CGAL id (orig_), which decides as before which cell of a facet computes its pattern,
-// how nodes are numbered, and where each edge's walk starts (its lowest-id finite cell, at the edge's
-// vertex indices there); the walks turn around each edge as CGAL's cell circulator does
-// (Triangulation_utils_3::next_around_edge); every point is rebuilt from the same doubles; and the
-// arcs are put back in the order of the edges' CGAL ids.
+// more than 2048 cells apart) and the walks waited on memory. The cells' numbers and their vertex
+// order are canonical (flat_triangulation.h): a function of the complex, not of the order CGAL
+// inserted the sites in. They decide everything here that orders the output or a construction:
+// which cell of a facet computes its pattern (the lower-numbered), how nodes are numbered (in cell
+// order), the order of a node's three sites (the cell's), where each edge's walk starts (its
+// lowest-numbered finite cell, at the edge's vertex indices there, which also say which site of
+// its arcs is the left one), and the order of the arcs (the edges' starting cells). The walks
+// turn around each edge as CGAL's cell circulator does (Triangulation_utils_3::next_around_edge:
+// the flat cells keep CGAL's orientation). So the diagram does not depend on the insertion order
+// (tests/voronoi/engine_insertion_order_test.cpp).
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -83,9 +86,7 @@ class SpatialExtractor {
   Diagram& out_;
   BuildStats& stats_;
 
-  LargeVector<FlatCell> cells_;  // in spatial order (see the top of the file)
-  LargeVector<int> orig_;        // per cell, its id in CGAL's order
-  LargeVector<int> by_orig_;     // per CGAL id, the cell
+  LargeVector<FlatCell> cells_;  // in canonical order (see the top of the file)
   LargeVector<RawPoint> points_;  // per vertex id, its site's (x, y, w)
   LargeVector<int> vertex_site_;  // per vertex id, its site
   LargeVector<CellData> data_;
@@ -95,7 +96,7 @@ class SpatialExtractor {
   // (kInfinityNode at infinity): the facet's nodes have consecutive ids (facet_node()).
   LargeVector<int> facet_first_;
   LargeVector<int> node_rep_;       // per root node, the node it was merged into; empty if none was
-  LargeVector<int> uf_;             // union-find on CGAL ids: cells sharing one power vertex on the paraboloid
+  LargeVector<int> uf_;             // union-find on cells sharing one power vertex on the paraboloid
   LargeVector<int> vertex_node_;    // node id of a zero vertex, by union-find root
   std::vector<std::pair<int, int>> zero_nodes_;  // (cell, node) of the finite zero-vertex cells, by cell
   // Large buffers, sized without being written: every entry is written as its node is placed, on
@@ -159,8 +160,6 @@ class SpatialExtractor {
   void copy_triangulation() {
     FlatTriangulation flat = std::move(flat_);
     cells_ = std::move(flat.cells);
-    orig_ = std::move(flat.orig);
-    by_orig_ = std::move(flat.by_orig);
     points_ = std::move(flat.points);
     vertex_site_ = std::move(flat.vertex_site);
     flags_ = std::move(flat.flags);
@@ -178,7 +177,7 @@ class SpatialExtractor {
     std::vector<std::size_t> fallbacks(workers_, 0);
     parallel_chunks(cells_.size(), workers_, [&](std::size_t begin, std::size_t end, int w) {
       for (std::size_t k = begin; k < end; ++k) {
-        uf_[k] = static_cast<int>(k);  // by CGAL id; the same range of ids
+        uf_[k] = static_cast<int>(k);
         vertex_node_[k] = kNone;
         CellData& d = data_[k];
         const int c = static_cast<int>(k);
@@ -220,18 +219,18 @@ class SpatialExtractor {
 
   void compute_facets() {
     facet_.resize(4 * cells_.size());  // no page touched: pass 1 writes every entry
-    // Per CGAL id, what pass 2 has to do for the cell: the nodes it numbers (bits 0-6) and whether
+    // Per cell, what pass 2 has to do for the cell: the nodes it numbers (bits 0-6) and whether
     // any of its facet entries gets a first node at all (kWritesFacets: also those at infinity,
     // which number none). Written in pass 1 by the worker computing the cell's patterns, so that
     // pass 2 counts from one byte per cell and skips the cells with nothing to do, instead of
-    // reading four facet entries and their neighbours' ids through a cell in another order.
+    // reading four facet entries and their neighbours' ids.
     constexpr std::uint8_t kWritesFacets = 0x80;
     LargeVector<std::uint8_t> todo(cells_.size());
     // Pass 1, in parallel: the crossing pattern of every facet, from its lower-id cell (each facet
     // entry pair is written by exactly one worker). Unions of cells sharing a vertex are rare and
     // applied afterwards.
     struct Union {
-      int cell, facet, neighbor;  // CGAL ids
+      int cell, facet, neighbor;
     };
     std::vector<std::vector<Union>> unions(workers_);
     std::vector<std::size_t> fallbacks(workers_, 0);
@@ -241,7 +240,7 @@ class SpatialExtractor {
         std::uint8_t cell_todo = 0;
         for (int f = 0; f < 4; ++f) {
           const int nk = cells_[k].neighbor[f];
-          if (orig_[nk] < orig_[c]) continue;
+          if (nk < c) continue;
           std::optional<EdgePattern> p = facet_pattern<Approx>(c, nk);
           if (!p) {
             CGAL::Protect_FPU_rounding<true> guard;
@@ -258,14 +257,14 @@ class SpatialExtractor {
           bwd = *p;
           std::reverse(bwd.sign, bwd.sign + p->roots + 1);
           if (p->empty && zero(c) && zero(nk))
-            unions[w].push_back({orig_[c], f, orig_[nk]});
+            unions[w].push_back({c, f, nk});
           if (!p->empty && p->roots > 0) {
             cell_todo |= kWritesFacets;
             // On an edge at infinity (between two directions) the only possible zero is U: no node.
             if (!(infinite(c) && infinite(nk))) cell_todo += static_cast<std::uint8_t>(p->roots);
           }
         }
-        todo[orig_[c]] = cell_todo;
+        todo[k] = cell_todo;
       }
     });
     for (std::size_t f : fallbacks) stats_.exact_fallbacks += f;
@@ -278,15 +277,15 @@ class SpatialExtractor {
     parallel_chunks(cells_.size(), workers_, [&](std::size_t begin, std::size_t end, int) {
       std::fill(facet_first_.begin() + 4 * begin, facet_first_.begin() + 4 * end, kNone);
     });
-    // Applied in CGAL's cell order, so that each class has the root it had there: its vertex is
-    // rounded from that cell's homogeneous coordinates.
+    // Applied in cell order, so that each class has the same root whichever worker found its
+    // unions: its vertex is rounded from that cell's homogeneous coordinates.
     std::vector<Union> all;
     for (const auto& list : unions) all.insert(all.end(), list.begin(), list.end());
     std::sort(all.begin(), all.end(),
               [](const Union& a, const Union& b) { return a.cell != b.cell ? a.cell < b.cell : a.facet < b.facet; });
     for (const Union& u : all) uf_[find(u.cell)] = find(u.neighbor);
-    // Pass 2: the crossing nodes are numbered in CGAL's cell order, facet by facet, and placed. In
-    // parallel over contiguous ranges of CGAL ids: each worker first counts the nodes of its
+    // Pass 2: the crossing nodes are numbered in cell order, facet by facet, and placed. In
+    // parallel over contiguous ranges of cells: each worker first counts the nodes of its
     // range, so that it knows where its numbers start, then numbers and places them (each facet
     // is handled by the worker holding its lower-id cell). The numbers are those of one
     // sequential pass.
@@ -306,11 +305,11 @@ class SpatialExtractor {
       int next = first_node[w];
       for (std::size_t o = begin; o < end; ++o) {
         if (!todo[o]) continue;
-        const int c = by_orig_[o];
+        const int c = static_cast<int>(o);
         for (int f = 0; f < 4; ++f) {
           const int nk = cells_[c].neighbor[f];
           const EdgePattern& p = facet_[4 * c + f];
-          if (orig_[nk] < orig_[c] || p.empty || p.roots == 0) continue;
+          if (nk < c || p.empty || p.roots == 0) continue;
           const bool at_infinity = infinite(c) && infinite(nk);
           const int first = at_infinity ? kInfinityNode : next;
           facet_first_[4 * c + f] = first;
@@ -322,11 +321,11 @@ class SpatialExtractor {
     });
     for (std::size_t e : exact_nodes) stats_.exact_nodes += e;
     // Zero vertices get their nodes now, so the walks only read.
-    for (std::size_t o = 0; o < cells_.size(); ++o)
-      if (zero(by_orig_[o])) vertex_zero_node(by_orig_[o]);
+    for (std::size_t k = 0; k < cells_.size(); ++k)
+      if (zero(static_cast<int>(k))) vertex_zero_node(static_cast<int>(k));
     for (std::size_t k = 0; k < cells_.size(); ++k) {
       const int c = static_cast<int>(k);
-      if (zero(c) && !infinite(c)) zero_nodes_.push_back({c, vertex_node_[find(orig_[c])]});
+      if (zero(c) && !infinite(c)) zero_nodes_.push_back({c, vertex_node_[find(c)]});
     }
   }
 
@@ -335,7 +334,7 @@ class SpatialExtractor {
     const int first = facet_first_[4 * c + f];
     if (first == kInfinityNode) return kInfinityNode;
     const int nk = cells_[c].neighbor[f];
-    const int node = first + (orig_[c] < orig_[nk] ? r : facet_[4 * c + f].roots - 1 - r);
+    const int node = first + (c < nk ? r : facet_[4 * c + f].roots - 1 - r);
     return node_rep_.empty() ? node : node_rep_[node];
   }
 
@@ -452,9 +451,9 @@ class SpatialExtractor {
 
   int vertex_zero_node(int cell) {
     if (infinite(cell)) return kInfinityNode;
-    const int root = find(orig_[cell]);
+    const int root = find(cell);
     if (vertex_node_[root] != kNone) return vertex_node_[root];
-    auto v = cell_point<Exact>(by_orig_[root]);
+    auto v = cell_point<Exact>(root);
     const double w = CGAL::to_double(v->W);
     out_.nodes.push_back(Node{CGAL::to_double(v->X) / w, CGAL::to_double(v->Y) / w});
     return vertex_node_[root] = static_cast<int>(out_.nodes.size()) - 1;
@@ -476,7 +475,6 @@ class SpatialExtractor {
   // node in zero_nodes_ by now) nor the merge's data; released so that the walks' output can take
   // their place.
   void release_before_walks() {
-    LargeVector<int>().swap(by_orig_);
     LargeVector<std::array<int, 3>>().swap(node_facet_);
     LargeVector<AlongLine>().swap(node_root_);
     LargeVector<int>().swap(uf_);
@@ -484,14 +482,14 @@ class SpatialExtractor {
     release_large_buffers();
   }
 
-  // Each triangulation edge is walked once, from where the walk in CGAL's cell order started: its
-  // finite cell L of lowest CGAL id, around (vertex i0, vertex j0) of L, i0 < j0. Workers take
+  // Each triangulation edge is walked once, from where a walk in cell order would start: its
+  // finite cell L of lowest number, around (vertex i0, vertex j0) of L, i0 < j0. Workers take
   // contiguous ranges of cells; a worker meeting an edge not yet marked in its own marks circulates
   // it, marks it in every cell of the ring, and walks it only if L is in its range — so exactly one
   // worker walks each edge, without shared state. Each walk's arcs are tagged with the edge's place
-  // in CGAL's order, by which they are put back in that order.
+  // in that order, by which they are put back in that order.
   struct EdgeArcs {
-    std::int64_t key = 0;  // 6 × (L's CGAL id) + local_edge(i0, j0)
+    std::int64_t key = 0;  // 6 × L + local_edge(i0, j0)
     int worker = 0;
     std::size_t begin = 0, end = 0;  // in that worker's arcs
   };
@@ -537,7 +535,6 @@ class SpatialExtractor {
 
   void release_walk_input() {
     LargeVector<FlatCell>().swap(cells_);
-    LargeVector<int>().swap(orig_);
     LargeVector<RawPoint>().swap(points_);
     LargeVector<int>().swap(vertex_site_);
     LargeVector<std::uint8_t>().swap(flags_);
@@ -547,7 +544,7 @@ class SpatialExtractor {
     release_large_buffers();
   }
 
-  // Puts the workers' arcs into the diagram in the order of their edges' CGAL ids: each worker's
+  // Puts the workers' arcs into the diagram in the order of their edges' keys: each worker's
   // arcs are copied straight to their places, on all cores. The diagram's arcs are one fresh array
   // (~0.2 GB at 10^6 sites), advised as huge pages before it is first touched. Before, the arcs
   // were appended worker by worker and permuted in place by swaps, all on one core through
@@ -599,7 +596,7 @@ class SpatialExtractor {
 
   // The cells around the edge (vi, vj) of cell c0, in the order of CGAL's cell circulator
   // incident_cells(c0, index of vi, index of vj), each marked as done for this edge; returns the
-  // finite one of lowest CGAL id (c0 is finite), whose place in the ring is st.lowest_at.
+  // finite one of lowest number (c0 is finite), whose place in the ring is st.lowest_at.
   int circulate(WalkState& st, int c0, int vi, int vj) const {
     std::vector<int>& ring = st.ring;
     ring.clear();
@@ -607,7 +604,7 @@ class SpatialExtractor {
     st.lowest_at = 0;
     int c = c0;
     do {
-      if (!infinite(c) && orig_[c] < orig_[lowest]) {  // walks start finite
+      if (!infinite(c) && c < lowest) {  // walks start finite
         lowest = c;
         st.lowest_at = ring.size();
       }
@@ -619,8 +616,8 @@ class SpatialExtractor {
     return lowest;
   }
 
-  // Walks the edge (a, b) whose ring (circulated from cell `from` around (a, b)) has its lowest
-  // CGAL id finite cell c0 at st.lowest_at.
+  // Walks the edge (a, b) whose ring (circulated from cell `from` around (a, b)) has its
+  // lowest-numbered finite cell c0 at st.lowest_at.
   void walk_edge(WalkState& st, int w, int c0, int from, int a, int b) {
     int i0 = index_of_vertex(c0, a), j0 = index_of_vertex(c0, b);
     const bool turned = i0 > j0;  // the walk goes around (b, a): the other way round
@@ -636,7 +633,7 @@ class SpatialExtractor {
     const std::size_t first = st.arcs.size();
     walk_ring(st, vi, vj);
     if (st.arcs.size() > first)
-      st.edges.push_back({6 * static_cast<std::int64_t>(orig_[c0]) + local_edge(i0, j0), w, first, st.arcs.size()});
+      st.edges.push_back({6 * static_cast<std::int64_t>(c0) + local_edge(i0, j0), w, first, st.arcs.size()});
   }
 
   // The walk around the facet of (vi, vj) whose cells st.ring lists, from its first cell.

@@ -1,7 +1,10 @@
 #include "voronoi/engine/flat_triangulation.h"
 
 #include <algorithm>
+#include <array>
 #include <numeric>
+#include <utility>
+#include <vector>
 
 #include "core/parallel.h"
 #if defined(__GLIBC__)
@@ -51,15 +54,55 @@ FlatVertices flat_vertices(const std::vector<Site>& sites) {
   return v;
 }
 
+namespace {
+
+// A cell's vertices in canonical order: their ranks (kInfiniteVertex, below every rank, for the
+// infinite vertex) increasing, the last two swapped if that order is an odd permutation of CGAL's,
+// so that the cell stays positively oriented (CGAL's neighbour rules, e.g. next_around_edge, and
+// the extractor's orientation parity rely on it). `from[k]`: CGAL's index of the vertex stored
+// at k. Four distinct vertices, so the order is a function of the vertex set alone.
+struct CanonicalCell {
+  std::array<int, 4> vertex;
+  std::array<int, 4> from;
+};
+
+template <class CellHandle, class VertexHandle>
+CanonicalCell canonical_cell(const CellHandle& c, const VertexHandle& infinite, const LargeVector<int>& rank) {
+  CanonicalCell r;
+  for (int k = 0; k < 4; ++k) {
+    const VertexHandle v = c->vertex(k);
+    r.vertex[k] = v == infinite ? kInfiniteVertex : rank[site_of(v)];
+    r.from[k] = k;
+  }
+  bool odd = false;
+  for (int i = 1; i < 4; ++i)  // insertion sort, counting transpositions
+    for (int j = i; j > 0 && r.vertex[j - 1] > r.vertex[j]; --j) {
+      std::swap(r.vertex[j - 1], r.vertex[j]);
+      std::swap(r.from[j - 1], r.from[j]);
+      odd = !odd;
+    }
+  if (odd) {
+    std::swap(r.vertex[2], r.vertex[3]);
+    std::swap(r.from[2], r.from[3]);
+  }
+  return r;
+}
+
+// The rank a cell is bucketed by: its lowest finite vertex's.
+int bucket_of(const CanonicalCell& c) { return c.vertex[0] == kInfiniteVertex ? c.vertex[1] : c.vertex[0]; }
+
+}  // namespace
+
 template <class Triangulation>
 FlatTriangulation flatten_triangulation(const std::vector<Site>& sites, FlatVertices vertices, Triangulation& rt) {
   FlatTriangulation flat;
   const std::size_t n = rt.tds().number_of_cells();
+  const std::size_t buckets = sites.size();
   // Sized without touching a page: every entry is written below, on all cores.
   flat.cells.resize(n);
-  flat.orig.resize(n);
-  flat.by_orig.resize(n);
   flat.flags.resize(n);
+  LargeVector<int> cell_of(n);  // per CGAL id (container order), its canonical number
+  LargeVector<int> order(n);    // per canonical number, the CGAL id
   const LargeVector<int> rank = std::move(vertices.rank);
   flat.points = std::move(vertices.points);
   flat.vertex_site = std::move(vertices.vertex_site);
@@ -75,36 +118,40 @@ FlatTriangulation flatten_triangulation(const std::vector<Site>& sites, FlatVert
   }
   const int workers = worker_count(n);
   const auto infinite = rt.infinite_vertex();
-  // Cells by the rank of their first-ranked site: a counting sort, CGAL's order within a rank.
+  // Cells by the rank of their lowest finite vertex: a counting sort (container order within a
+  // rank, for now), then each rank's cells sorted by their canonical vertex arrays.
   parallel_chunks(n, workers, [&](std::size_t begin, std::size_t end, int) {
-    for (std::size_t o = begin; o < end; ++o) {
-      int lowest = static_cast<int>(sites.size());
-      for (int k = 0; k < 4; ++k)
-        if (handles[o]->vertex(k) != infinite) lowest = std::min(lowest, rank[site_of(handles[o]->vertex(k))]);
-      flat.by_orig[o] = lowest;
+    for (std::size_t o = begin; o < end; ++o) cell_of[o] = bucket_of(canonical_cell(handles[o], infinite, rank));
+  });
+  LargeVector<int> first(buckets + 1, 0);
+  for (std::size_t o = 0; o < n; ++o) ++first[cell_of[o] + 1];
+  std::partial_sum(first.begin(), first.end(), first.begin());
+  {
+    LargeVector<int> next(first.begin(), first.end() - 1);
+    for (std::size_t o = 0; o < n; ++o) order[next[cell_of[o]]++] = static_cast<int>(o);
+  }
+  // Each rank's cells (a few dozen at most) in canonical order, their vertices stored canonically
+  // and, until the neighbours are known, CGAL's index of each in the neighbour slot.
+  parallel_chunks(buckets, worker_count(buckets), [&](std::size_t begin, std::size_t end, int) {
+    std::vector<std::pair<CanonicalCell, int>> bucket;
+    for (std::size_t b = begin; b < end; ++b) {
+      bucket.clear();
+      for (int k = first[b]; k < first[b + 1]; ++k) bucket.emplace_back(canonical_cell(handles[order[k]], infinite, rank), order[k]);
+      std::sort(bucket.begin(), bucket.end(), [](const auto& x, const auto& y) { return x.first.vertex < y.first.vertex; });
+      for (int k = first[b]; k < first[b + 1]; ++k) {
+        const auto& [c, o] = bucket[k - first[b]];
+        order[k] = o;
+        cell_of[o] = k;
+        flat.cells[k] = FlatCell{c.vertex, c.from};
+        flat.flags[k] = c.vertex[0] == kInfiniteVertex ? kInfiniteCell : 0;
+      }
     }
   });
-  LargeVector<int> first(sites.size() + 1, 0);
-  for (std::size_t o = 0; o < n; ++o) ++first[flat.by_orig[o] + 1];
-  std::partial_sum(first.begin(), first.end(), first.begin());
-  for (std::size_t o = 0; o < n; ++o) {
-    const int cell = first[flat.by_orig[o]]++;
-    flat.by_orig[o] = cell;
-    flat.orig[cell] = static_cast<int>(o);
-  }
   parallel_chunks(n, workers, [&](std::size_t begin, std::size_t end, int) {
-    for (std::size_t o = begin; o < end; ++o) {
-      const CellHandle c = handles[o];
-      const int cell = flat.by_orig[o];
+    for (std::size_t cell = begin; cell < end; ++cell) {
+      const CellHandle c = handles[order[cell]];
       FlatCell& f = flat.cells[cell];
-      bool at_infinity = false;
-      for (int k = 0; k < 4; ++k) {
-        const typename Triangulation::Vertex_handle v = c->vertex(k);
-        at_infinity |= v == infinite;
-        f.vertex[k] = v == infinite ? kInfiniteVertex : rank[site_of(v)];
-        f.neighbor[k] = flat.by_orig[c->neighbor(k)->info()];
-      }
-      flat.flags[cell] = at_infinity ? kInfiniteCell : 0;
+      for (int k = 0; k < 4; ++k) f.neighbor[k] = cell_of[c->neighbor(f.neighbor[k])->info()];
     }
   });
   LargeVector<CellHandle>().swap(handles);
