@@ -482,26 +482,22 @@ class SpatialExtractor {
     release_large_buffers();
   }
 
-  // Each triangulation edge is walked once, from where a walk in cell order would start: its
-  // finite cell L of lowest number, around (vertex i0, vertex j0) of L, i0 < j0. Workers take
-  // contiguous ranges of cells; a worker meeting an edge not yet marked in its own marks circulates
-  // it, marks it in every cell of the ring, and walks it only if L is in its range — so exactly one
-  // worker walks each edge, without shared state. Each walk's arcs are tagged with the edge's place
-  // in that order, by which they are put back in that order.
-  struct EdgeArcs {
-    std::int64_t key = 0;  // 6 × L + local_edge(i0, j0)
-    int worker = 0;
-    std::size_t begin = 0, end = 0;  // in that worker's arcs
-  };
+  // Each triangulation edge is walked once, from its finite cell L of lowest number, around
+  // (vertex i, vertex j) of L, i < j. Workers take contiguous ranges of cells and scan them in
+  // increasing order; a worker meeting an edge not yet marked in its own marks circulates it and
+  // marks it in every cell of the ring. The cell where a worker first meets an edge is L exactly
+  // when L lies in its range (a finite cell of the ring earlier in the range would have marked the
+  // edge), and only then does it walk the edge, there and then: exactly one worker walks each edge,
+  // without shared state. Each worker's walks come in increasing order of (L, local_edge(i, j)),
+  // and the workers' ranges follow each other, so the arcs are in their order (the edges' in cell
+  // order) when the workers' lists are put end to end.
   struct WalkState {
     LargeVector<std::uint8_t> done;  // per cell, bit local_edge(i, j)
     std::vector<int> ring;
-    std::size_t lowest_at = 0;  // where circulate() found the ring's lowest-id finite cell
     std::vector<Token> tokens;
     WalkScratch scratch;
     LargeVector<Arc> arcs;  // large buffers: they reuse the blocks released by earlier stages
     LargeVector<ArcMend> mends;  // one per arc
-    LargeVector<EdgeArcs> edges;  // the walks that emitted arcs
     std::vector<RawPoint> link;
   };
 
@@ -512,16 +508,14 @@ class SpatialExtractor {
       st.done.assign(cells_.size(), 0);
       st.arcs.reserve(3 * sites_.size() / workers_ + 16);
       st.mends.reserve(3 * sites_.size() / workers_ + 16);
-      st.edges.reserve(3 * sites_.size() / workers_ + 16);
       for (std::size_t k = begin; k < end; ++k) {
         const int c = static_cast<int>(k);
         if (infinite(c)) continue;
         for (int i = 0; i < 4; ++i)
           for (int j = i + 1; j < 4; ++j) {
             if (st.done[k] & (1u << local_edge(i, j))) continue;
-            const int lowest = circulate(st, c, cells_[c].vertex[i], cells_[c].vertex[j]);
-            if (lowest >= static_cast<int>(begin) && lowest < static_cast<int>(end))
-              walk_edge(st, w, lowest, c, cells_[c].vertex[i], cells_[c].vertex[j]);
+            const int vi = cells_[c].vertex[i], vj = cells_[c].vertex[j];
+            if (circulate(st, c, vi, vj) == c) walk_ring(st, vi, vj);
           }
       }
     });
@@ -544,49 +538,30 @@ class SpatialExtractor {
     release_large_buffers();
   }
 
-  // Puts the workers' arcs into the diagram in the order of their edges' keys: each worker's
-  // arcs are copied straight to their places, on all cores. The diagram's arcs are one fresh array
-  // (~0.2 GB at 10^6 sites), advised as huge pages before it is first touched. Before, the arcs
-  // were appended worker by worker and permuted in place by swaps, all on one core through
-  // 4 KiB page faults: 1.5 s of a 30 s build of 10^6 sites.
+  // Puts the workers' arcs into the diagram, worker after worker (walk_all_edges: that is their
+  // order): each worker's arcs copied on all cores into one fresh array (~0.2 GB at 10^6 sites),
+  // advised as huge pages before it is first touched, and its buffers returned to the system at
+  // once, so the arcs are held at most once plus one worker's share. Before, the arcs were
+  // appended worker by worker and permuted in place by swaps, all on one core through 4 KiB page
+  // faults: 1.5 s of a 30 s build of 10^6 sites.
   void gather_arcs(std::vector<WalkState>& states) {
     const std::size_t start = out_.arcs.size();
-    std::size_t total = start, edge_count = 0;
+    std::size_t total = start;
     std::vector<std::size_t> base(states.size());
     for (std::size_t w = 0; w < states.size(); ++w) {
       base[w] = total;
       total += states[w].arcs.size();
-      edge_count += states[w].edges.size();
     }
-    // Where each arc goes: edges in key order, each edge's arcs in walk order.
-    LargeVector<EdgeArcs> edges;
-    edges.reserve(edge_count);
-    for (WalkState& st : states) {
-      edges.insert(edges.end(), st.edges.begin(), st.edges.end());
-      LargeVector<EdgeArcs>().swap(st.edges);
-    }
-    // Keys are distinct (one per edge), so the two-thread sort gives std::sort's order.
-    parallel_sort(edges.begin(), edges.end(), [](const EdgeArcs& a, const EdgeArcs& b) { return a.key < b.key; });
-    LargeVector<std::uint32_t> dest(total - start);
-    std::uint32_t next = 0;
-    for (const EdgeArcs& e : edges)
-      for (std::size_t k = e.begin; k < e.end; ++k) dest[base[e.worker] + k - start] = static_cast<std::uint32_t>(start) + next++;
-    LargeVector<EdgeArcs>().swap(edges);
-    release_large_buffers();
     out_.arcs.reserve(total);
     advise_huge_pages(out_.arcs.data() + start, (total - start) * sizeof(Arc));
     out_.arcs.resize(total);
     mends_.assign(total, ArcMend::kNone);
-    // Worker after worker (each on all cores), each worker's buffers returned to the system at once:
-    // the arcs are held at most once plus one worker's share.
     for (std::size_t w = 0; w < states.size(); ++w) {
       WalkState& st = states[w];
-      const std::uint32_t* to = dest.data() + (base[w] - start);
+      const std::size_t to = base[w];
       parallel_chunks(st.arcs.size(), worker_count(st.arcs.size()), [&](std::size_t begin, std::size_t end, int) {
-        for (std::size_t k = begin; k < end; ++k) {
-          out_.arcs[to[k]] = st.arcs[k];
-          mends_[to[k]] = st.mends[k];
-        }
+        std::copy(st.arcs.begin() + begin, st.arcs.begin() + end, out_.arcs.begin() + to + begin);
+        std::copy(st.mends.begin() + begin, st.mends.begin() + end, mends_.begin() + to + begin);
       });
       LargeVector<Arc>().swap(st.arcs);
       LargeVector<ArcMend>().swap(st.mends);
@@ -596,44 +571,20 @@ class SpatialExtractor {
 
   // The cells around the edge (vi, vj) of cell c0, in the order of CGAL's cell circulator
   // incident_cells(c0, index of vi, index of vj), each marked as done for this edge; returns the
-  // finite one of lowest number (c0 is finite), whose place in the ring is st.lowest_at.
+  // finite one of lowest number (c0 is finite).
   int circulate(WalkState& st, int c0, int vi, int vj) const {
     std::vector<int>& ring = st.ring;
     ring.clear();
     int lowest = c0;
-    st.lowest_at = 0;
     int c = c0;
     do {
-      if (!infinite(c) && c < lowest) {  // walks start finite
-        lowest = c;
-        st.lowest_at = ring.size();
-      }
+      if (!infinite(c) && c < lowest) lowest = c;  // walks start finite
       ring.push_back(c);
       const int ii = index_of_vertex(c, vi), ij = index_of_vertex(c, vj);
       st.done[c] |= static_cast<std::uint8_t>(1u << local_edge(ii, ij));
       c = cells_[c].neighbor[CGAL::Triangulation_utils_3::next_around_edge(ii, ij)];
     } while (c != c0);
     return lowest;
-  }
-
-  // Walks the edge (a, b) whose ring (circulated from cell `from` around (a, b)) has its
-  // lowest-numbered finite cell c0 at st.lowest_at.
-  void walk_edge(WalkState& st, int w, int c0, int from, int a, int b) {
-    int i0 = index_of_vertex(c0, a), j0 = index_of_vertex(c0, b);
-    const bool turned = i0 > j0;  // the walk goes around (b, a): the other way round
-    if (turned) std::swap(i0, j0);
-    const int vi = cells_[c0].vertex[i0], vj = cells_[c0].vertex[j0];
-    if (c0 != from) {
-      // The ring circulated from c0 around (vi, vj) is the same cycle of cells, started at c0 and
-      // turned the other way if (vi, vj) is (b, a): no second circulation.
-      std::vector<int>& ring = st.ring;
-      std::rotate(ring.begin(), ring.begin() + static_cast<std::ptrdiff_t>(st.lowest_at), ring.end());
-      if (turned) std::reverse(ring.begin() + 1, ring.end());
-    }
-    const std::size_t first = st.arcs.size();
-    walk_ring(st, vi, vj);
-    if (st.arcs.size() > first)
-      st.edges.push_back({6 * static_cast<std::int64_t>(c0) + local_edge(i0, j0), w, first, st.arcs.size()});
   }
 
   // The walk around the facet of (vi, vj) whose cells st.ring lists, from its first cell.
