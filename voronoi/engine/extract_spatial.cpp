@@ -629,7 +629,7 @@ class SpatialExtractor {
       return st.link;
     };
     const std::size_t first = st.arcs.size();
-    emit_arcs(tokens, st.scratch, vertex_site_[vi], vertex_site_[vj], sites_, st.arcs, [&] {
+    emit_arcs(tokens, st.scratch, vertex_site_[vi], vertex_site_[vj], raw(vi), raw(vj), st.arcs, [&] {
       if (raw(vi).z() == raw(vj).z()) return false;  // U would show
       return circle_centre_in_facet(raw(vi), raw(vj), link());
     });
