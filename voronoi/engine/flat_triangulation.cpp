@@ -89,7 +89,9 @@ CanonicalCell canonical_cell(const CellHandle& c, const VertexHandle& infinite, 
 }
 
 // The rank a cell is bucketed by: its lowest finite vertex's.
-int bucket_of(const CanonicalCell& c) { return c.vertex[0] == kInfiniteVertex ? c.vertex[1] : c.vertex[0]; }
+int bucket_of(const FlatCell& c) {
+  return c.vertex[0] == kInfiniteVertex ? c.vertex[1] : c.vertex[0];
+}
 
 }  // namespace
 
@@ -98,17 +100,11 @@ FlatTriangulation flatten_triangulation(const std::vector<Site>& sites, FlatVert
   FlatTriangulation flat;
   const std::size_t n = rt.tds().number_of_cells();
   const std::size_t buckets = sites.size();
-  // Sized without touching a page: every entry is written below, on all cores.
-  flat.cells.resize(n);
-  flat.flags.resize(n);
-  LargeVector<int> cell_of(n);  // per CGAL id (container order), its canonical number
-  LargeVector<int> order(n);    // per canonical number, the CGAL id
   const LargeVector<int> rank = std::move(vertices.rank);
   flat.points = std::move(vertices.points);
   flat.vertex_site = std::move(vertices.vertex_site);
   // The one sequential pass over CGAL's container: each cell's id (its place in the container's
-  // order) and handle. The passes after it read the cells through the handles, on all cores, each
-  // cell's entries written by one worker.
+  // order) and handle.
   using CellHandle = typename Triangulation::Cell_handle;
   LargeVector<CellHandle> handles(n);
   int id = 0;
@@ -116,50 +112,62 @@ FlatTriangulation flatten_triangulation(const std::vector<Site>& sites, FlatVert
     c->info() = id;
     handles[id] = c;
   }
-  const int workers = worker_count(n);
-  const auto infinite = rt.infinite_vertex();
-  // Cells by the rank of their lowest finite vertex: a counting sort (container order within a
-  // rank, for now), then each rank's cells sorted by their canonical vertex arrays.
-  parallel_chunks(n, workers, [&](std::size_t begin, std::size_t end, int) {
-    for (std::size_t o = begin; o < end; ++o) cell_of[o] = bucket_of(canonical_cell(handles[o], infinite, rank));
-  });
-  LargeVector<int> first(buckets + 1, 0);
-  for (std::size_t o = 0; o < n; ++o) ++first[cell_of[o] + 1];
-  std::partial_sum(first.begin(), first.end(), first.begin());
+  // Every cell read once more, in container order on all cores: its canonical vertices and, in
+  // the same order, its neighbours' ids. Then CGAL's structure is released, and the passes that
+  // number the cells read only this copy: they visit cells in another order, and reading CGAL's
+  // scattered cells and vertices there again (at 10^6 sites ~0.5 GB of them) waited on memory.
+  LargeVector<FlatCell> by_id(n);  // per id: vertices canonical, neighbours by id
   {
-    LargeVector<int> next(first.begin(), first.end() - 1);
-    for (std::size_t o = 0; o < n; ++o) order[next[cell_of[o]]++] = static_cast<int>(o);
-  }
-  // Each rank's cells (a few dozen at most) in canonical order, their vertices stored canonically
-  // and, until the neighbours are known, CGAL's index of each in the neighbour slot.
-  parallel_chunks(buckets, worker_count(buckets), [&](std::size_t begin, std::size_t end, int) {
-    std::vector<std::pair<CanonicalCell, int>> bucket;
-    for (std::size_t b = begin; b < end; ++b) {
-      bucket.clear();
-      for (int k = first[b]; k < first[b + 1]; ++k) bucket.emplace_back(canonical_cell(handles[order[k]], infinite, rank), order[k]);
-      std::sort(bucket.begin(), bucket.end(), [](const auto& x, const auto& y) { return x.first.vertex < y.first.vertex; });
-      for (int k = first[b]; k < first[b + 1]; ++k) {
-        const auto& [c, o] = bucket[k - first[b]];
-        order[k] = o;
-        cell_of[o] = k;
-        flat.cells[k] = FlatCell{c.vertex, c.from};
-        flat.flags[k] = c.vertex[0] == kInfiniteVertex ? kInfiniteCell : 0;
+    const auto infinite = rt.infinite_vertex();
+    parallel_chunks(n, worker_count(n), [&](std::size_t begin, std::size_t end, int) {
+      for (std::size_t o = begin; o < end; ++o) {
+        const CanonicalCell c = canonical_cell(handles[o], infinite, rank);
+        FlatCell& f = by_id[o];
+        f.vertex = c.vertex;
+        for (int k = 0; k < 4; ++k) f.neighbor[k] = handles[o]->neighbor(c.from[k])->info();
       }
-    }
-  });
-  parallel_chunks(n, workers, [&](std::size_t begin, std::size_t end, int) {
-    for (std::size_t cell = begin; cell < end; ++cell) {
-      const CellHandle c = handles[order[cell]];
-      FlatCell& f = flat.cells[cell];
-      for (int k = 0; k < 4; ++k) f.neighbor[k] = cell_of[c->neighbor(f.neighbor[k])->info()];
-    }
-  });
+    });
+  }
   LargeVector<CellHandle>().swap(handles);
   rt.clear();
   // The triangulation's blocks are unmapped as it is cleared (engine/cell_arena.h); what it
   // allocated besides (CGAL's copy of the points, the spatial sort's buffers) may stay in glibc's
   // heaps, resident behind the arrays allocated since: returned to the system.
   trim_heap();
+  // Cells by the rank of their lowest finite vertex (a counting sort), then each rank's cells (a
+  // few dozen at most) by their canonical vertex arrays.
+  LargeVector<int> order(n);  // per canonical number, the id
+  LargeVector<int> first(buckets + 1, 0);
+  for (std::size_t o = 0; o < n; ++o) ++first[bucket_of(by_id[o]) + 1];
+  std::partial_sum(first.begin(), first.end(), first.begin());
+  {
+    LargeVector<int> next(first.begin(), first.end() - 1);
+    for (std::size_t o = 0; o < n; ++o) order[next[bucket_of(by_id[o])]++] = static_cast<int>(o);
+  }
+  LargeVector<int> number(n);  // per id, the canonical number
+  parallel_chunks(buckets, worker_count(buckets), [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t b = begin; b < end; ++b) {
+      std::sort(order.begin() + first[b], order.begin() + first[b + 1],
+                [&](int x, int y) { return by_id[x].vertex < by_id[y].vertex; });
+      for (int k = first[b]; k < first[b + 1]; ++k) number[order[k]] = k;
+    }
+  });
+  // Sized without touching a page: every entry is written here, on all cores.
+  flat.cells.resize(n);
+  flat.flags.resize(n);
+  parallel_chunks(n, worker_count(n), [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t k = begin; k < end; ++k) {
+      const FlatCell& c = by_id[order[k]];
+      FlatCell& f = flat.cells[k];
+      f.vertex = c.vertex;
+      for (int m = 0; m < 4; ++m) f.neighbor[m] = number[c.neighbor[m]];
+      flat.flags[k] = c.vertex[0] == kInfiniteVertex ? kInfiniteCell : 0;
+    }
+  });
+  // The copy by id goes back to the system, not to core/large_buffer.h's cache, where it would
+  // stay resident under the extractor's smaller arrays (+46 MiB of peak at 10^6 sites).
+  LargeVector<FlatCell>().swap(by_id);
+  release_large_buffers();
   return flat;
 }
 
