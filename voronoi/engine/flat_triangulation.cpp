@@ -93,18 +93,14 @@ int bucket_of(const FlatCell& c) {
   return c.vertex[0] == kInfiniteVertex ? c.vertex[1] : c.vertex[0];
 }
 
-}  // namespace
-
+// Per cell, by its id (its place in CGAL's container order), its canonical vertices and its
+// neighbours' ids; `rt` is cleared afterwards. The one sequential pass numbers the cells (info());
+// then each cell is read once, in container order on all cores. The passes that number the cells
+// canonically read only this copy: they visit cells in another order, and reading CGAL's scattered
+// cells and vertices there (at 10^6 sites ~0.5 GB of them) waited on memory.
 template <class Triangulation>
-FlatTriangulation flatten_triangulation(const std::vector<Site>& sites, FlatVertices vertices, Triangulation& rt) {
-  FlatTriangulation flat;
+LargeVector<FlatCell> cells_by_id(Triangulation& rt, const LargeVector<int>& rank) {
   const std::size_t n = rt.tds().number_of_cells();
-  const std::size_t buckets = sites.size();
-  const LargeVector<int> rank = std::move(vertices.rank);
-  flat.points = std::move(vertices.points);
-  flat.vertex_site = std::move(vertices.vertex_site);
-  // The one sequential pass over CGAL's container: each cell's id (its place in the container's
-  // order) and handle.
   using CellHandle = typename Triangulation::Cell_handle;
   LargeVector<CellHandle> handles(n);
   int id = 0;
@@ -112,61 +108,82 @@ FlatTriangulation flatten_triangulation(const std::vector<Site>& sites, FlatVert
     c->info() = id;
     handles[id] = c;
   }
-  // Every cell read once more, in container order on all cores: its canonical vertices and, in
-  // the same order, its neighbours' ids. Then CGAL's structure is released, and the passes that
-  // number the cells read only this copy: they visit cells in another order, and reading CGAL's
-  // scattered cells and vertices there again (at 10^6 sites ~0.5 GB of them) waited on memory.
-  LargeVector<FlatCell> by_id(n);  // per id: vertices canonical, neighbours by id
-  {
-    const auto infinite = rt.infinite_vertex();
-    parallel_chunks(n, worker_count(n), [&](std::size_t begin, std::size_t end, int) {
-      for (std::size_t o = begin; o < end; ++o) {
-        const CanonicalCell c = canonical_cell(handles[o], infinite, rank);
-        FlatCell& f = by_id[o];
-        f.vertex = c.vertex;
-        for (int k = 0; k < 4; ++k) f.neighbor[k] = handles[o]->neighbor(c.from[k])->info();
-      }
-    });
-  }
+  LargeVector<FlatCell> by_id(n);  // sized without touching a page: every entry is written below
+  const auto infinite = rt.infinite_vertex();
+  parallel_chunks(n, worker_count(n), [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t o = begin; o < end; ++o) {
+      const CanonicalCell c = canonical_cell(handles[o], infinite, rank);
+      FlatCell& f = by_id[o];
+      f.vertex = c.vertex;
+      for (int k = 0; k < 4; ++k) f.neighbor[k] = handles[o]->neighbor(c.from[k])->info();
+    }
+  });
   LargeVector<CellHandle>().swap(handles);
   rt.clear();
   // The triangulation's blocks are unmapped as it is cleared (engine/cell_arena.h); what it
   // allocated besides (CGAL's copy of the points, the spatial sort's buffers) may stay in glibc's
   // heaps, resident behind the arrays allocated since: returned to the system.
   trim_heap();
-  // Cells by the rank of their lowest finite vertex (a counting sort), then each rank's cells (a
-  // few dozen at most) by their canonical vertex arrays.
-  LargeVector<int> order(n);  // per canonical number, the id
-  LargeVector<int> first(buckets + 1, 0);
+  return by_id;
+}
+
+// The canonical numbering of the cells `by_id` (vertex ranks below `ranks`): by the rank of their
+// lowest finite vertex (a counting sort), then each rank's cells (a few dozen at most) by their
+// canonical vertex arrays.
+struct Numbering {
+  LargeVector<int> order;   // per canonical number, the id
+  LargeVector<int> number;  // per id, the canonical number
+};
+Numbering canonical_numbering(const LargeVector<FlatCell>& by_id, std::size_t ranks) {
+  const std::size_t n = by_id.size();
+  Numbering r;
+  r.order.resize(n);
+  r.number.resize(n);
+  LargeVector<int> first(ranks + 1, 0);
   for (std::size_t o = 0; o < n; ++o) ++first[bucket_of(by_id[o]) + 1];
   std::partial_sum(first.begin(), first.end(), first.begin());
   {
     LargeVector<int> next(first.begin(), first.end() - 1);
-    for (std::size_t o = 0; o < n; ++o) order[next[bucket_of(by_id[o])]++] = static_cast<int>(o);
+    for (std::size_t o = 0; o < n; ++o) r.order[next[bucket_of(by_id[o])]++] = static_cast<int>(o);
   }
-  LargeVector<int> number(n);  // per id, the canonical number
-  parallel_chunks(buckets, worker_count(buckets), [&](std::size_t begin, std::size_t end, int) {
+  parallel_chunks(ranks, worker_count(ranks), [&](std::size_t begin, std::size_t end, int) {
     for (std::size_t b = begin; b < end; ++b) {
-      std::sort(order.begin() + first[b], order.begin() + first[b + 1],
+      std::sort(r.order.begin() + first[b], r.order.begin() + first[b + 1],
                 [&](int x, int y) { return by_id[x].vertex < by_id[y].vertex; });
-      for (int k = first[b]; k < first[b + 1]; ++k) number[order[k]] = k;
+      for (int k = first[b]; k < first[b + 1]; ++k) r.number[r.order[k]] = k;
     }
   });
-  // Sized without touching a page: every entry is written here, on all cores.
-  flat.cells.resize(n);
-  flat.flags.resize(n);
-  parallel_chunks(n, worker_count(n), [&](std::size_t begin, std::size_t end, int) {
-    for (std::size_t k = begin; k < end; ++k) {
-      const FlatCell& c = by_id[order[k]];
-      FlatCell& f = flat.cells[k];
-      f.vertex = c.vertex;
-      for (int m = 0; m < 4; ++m) f.neighbor[m] = number[c.neighbor[m]];
-      flat.flags[k] = c.vertex[0] == kInfiniteVertex ? kInfiniteCell : 0;
-    }
-  });
-  // The copy by id goes back to the system, not to core/large_buffer.h's cache, where it would
-  // stay resident under the extractor's smaller arrays (+46 MiB of peak at 10^6 sites).
-  LargeVector<FlatCell>().swap(by_id);
+  return r;
+}
+
+}  // namespace
+
+template <class Triangulation>
+FlatTriangulation flatten_triangulation(const std::vector<Site>& sites, FlatVertices vertices, Triangulation& rt) {
+  FlatTriangulation flat;
+  flat.points = std::move(vertices.points);
+  flat.vertex_site = std::move(vertices.vertex_site);
+  {
+    LargeVector<FlatCell> by_id = cells_by_id(rt, vertices.rank);
+    LargeVector<int>().swap(vertices.rank);
+    const Numbering numbering = canonical_numbering(by_id, sites.size());
+    const std::size_t n = by_id.size();
+    // Sized without touching a page: every entry is written here, on all cores.
+    flat.cells.resize(n);
+    flat.flags.resize(n);
+    parallel_chunks(n, worker_count(n), [&](std::size_t begin, std::size_t end, int) {
+      for (std::size_t k = begin; k < end; ++k) {
+        const FlatCell& c = by_id[numbering.order[k]];
+        FlatCell& f = flat.cells[k];
+        f.vertex = c.vertex;
+        for (int m = 0; m < 4; ++m) f.neighbor[m] = numbering.number[c.neighbor[m]];
+        flat.flags[k] = c.vertex[0] == kInfiniteVertex ? kInfiniteCell : 0;
+      }
+    });
+  }
+  // The copy by id and the numbering go back to the system, not to core/large_buffer.h's cache,
+  // where they would stay resident under the extractor's smaller arrays (the copy alone: +46 MiB
+  // of peak at 10^6 sites).
   release_large_buffers();
   return flat;
 }
