@@ -338,7 +338,7 @@ Diagram engine::build_diagram_in_order(std::span<const Site> input, InsertionOrd
     try {
       rt_storage.emplace();
       // The spatial extractor's output does not depend on the insertion order; the planar one's
-      // follows CGAL's container order, which it does.
+      // follows CGAL's container order, so coplanar lifted sites keep the (x, y, w) order.
       insert_spatially_sorted(*rt_storage, points, spatial ? order : InsertionOrder::kSpatial3);
     } catch (...) {
       if (beside) helper.check();
