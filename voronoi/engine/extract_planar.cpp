@@ -226,7 +226,7 @@ class PlanarExtractor {
       push_half(tokens, n, 0, true);
     }
     if (!forward) std::reverse(tokens.begin(), tokens.end());
-    emit_arcs(tokens, scratch_, site_of(vi), site_of(vj), sites_, out_.arcs, [&] {
+    emit_arcs(tokens, scratch_, site_of(vi), site_of(vj), vi->point().point(), vj->point().point(), out_.arcs, [&] {
       if (vi->point().point().z() == vj->point().point().z()) return false;
       std::vector<RawPoint> link;
       for (Face f : {c, n})

@@ -13,13 +13,16 @@
 // Vertices are numbered by their sites' Morton (Z-order) rank, with their points stored in that
 // order, and cells are stored by the rank of their first vertex, so that neighbours and their
 // points are near in memory; CGAL's order scatters cells (at 10^5 sites 70 % of neighbours lay
-// more than 2048 cells apart) and the walks waited on memory. Nothing is decided differently, and
-// nothing comes out in another order: the arrays hold the same cells, vertices and neighbours; each
-// cell keeps its CGAL id (orig_), which decides as before which cell of a facet computes its pattern,
-// how nodes are numbered, and where each edge's walk starts (its lowest-id finite cell, at the edge's
-// vertex indices there); the walks turn around each edge as CGAL's cell circulator does
-// (Triangulation_utils_3::next_around_edge); every point is rebuilt from the same doubles; and the
-// arcs are put back in the order of the edges' CGAL ids.
+// more than 2048 cells apart) and the walks waited on memory. The cells' numbers and their vertex
+// order are canonical (flat_triangulation.h): a function of the complex, not of the order CGAL
+// inserted the sites in. They decide everything here that orders the output or a construction:
+// which cell of a facet computes its pattern (the lower-numbered), how nodes are numbered (in cell
+// order), the order of a node's three sites (the cell's), where each edge's walk starts (its
+// lowest-numbered finite cell, at the edge's vertex indices there, which also say which site of
+// its arcs is the left one), and the order of the arcs (the edges' starting cells). The walks
+// turn around each edge as CGAL's cell circulator does (Triangulation_utils_3::next_around_edge:
+// the flat cells keep CGAL's orientation). So the diagram does not depend on the insertion order
+// (tests/voronoi/engine_insertion_order_test.cpp).
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -83,9 +86,7 @@ class SpatialExtractor {
   Diagram& out_;
   BuildStats& stats_;
 
-  LargeVector<FlatCell> cells_;  // in spatial order (see the top of the file)
-  LargeVector<int> orig_;        // per cell, its id in CGAL's order
-  LargeVector<int> by_orig_;     // per CGAL id, the cell
+  LargeVector<FlatCell> cells_;  // in canonical order (see the top of the file)
   LargeVector<RawPoint> points_;  // per vertex id, its site's (x, y, w)
   LargeVector<int> vertex_site_;  // per vertex id, its site
   LargeVector<CellData> data_;
@@ -95,7 +96,7 @@ class SpatialExtractor {
   // (kInfinityNode at infinity): the facet's nodes have consecutive ids (facet_node()).
   LargeVector<int> facet_first_;
   LargeVector<int> node_rep_;       // per root node, the node it was merged into; empty if none was
-  LargeVector<int> uf_;             // union-find on CGAL ids: cells sharing one power vertex on the paraboloid
+  LargeVector<int> uf_;             // union-find on cells sharing one power vertex on the paraboloid
   LargeVector<int> vertex_node_;    // node id of a zero vertex, by union-find root
   std::vector<std::pair<int, int>> zero_nodes_;  // (cell, node) of the finite zero-vertex cells, by cell
   // Large buffers, sized without being written: every entry is written as its node is placed, on
@@ -159,8 +160,6 @@ class SpatialExtractor {
   void copy_triangulation() {
     FlatTriangulation flat = std::move(flat_);
     cells_ = std::move(flat.cells);
-    orig_ = std::move(flat.orig);
-    by_orig_ = std::move(flat.by_orig);
     points_ = std::move(flat.points);
     vertex_site_ = std::move(flat.vertex_site);
     flags_ = std::move(flat.flags);
@@ -178,7 +177,7 @@ class SpatialExtractor {
     std::vector<std::size_t> fallbacks(workers_, 0);
     parallel_chunks(cells_.size(), workers_, [&](std::size_t begin, std::size_t end, int w) {
       for (std::size_t k = begin; k < end; ++k) {
-        uf_[k] = static_cast<int>(k);  // by CGAL id; the same range of ids
+        uf_[k] = static_cast<int>(k);
         vertex_node_[k] = kNone;
         CellData& d = data_[k];
         const int c = static_cast<int>(k);
@@ -220,18 +219,18 @@ class SpatialExtractor {
 
   void compute_facets() {
     facet_.resize(4 * cells_.size());  // no page touched: pass 1 writes every entry
-    // Per CGAL id, what pass 2 has to do for the cell: the nodes it numbers (bits 0-6) and whether
+    // Per cell, what pass 2 has to do for the cell: the nodes it numbers (bits 0-6) and whether
     // any of its facet entries gets a first node at all (kWritesFacets: also those at infinity,
     // which number none). Written in pass 1 by the worker computing the cell's patterns, so that
     // pass 2 counts from one byte per cell and skips the cells with nothing to do, instead of
-    // reading four facet entries and their neighbours' ids through a cell in another order.
+    // reading four facet entries and their neighbours' ids.
     constexpr std::uint8_t kWritesFacets = 0x80;
     LargeVector<std::uint8_t> todo(cells_.size());
     // Pass 1, in parallel: the crossing pattern of every facet, from its lower-id cell (each facet
     // entry pair is written by exactly one worker). Unions of cells sharing a vertex are rare and
     // applied afterwards.
     struct Union {
-      int cell, facet, neighbor;  // CGAL ids
+      int cell, facet, neighbor;
     };
     std::vector<std::vector<Union>> unions(workers_);
     std::vector<std::size_t> fallbacks(workers_, 0);
@@ -241,7 +240,7 @@ class SpatialExtractor {
         std::uint8_t cell_todo = 0;
         for (int f = 0; f < 4; ++f) {
           const int nk = cells_[k].neighbor[f];
-          if (orig_[nk] < orig_[c]) continue;
+          if (nk < c) continue;
           std::optional<EdgePattern> p = facet_pattern<Approx>(c, nk);
           if (!p) {
             CGAL::Protect_FPU_rounding<true> guard;
@@ -258,14 +257,14 @@ class SpatialExtractor {
           bwd = *p;
           std::reverse(bwd.sign, bwd.sign + p->roots + 1);
           if (p->empty && zero(c) && zero(nk))
-            unions[w].push_back({orig_[c], f, orig_[nk]});
+            unions[w].push_back({c, f, nk});
           if (!p->empty && p->roots > 0) {
             cell_todo |= kWritesFacets;
             // On an edge at infinity (between two directions) the only possible zero is U: no node.
             if (!(infinite(c) && infinite(nk))) cell_todo += static_cast<std::uint8_t>(p->roots);
           }
         }
-        todo[orig_[c]] = cell_todo;
+        todo[k] = cell_todo;
       }
     });
     for (std::size_t f : fallbacks) stats_.exact_fallbacks += f;
@@ -278,15 +277,15 @@ class SpatialExtractor {
     parallel_chunks(cells_.size(), workers_, [&](std::size_t begin, std::size_t end, int) {
       std::fill(facet_first_.begin() + 4 * begin, facet_first_.begin() + 4 * end, kNone);
     });
-    // Applied in CGAL's cell order, so that each class has the root it had there: its vertex is
-    // rounded from that cell's homogeneous coordinates.
+    // Applied in cell order, so that each class has the same root whichever worker found its
+    // unions: its vertex is rounded from that cell's homogeneous coordinates.
     std::vector<Union> all;
     for (const auto& list : unions) all.insert(all.end(), list.begin(), list.end());
     std::sort(all.begin(), all.end(),
               [](const Union& a, const Union& b) { return a.cell != b.cell ? a.cell < b.cell : a.facet < b.facet; });
     for (const Union& u : all) uf_[find(u.cell)] = find(u.neighbor);
-    // Pass 2: the crossing nodes are numbered in CGAL's cell order, facet by facet, and placed. In
-    // parallel over contiguous ranges of CGAL ids: each worker first counts the nodes of its
+    // Pass 2: the crossing nodes are numbered in cell order, facet by facet, and placed. In
+    // parallel over contiguous ranges of cells: each worker first counts the nodes of its
     // range, so that it knows where its numbers start, then numbers and places them (each facet
     // is handled by the worker holding its lower-id cell). The numbers are those of one
     // sequential pass.
@@ -306,11 +305,11 @@ class SpatialExtractor {
       int next = first_node[w];
       for (std::size_t o = begin; o < end; ++o) {
         if (!todo[o]) continue;
-        const int c = by_orig_[o];
+        const int c = static_cast<int>(o);
         for (int f = 0; f < 4; ++f) {
           const int nk = cells_[c].neighbor[f];
           const EdgePattern& p = facet_[4 * c + f];
-          if (orig_[nk] < orig_[c] || p.empty || p.roots == 0) continue;
+          if (nk < c || p.empty || p.roots == 0) continue;
           const bool at_infinity = infinite(c) && infinite(nk);
           const int first = at_infinity ? kInfinityNode : next;
           facet_first_[4 * c + f] = first;
@@ -322,11 +321,11 @@ class SpatialExtractor {
     });
     for (std::size_t e : exact_nodes) stats_.exact_nodes += e;
     // Zero vertices get their nodes now, so the walks only read.
-    for (std::size_t o = 0; o < cells_.size(); ++o)
-      if (zero(by_orig_[o])) vertex_zero_node(by_orig_[o]);
+    for (std::size_t k = 0; k < cells_.size(); ++k)
+      if (zero(static_cast<int>(k))) vertex_zero_node(static_cast<int>(k));
     for (std::size_t k = 0; k < cells_.size(); ++k) {
       const int c = static_cast<int>(k);
-      if (zero(c) && !infinite(c)) zero_nodes_.push_back({c, vertex_node_[find(orig_[c])]});
+      if (zero(c) && !infinite(c)) zero_nodes_.push_back({c, vertex_node_[find(c)]});
     }
   }
 
@@ -335,7 +334,7 @@ class SpatialExtractor {
     const int first = facet_first_[4 * c + f];
     if (first == kInfinityNode) return kInfinityNode;
     const int nk = cells_[c].neighbor[f];
-    const int node = first + (orig_[c] < orig_[nk] ? r : facet_[4 * c + f].roots - 1 - r);
+    const int node = first + (c < nk ? r : facet_[4 * c + f].roots - 1 - r);
     return node_rep_.empty() ? node : node_rep_[node];
   }
 
@@ -452,9 +451,9 @@ class SpatialExtractor {
 
   int vertex_zero_node(int cell) {
     if (infinite(cell)) return kInfinityNode;
-    const int root = find(orig_[cell]);
+    const int root = find(cell);
     if (vertex_node_[root] != kNone) return vertex_node_[root];
-    auto v = cell_point<Exact>(by_orig_[root]);
+    auto v = cell_point<Exact>(root);
     const double w = CGAL::to_double(v->W);
     out_.nodes.push_back(Node{CGAL::to_double(v->X) / w, CGAL::to_double(v->Y) / w});
     return vertex_node_[root] = static_cast<int>(out_.nodes.size()) - 1;
@@ -476,7 +475,6 @@ class SpatialExtractor {
   // node in zero_nodes_ by now) nor the merge's data; released so that the walks' output can take
   // their place.
   void release_before_walks() {
-    LargeVector<int>().swap(by_orig_);
     LargeVector<std::array<int, 3>>().swap(node_facet_);
     LargeVector<AlongLine>().swap(node_root_);
     LargeVector<int>().swap(uf_);
@@ -484,26 +482,22 @@ class SpatialExtractor {
     release_large_buffers();
   }
 
-  // Each triangulation edge is walked once, from where the walk in CGAL's cell order started: its
-  // finite cell L of lowest CGAL id, around (vertex i0, vertex j0) of L, i0 < j0. Workers take
-  // contiguous ranges of cells; a worker meeting an edge not yet marked in its own marks circulates
-  // it, marks it in every cell of the ring, and walks it only if L is in its range — so exactly one
-  // worker walks each edge, without shared state. Each walk's arcs are tagged with the edge's place
-  // in CGAL's order, by which they are put back in that order.
-  struct EdgeArcs {
-    std::int64_t key = 0;  // 6 × (L's CGAL id) + local_edge(i0, j0)
-    int worker = 0;
-    std::size_t begin = 0, end = 0;  // in that worker's arcs
-  };
+  // Each triangulation edge is walked once, from its finite cell L of lowest number, around
+  // (vertex i, vertex j) of L, i < j. Workers take contiguous ranges of cells and scan them in
+  // increasing order; a worker meeting an edge not yet marked in its own marks circulates it and
+  // marks it in every cell of the ring. The cell where a worker first meets an edge is L exactly
+  // when L lies in its range (a finite cell of the ring earlier in the range would have marked the
+  // edge), and only then does it walk the edge, there and then: exactly one worker walks each edge,
+  // without shared state. Each worker's walks come in increasing order of (L, local_edge(i, j)),
+  // and the workers' ranges follow each other, so the arcs are in their order (the edges' in cell
+  // order) when the workers' lists are put end to end.
   struct WalkState {
     LargeVector<std::uint8_t> done;  // per cell, bit local_edge(i, j)
     std::vector<int> ring;
-    std::size_t lowest_at = 0;  // where circulate() found the ring's lowest-id finite cell
     std::vector<Token> tokens;
     WalkScratch scratch;
     LargeVector<Arc> arcs;  // large buffers: they reuse the blocks released by earlier stages
     LargeVector<ArcMend> mends;  // one per arc
-    LargeVector<EdgeArcs> edges;  // the walks that emitted arcs
     std::vector<RawPoint> link;
   };
 
@@ -514,16 +508,14 @@ class SpatialExtractor {
       st.done.assign(cells_.size(), 0);
       st.arcs.reserve(3 * sites_.size() / workers_ + 16);
       st.mends.reserve(3 * sites_.size() / workers_ + 16);
-      st.edges.reserve(3 * sites_.size() / workers_ + 16);
       for (std::size_t k = begin; k < end; ++k) {
         const int c = static_cast<int>(k);
         if (infinite(c)) continue;
         for (int i = 0; i < 4; ++i)
           for (int j = i + 1; j < 4; ++j) {
             if (st.done[k] & (1u << local_edge(i, j))) continue;
-            const int lowest = circulate(st, c, cells_[c].vertex[i], cells_[c].vertex[j]);
-            if (lowest >= static_cast<int>(begin) && lowest < static_cast<int>(end))
-              walk_edge(st, w, lowest, c, cells_[c].vertex[i], cells_[c].vertex[j]);
+            const int vi = cells_[c].vertex[i], vj = cells_[c].vertex[j];
+            if (circulate(st, c, vi, vj) == c) walk_ring(st, vi, vj);
           }
       }
     });
@@ -537,7 +529,6 @@ class SpatialExtractor {
 
   void release_walk_input() {
     LargeVector<FlatCell>().swap(cells_);
-    LargeVector<int>().swap(orig_);
     LargeVector<RawPoint>().swap(points_);
     LargeVector<int>().swap(vertex_site_);
     LargeVector<std::uint8_t>().swap(flags_);
@@ -547,49 +538,30 @@ class SpatialExtractor {
     release_large_buffers();
   }
 
-  // Puts the workers' arcs into the diagram in the order of their edges' CGAL ids: each worker's
-  // arcs are copied straight to their places, on all cores. The diagram's arcs are one fresh array
-  // (~0.2 GB at 10^6 sites), advised as huge pages before it is first touched. Before, the arcs
-  // were appended worker by worker and permuted in place by swaps, all on one core through
-  // 4 KiB page faults: 1.5 s of a 30 s build of 10^6 sites.
+  // Puts the workers' arcs into the diagram, worker after worker (walk_all_edges: that is their
+  // order): each worker's arcs copied on all cores into one fresh array (~0.2 GB at 10^6 sites),
+  // advised as huge pages before it is first touched, and its buffers returned to the system at
+  // once, so the arcs are held at most once plus one worker's share. Before, the arcs were
+  // appended worker by worker and permuted in place by swaps, all on one core through 4 KiB page
+  // faults: 1.5 s of a 30 s build of 10^6 sites.
   void gather_arcs(std::vector<WalkState>& states) {
     const std::size_t start = out_.arcs.size();
-    std::size_t total = start, edge_count = 0;
+    std::size_t total = start;
     std::vector<std::size_t> base(states.size());
     for (std::size_t w = 0; w < states.size(); ++w) {
       base[w] = total;
       total += states[w].arcs.size();
-      edge_count += states[w].edges.size();
     }
-    // Where each arc goes: edges in key order, each edge's arcs in walk order.
-    LargeVector<EdgeArcs> edges;
-    edges.reserve(edge_count);
-    for (WalkState& st : states) {
-      edges.insert(edges.end(), st.edges.begin(), st.edges.end());
-      LargeVector<EdgeArcs>().swap(st.edges);
-    }
-    // Keys are distinct (one per edge), so the two-thread sort gives std::sort's order.
-    parallel_sort(edges.begin(), edges.end(), [](const EdgeArcs& a, const EdgeArcs& b) { return a.key < b.key; });
-    LargeVector<std::uint32_t> dest(total - start);
-    std::uint32_t next = 0;
-    for (const EdgeArcs& e : edges)
-      for (std::size_t k = e.begin; k < e.end; ++k) dest[base[e.worker] + k - start] = static_cast<std::uint32_t>(start) + next++;
-    LargeVector<EdgeArcs>().swap(edges);
-    release_large_buffers();
     out_.arcs.reserve(total);
     advise_huge_pages(out_.arcs.data() + start, (total - start) * sizeof(Arc));
     out_.arcs.resize(total);
     mends_.assign(total, ArcMend::kNone);
-    // Worker after worker (each on all cores), each worker's buffers returned to the system at once:
-    // the arcs are held at most once plus one worker's share.
     for (std::size_t w = 0; w < states.size(); ++w) {
       WalkState& st = states[w];
-      const std::uint32_t* to = dest.data() + (base[w] - start);
+      const std::size_t to = base[w];
       parallel_chunks(st.arcs.size(), worker_count(st.arcs.size()), [&](std::size_t begin, std::size_t end, int) {
-        for (std::size_t k = begin; k < end; ++k) {
-          out_.arcs[to[k]] = st.arcs[k];
-          mends_[to[k]] = st.mends[k];
-        }
+        std::copy(st.arcs.begin() + begin, st.arcs.begin() + end, out_.arcs.begin() + to + begin);
+        std::copy(st.mends.begin() + begin, st.mends.begin() + end, mends_.begin() + to + begin);
       });
       LargeVector<Arc>().swap(st.arcs);
       LargeVector<ArcMend>().swap(st.mends);
@@ -599,44 +571,20 @@ class SpatialExtractor {
 
   // The cells around the edge (vi, vj) of cell c0, in the order of CGAL's cell circulator
   // incident_cells(c0, index of vi, index of vj), each marked as done for this edge; returns the
-  // finite one of lowest CGAL id (c0 is finite), whose place in the ring is st.lowest_at.
+  // finite one of lowest number (c0 is finite).
   int circulate(WalkState& st, int c0, int vi, int vj) const {
     std::vector<int>& ring = st.ring;
     ring.clear();
     int lowest = c0;
-    st.lowest_at = 0;
     int c = c0;
     do {
-      if (!infinite(c) && orig_[c] < orig_[lowest]) {  // walks start finite
-        lowest = c;
-        st.lowest_at = ring.size();
-      }
+      if (!infinite(c) && c < lowest) lowest = c;  // walks start finite
       ring.push_back(c);
       const int ii = index_of_vertex(c, vi), ij = index_of_vertex(c, vj);
       st.done[c] |= static_cast<std::uint8_t>(1u << local_edge(ii, ij));
       c = cells_[c].neighbor[CGAL::Triangulation_utils_3::next_around_edge(ii, ij)];
     } while (c != c0);
     return lowest;
-  }
-
-  // Walks the edge (a, b) whose ring (circulated from cell `from` around (a, b)) has its lowest
-  // CGAL id finite cell c0 at st.lowest_at.
-  void walk_edge(WalkState& st, int w, int c0, int from, int a, int b) {
-    int i0 = index_of_vertex(c0, a), j0 = index_of_vertex(c0, b);
-    const bool turned = i0 > j0;  // the walk goes around (b, a): the other way round
-    if (turned) std::swap(i0, j0);
-    const int vi = cells_[c0].vertex[i0], vj = cells_[c0].vertex[j0];
-    if (c0 != from) {
-      // The ring circulated from c0 around (vi, vj) is the same cycle of cells, started at c0 and
-      // turned the other way if (vi, vj) is (b, a): no second circulation.
-      std::vector<int>& ring = st.ring;
-      std::rotate(ring.begin(), ring.begin() + static_cast<std::ptrdiff_t>(st.lowest_at), ring.end());
-      if (turned) std::reverse(ring.begin() + 1, ring.end());
-    }
-    const std::size_t first = st.arcs.size();
-    walk_ring(st, vi, vj);
-    if (st.arcs.size() > first)
-      st.edges.push_back({6 * static_cast<std::int64_t>(orig_[c0]) + local_edge(i0, j0), w, first, st.arcs.size()});
   }
 
   // The walk around the facet of (vi, vj) whose cells st.ring lists, from its first cell.
@@ -681,7 +629,7 @@ class SpatialExtractor {
       return st.link;
     };
     const std::size_t first = st.arcs.size();
-    emit_arcs(tokens, st.scratch, vertex_site_[vi], vertex_site_[vj], sites_, st.arcs, [&] {
+    emit_arcs(tokens, st.scratch, vertex_site_[vi], vertex_site_[vj], raw(vi), raw(vj), st.arcs, [&] {
       if (raw(vi).z() == raw(vj).z()) return false;  // U would show
       return circle_centre_in_facet(raw(vi), raw(vj), link());
     });

@@ -5,24 +5,23 @@
 
 namespace covmap::voronoi::engine {
 
-Arc make_arc(int si, int sj, int from, int to, const std::vector<Site>& sites) {
-  const Site& a = sites[si];
-  const Site& b = sites[sj];
+Arc make_arc(int si, int sj, int from, int to, const RawPoint& pi, const RawPoint& pj) {
+  const double xi = pi.x(), yi = pi.y(), wi = pi.z();
+  const double xj = pj.x(), yj = pj.y(), wj = pj.z();
   Arc arc;
   arc.left_site = si;
   arc.right_site = sj;
   arc.from = from == kInfinityNode ? kNone : from;
   arc.to = to == kInfinityNode ? kNone : to;
-  if (a.weight == b.weight) {
+  if (wi == wj) {
     // Walking counter-clockwise around c_j - c_i travels along rot90(s_j - s_i), i keeps left.
-    arc.curve = Line{0.5 * (a.x + b.x), 0.5 * (a.y + b.y), -(b.y - a.y), b.x - a.x};
+    arc.curve = Line{0.5 * (xi + xj), 0.5 * (yi + yj), -(yj - yi), xj - xi};
     arc.ccw = true;
   } else {
     // Centre as a correction to s_i with the difference of squares factored (NUMERICS.md).
-    const double wi = a.weight, wj = b.weight;
     const double k = wi * wi / ((wi - wj) * (wi + wj));
-    const double r = wi * wj * std::hypot(b.x - a.x, b.y - a.y) / std::fabs((wi - wj) * (wi + wj));
-    arc.curve = Circle{a.x + k * (b.x - a.x), a.y + k * (b.y - a.y), r};
+    const double r = wi * wj * std::hypot(xj - xi, yj - yi) / std::fabs((wi - wj) * (wi + wj));
+    arc.curve = Circle{xi + k * (xj - xi), yi + k * (yj - yi), r};
     // The walk projects counter-clockwise iff c_j - c_i points up, i.e. iff w_i < w_j; the disk
     // (the lighter site's side) is then on the left, which is site i either way.
     arc.ccw = wi < wj;

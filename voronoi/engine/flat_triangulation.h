@@ -3,10 +3,16 @@
 // cells by index instead of chasing ~100-byte cells through pointers.
 //
 // Layout (why: extract_spatial.cpp's top comment). Vertices are numbered by their sites' Morton
-// (Z-order) rank and their points stored in that order; cells are stored by the rank of their
-// first-ranked vertex (a counting sort, CGAL's order within one rank). Each cell keeps its CGAL id
-// (`orig`), which is what decides everything that orders the extractor's output, so the layout
-// changes no decision and no order. Points are the same doubles the triangulation holds.
+// (Z-order) rank and their points stored in that order. The cells are numbered canonically: by the
+// ranks of their vertices, whatever order CGAL inserted the sites in or stores its cells and their
+// vertices in. A cell's vertices are stored in increasing rank (the infinite vertex first), the
+// last two swapped when that order is an odd permutation of CGAL's, so every cell keeps CGAL's
+// positive orientation; cells are stored by the rank of their first finite vertex (a counting
+// sort), and within one rank by their vertex arrays. The extractor decides everything that orders
+// its output (node numbers, arc order, which cell of a facet computes it, where a walk starts) and
+// every construction's order of sites from these numbers alone, so its output is a function of the
+// triangulation as a complex (regular_triangulation.h: it does not depend on the insertion order).
+// Points are the same doubles the triangulation holds.
 #pragma once
 
 #include <array>
@@ -35,9 +41,7 @@ enum CellFlag : std::uint8_t {
 };
 
 struct FlatTriangulation {
-  LargeVector<FlatCell> cells;       // in spatial order
-  LargeVector<int> orig;             // per cell, its id in CGAL's order
-  LargeVector<int> by_orig;          // per CGAL id, the cell
+  LargeVector<FlatCell> cells;       // in canonical order (see the top of the file)
   LargeVector<RawPoint> points;      // per vertex id, its site's (x, y, w)
   LargeVector<int> vertex_site;      // per vertex id, its site
   LargeVector<std::uint8_t> flags;   // per cell: kInfiniteCell set, nothing else yet

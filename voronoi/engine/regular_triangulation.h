@@ -7,7 +7,7 @@
 // of 10^6 sites. With Discard_hidden_points the container is only asked for an empty range, and
 // cells are 72 bytes (4 vertex and 4 neighbour handles, the id, the empty member) instead of 96: a
 // quarter less memory to fault in and to walk through, the same triangulation in the same order
-// (the extractors read cells in CGAL's container order, which the layout does not change;
+// (the planar extractor reads cells in CGAL's container order, which the layout does not change;
 // tests/voronoi/spatial_triangulation_test.cpp compares the cells in every dimension). Coplanar
 // lifted sites (dimension ≤ 2: equal weights, w² affine in position, fewer than four sites) kept
 // CGAL's default cells while the planar extractor read CGAL's edge iterator, which picks the cell
@@ -23,6 +23,7 @@
 #include <CGAL/Regular_triangulation_vertex_base_3.h>
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 
+#include <CGAL/Spatial_sort_traits_adapter_2.h>
 #include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/spatial_sort.h>
 #include <boost/property_map/function_property_map.hpp>
@@ -92,25 +93,59 @@ namespace covmap::voronoi::engine {
 static_assert(std::is_same_v<SpatialTds::Cell, SpatialCell> && std::is_same_v<SpatialTds::Vertex, SpatialVertex>);
 using SpatialTriangulation = CGAL::Regular_triangulation_3<LiftedTraits, SpatialTds>;
 
-// Inserts `points` into the empty triangulation `rt` exactly as SpatialTriangulation's range
-// constructor does (CGAL's Regular_triangulation_3::insert(first, last), sequential branch): the
-// same spatial sort (the same traits, and CGAL's random shuffle with its fixed seed) and the same
-// locate-and-insert loop with the same hints, so the same cells in the same container order
-// (tests/voronoi/spatial_triangulation_test.cpp). The difference: `points` is sorted in place,
-// where CGAL sorts a copy of them (32 MB of fresh 4 KiB pages at 10^6 sites).
-inline void insert_spatially_sorted(SpatialTriangulation& rt, std::vector<RawWeightedPoint>& points) {
-  using Gt = SpatialTriangulation::Geom_traits;
+// Inserts `points` (sorted in place) into the empty triangulation `rt` one by one, each located
+// from the cell of the one before, after sorting them along a space-filling curve: the loop of
+// CGAL's Regular_triangulation_3::insert(first, last), sequential branch, with CGAL's spatial
+// sort (its BRIO rounds, with CGAL's fixed-seed shuffle). The triangulation is the same complex
+// in every order (CGAL's symbolic perturbation does not depend on it, and no lifted site is ever
+// hidden); only where CGAL stores its cells and in which order it lists their vertices differ.
+//   kSpatial3: the sort CGAL's range insertion does, on the raw (x, y, w) — the same cells in the
+//     same container order as SpatialTriangulation's range constructor
+//     (tests/voronoi/spatial_triangulation_test.cpp); the order the planar extractor (dimension
+//     2), which reads CGAL's order, is defined by.
+//   kHilbert2: the same sort on (x, y) only. Consecutive sites are then near in the plane whatever
+//     their weights, and each insertion starts nearer its conflict zone: at 10^6 uniform sites the
+//     insertion took less time (docs/PERFORMANCE.md, session 16). The spatial extractor's output
+//     does not depend on the order (flat_triangulation.h): build_diagram is free to choose it.
+//   kAsGiven: no sort, the input order (tests: a second, unrelated insertion order).
+// Where CGAL sorts a copy of the points, they are sorted here in place (CGAL's copy was 32 MB of
+// fresh 4 KiB pages at 10^6 sites).
+enum class InsertionOrder { kSpatial3, kHilbert2, kAsGiven };
+
+namespace detail {
+
+// The site's position (x, y), as CGAL's 2D spatial sort reads it.
+struct PlanarPosition {
+  using result_type = BaseKernel::Point_2;
+  BaseKernel::Point_2 operator()(const RawWeightedPoint& p) const { return {p.x(), p.y()}; }
+};
+
+inline void sort_for_insertion(SpatialTriangulation& rt, std::vector<RawWeightedPoint>& points, InsertionOrder order) {
   using WeightedPoint = SpatialTriangulation::Weighted_point;
-  using ConstructPoint = Gt::Construct_point_3;
-  using Ret = typename boost::result_of<const ConstructPoint(const WeightedPoint&)>::type;
-  using PointMap = boost::function_property_map<ConstructPoint, WeightedPoint, Ret>;
-  using SortTraits = CGAL::Spatial_sort_traits_adapter_3<Gt, PointMap>;
-  CGAL::spatial_sort(points.begin(), points.end(),
-                     SortTraits(boost::make_function_property_map<WeightedPoint, Ret, ConstructPoint>(
-                                    rt.geom_traits().construct_point_3_object()),
-                                rt.geom_traits()));
+  if (order == InsertionOrder::kSpatial3) {
+    using Gt = SpatialTriangulation::Geom_traits;
+    using ConstructPoint = Gt::Construct_point_3;
+    using Ret = typename boost::result_of<const ConstructPoint(const WeightedPoint&)>::type;
+    using PointMap = boost::function_property_map<ConstructPoint, WeightedPoint, Ret>;
+    using SortTraits = CGAL::Spatial_sort_traits_adapter_3<Gt, PointMap>;
+    CGAL::spatial_sort(points.begin(), points.end(),
+                       SortTraits(boost::make_function_property_map<WeightedPoint, Ret, ConstructPoint>(
+                                      rt.geom_traits().construct_point_3_object()),
+                                  rt.geom_traits()));
+  } else if (order == InsertionOrder::kHilbert2) {
+    using PointMap = boost::function_property_map<PlanarPosition, WeightedPoint, BaseKernel::Point_2>;
+    using SortTraits = CGAL::Spatial_sort_traits_adapter_2<BaseKernel, PointMap>;
+    CGAL::spatial_sort(points.begin(), points.end(), SortTraits(PointMap(PlanarPosition())));
+  }
+}
+
+}  // namespace detail
+
+inline void insert_spatially_sorted(SpatialTriangulation& rt, std::vector<RawWeightedPoint>& points,
+                                    InsertionOrder order = InsertionOrder::kSpatial3) {
+  detail::sort_for_insertion(rt, points, order);
   SpatialTriangulation::Cell_handle hint;
-  for (const WeightedPoint& p : points) {
+  for (const SpatialTriangulation::Weighted_point& p : points) {
     SpatialTriangulation::Locate_type lt;
     int li, lj;
     const SpatialTriangulation::Cell_handle c = rt.locate(p, lt, li, lj, hint);
