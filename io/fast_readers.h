@@ -37,6 +37,35 @@ std::vector<SiteDraft> scan_site_drafts(JsonScan& scan);
 // finish_sites, missing instead of throwing.
 SiteTable finish_sites_or_miss(std::vector<SiteDraft> drafts);
 
+// Reads the object that comes next: member(key) for each member, which must read the value.
+template <class Member>
+void scan_object(JsonScan& scan, Member&& member) {
+  scan.open('{');
+  for (bool first = true; scan.next('}', first);) member(scan.key());
+}
+
+// Misses unless the next value is the string `expected` (a format tag, a GeoJSON type).
+inline void expect_string(JsonScan& scan, std::string_view expected) {
+  if (scan.peek() != '"' || scan.string() != expected) throw FastPathMiss{};
+}
+
+// A JSON array of two numbers, [x, y], as a point. With `more_allowed` further elements of any
+// kind follow and are skipped (a GeoJSON position's altitude); otherwise they miss.
+inline Point scan_number_pair(JsonScan& scan, bool more_allowed) {
+  Point p;
+  scan.open('[');
+  bool first = true;
+  if (!scan.next(']', first)) throw FastPathMiss{};
+  p.x = scan.number();
+  if (!scan.next(']', first)) throw FastPathMiss{};
+  p.y = scan.number();
+  while (scan.next(']', first)) {
+    if (!more_allowed) throw FastPathMiss{};
+    scan.skip_value();
+  }
+  return p;
+}
+
 // Marks a known member as seen, missing on a repeat: the reference keeps the last of duplicated
 // members, which a one-pass reader cannot do.
 inline void first_time(unsigned& seen, unsigned bit) {
