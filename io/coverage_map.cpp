@@ -3,7 +3,8 @@
 // (structure, closing positions, lon/lat ranges, crs): in one pass over the text for a well-formed
 // map, through the JSON library otherwise (io/coverage_map_drafts.h). The second needs the whole
 // map, because the projection centre is the centre of all vertices: it projects, then validates
-// each polygon in the plane where covmap will use it (io/coverage_map_rings.h).
+// each polygon in the plane where covmap will use it (io/coverage_map_rings.h), feature by feature
+// on all cores (io/coverage_map_cells.h).
 #include "io/coverage_map.h"
 
 #include <algorithm>
@@ -15,8 +16,8 @@
 #include <string_view>
 #include <unordered_set>
 
+#include "io/coverage_map_cells.h"
 #include "io/coverage_map_drafts.h"
-#include "io/coverage_map_rings.h"
 #include "io/input_error.h"
 #include "io/input_limits.h"
 #include "io/text_util.h"
@@ -25,7 +26,6 @@ namespace covmap::io {
 namespace {
 
 using detail::FeatureDraft;
-using detail::RawRing;
 using detail::usable;
 
 // Centre of the shortest longitude interval holding every value, in [-180, 180). Usually the middle
@@ -100,7 +100,7 @@ LocalProjection projection_for(const std::vector<FeatureDraft>& drafts) {
 
 namespace detail {
 
-CoverageMap finish_coverage_map(FeatureDrafts first, const std::string& file, const CoverageMapOptions& options) {
+CoverageMap finish_coverage_map(FeatureDrafts first, const std::string& file, const CoverageMapOptions& options, int workers) {
   std::vector<FeatureDraft>& drafts = first.drafts;
   const CrsDeclarations& crs = first.crs;
   TopLevelCrs& top = first.top;
@@ -141,51 +141,9 @@ CoverageMap finish_coverage_map(FeatureDrafts first, const std::string& file, co
     local = projection_for(drafts);
     map.frame = std::make_shared<LocalProjection>(*local);
   }
-  const double k_centre = local ? local->point_scale(local->lon0(), local->lat0()) : 1.0;
-  for (auto& d : drafts) {
-    if (check_geometry && usable(d)) {
-      MapCell cell;
-      cell.sensor = d.sensor;
-      cell.name = d.name;
-      cell.feature = d.index;
-      for (std::size_t k = 0; k < d.polygons.size(); ++k) {
-        std::vector<RingInput> rings;
-        rings.reserve(d.polygons[k].size());
-        bool projected = true;
-        for (RawRing& raw : d.polygons[k]) {
-          RingInput& ring = rings.emplace_back();
-          ring.projected.reserve(raw.size());
-          for (const Point& p : raw) {
-            if (!local) {
-              ring.projected.push_back(p);
-              continue;
-            }
-            const ScaledPoint q = local->forward_with_scale(p.x, p.y);
-            map.max_scale_distortion = std::max(map.max_scale_distortion, std::abs(q.scale / k_centre - 1.0));
-            ring.projected.push_back(q.point);
-            projected = projected && std::isfinite(q.point.x) && std::isfinite(q.point.y);
-          }
-          ring.read = std::move(raw);
-        }
-        if (!projected) {
-          // Only a map reaching 90 degrees of longitude from its centre gets here.
-          d.problems.push_back((d.multi ? "polygon " + std::to_string(k) : std::string("the polygon")) +
-                               " lies too far from the map centre for " + local->description() +
-                               "; covmap audits regional maps, not continents");
-          continue;
-        }
-        if (auto polygon = make_map_polygon(rings, {k, d.multi}, d.problems)) {
-          map.vertex_count += polygon->outer.size();
-          for (const auto& hole : polygon->holes) map.vertex_count += hole.size();
-          cell.polygons.push_back(std::move(*polygon));
-        }
-      }
-      map.cells.push_back(std::move(cell));
-    }
+  if (check_geometry) add_cells(drafts, local ? &*local : nullptr, map, workers > 0 ? workers : cell_workers(vertices));
+  for (const auto& d : drafts)
     for (const auto& message : d.problems) problems.push_back({0, d.label, message});
-    d.polygons.clear();
-    d.polygons.shrink_to_fit();
-  }
   if (!problems.empty()) throw InputError(file, std::move(problems));
   return map;
 }

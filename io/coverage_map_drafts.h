@@ -55,9 +55,12 @@ FeatureDrafts read_features_reference(std::string_view text, const std::string& 
 std::optional<FeatureDrafts> read_features_fast(std::string_view text, const CoverageMapOptions& options);
 
 // The rest of the reader, the same after either first pass: the limits, the crs judgement, the
-// projection and the second pass; the map, or one InputError with every problem.
-// parse_coverage_map is finish_coverage_map(fast drafts, or else the reference's).
-CoverageMap finish_coverage_map(FeatureDrafts first, const std::string& file, const CoverageMapOptions& options);
+// projection and the second pass (io/coverage_map_cells.h); the map, or one InputError with every
+// problem. parse_coverage_map is finish_coverage_map(fast drafts, or else the reference's).
+// `workers`: threads of the second pass; 0 chooses by the map's size (cell_workers), and any count
+// gives the same result (tests and benchmarks set it).
+CoverageMap finish_coverage_map(FeatureDrafts first, const std::string& file, const CoverageMapOptions& options,
+                                int workers = 0);
 
 // Whether positions are x/y rather than lon/lat: --planar, a CRS the caller gave, or a top-level
 // declaration (usable or not: a refused one is reported once, not again as every position out of
