@@ -32,20 +32,24 @@ int array_depth(JsonScan probe) {
   return depth;
 }
 
-// A ring, which RFC 7946 requires to end where it starts (compared as the reference does).
-RawRing scan_ring(JsonScan& scan) {
-  RawRing ring;
+// A ring, which RFC 7946 requires to end where it starts (compared as the reference does). The
+// positions gather in `scratch`, reused from ring to ring, and the ring is one allocation of its
+// exact size: growing each ring's own vector costs a chain of reallocations and fresh memory that
+// is touched and given back (a page fault per 4 KiB on this kind of machine, docs/PERFORMANCE.md).
+RawRing scan_ring(JsonScan& scan, RawRing& scratch) {
+  RawRing& ring = scratch;
+  ring.clear();
   scan.open('[');
   // [x, y] or [lon, lat]; further values (altitude) are skipped, as the reference ignores them.
   for (bool first = true; scan.next(']', first);) ring.push_back(scan_number_pair(scan, true));
   if (ring.empty() || ring.front().x != ring.back().x || ring.front().y != ring.back().y) throw FastPathMiss{};
-  return ring;
+  return RawRing(ring.begin(), ring.end());
 }
 
-RawPolygon scan_polygon(JsonScan& scan) {
+RawPolygon scan_polygon(JsonScan& scan, RawRing& scratch) {
   RawPolygon polygon;
   scan.open('[');
-  for (bool first = true; scan.next(']', first);) polygon.push_back(scan_ring(scan));
+  for (bool first = true; scan.next(']', first);) polygon.push_back(scan_ring(scan, scratch));
   if (polygon.empty()) throw FastPathMiss{};
   return polygon;
 }
@@ -58,7 +62,7 @@ struct PendingCrs {
 
 // Geometry (a Polygon or MultiPolygon with at least one polygon) into draft.polygons; its "crs"
 // text, if any, into `crs`.
-void scan_geometry(JsonScan& scan, FeatureDraft& draft, std::string_view& crs) {
+void scan_geometry(JsonScan& scan, FeatureDraft& draft, std::string_view& crs, RawRing& scratch) {
   enum : unsigned { kType = 1, kCoordinates = 2, kCrs = 4 };
   unsigned seen = 0;
   std::string type;
@@ -72,10 +76,10 @@ void scan_geometry(JsonScan& scan, FeatureDraft& draft, std::string_view& crs) {
       first_time(seen, kCoordinates);
       depth = array_depth(scan);
       if (depth == kPolygonDepth) {
-        draft.polygons.push_back(scan_polygon(scan));
+        draft.polygons.push_back(scan_polygon(scan, scratch));
       } else if (depth == kMultiPolygonDepth) {
         scan.open('[');
-        for (bool first_polygon = true; scan.next(']', first_polygon);) draft.polygons.push_back(scan_polygon(scan));
+        for (bool first_polygon = true; scan.next(']', first_polygon);) draft.polygons.push_back(scan_polygon(scan, scratch));
       } else {
         throw FastPathMiss{};
       }
@@ -116,7 +120,8 @@ void scan_properties(JsonScan& scan, const std::string& sensor_property, Feature
 
 // One Feature; its "crs" members go to `pending` in the reference's order (the feature's own, then
 // its geometry's, whatever their order in the text).
-FeatureDraft scan_feature(JsonScan& scan, std::size_t i, const std::string& sensor_property, std::vector<PendingCrs>& pending) {
+FeatureDraft scan_feature(JsonScan& scan, std::size_t i, const std::string& sensor_property, std::vector<PendingCrs>& pending,
+                          RawRing& scratch) {
   enum : unsigned { kType = 1, kProperties = 2, kGeometry = 4, kCrs = 8 };
   constexpr unsigned kRequired = kType | kProperties | kGeometry;
   FeatureDraft draft;
@@ -132,7 +137,7 @@ FeatureDraft scan_feature(JsonScan& scan, std::size_t i, const std::string& sens
       scan_properties(scan, sensor_property, draft);
     } else if (key == "geometry") {
       first_time(seen, kGeometry);
-      scan_geometry(scan, draft, geometry_crs);
+      scan_geometry(scan, draft, geometry_crs, scratch);
     } else if (key == "crs") {
       first_time(seen, kCrs);
       feature_crs = scan.raw_value();
@@ -183,6 +188,7 @@ std::optional<FeatureDrafts> read_features_fast(std::string_view text, const Cov
     FeatureDrafts out;
     std::string_view top_crs;
     std::vector<PendingCrs> pending;
+    RawRing scratch;
     unsigned seen = 0;
     scan_object(scan, [&](std::string_view key) {
       if (key == "type") {
@@ -193,7 +199,7 @@ std::optional<FeatureDrafts> read_features_fast(std::string_view text, const Cov
         scan.open('[');
         for (bool first_feature = true; scan.next(']', first_feature);) {
           if (out.drafts.size() == kMaxMapFeatures) throw FastPathMiss{};
-          out.drafts.push_back(scan_feature(scan, out.drafts.size(), options.sensor_property, pending));
+          out.drafts.push_back(scan_feature(scan, out.drafts.size(), options.sensor_property, pending, scratch));
         }
       } else if (key == "crs") {
         first_time(seen, kCrs);
