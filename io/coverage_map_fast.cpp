@@ -154,18 +154,6 @@ FeatureDraft scan_feature(JsonScan& scan, std::size_t i, const std::string& sens
   return draft;
 }
 
-// Records a declaration as the reference does (CrsDeclarations::add on its owner object).
-void add_crs(CrsDeclarations& crs, std::string_view text, const std::string& path) {
-  if (text.empty()) return;
-  try {
-    Json owner = Json::object();
-    owner["crs"] = Json::parse(text.begin(), text.end());
-    crs.add(owner, path);
-  } catch (const Json::exception&) {
-    throw FastPathMiss{};  // text JsonScan took and the library does not: its reading decides
-  }
-}
-
 // The reference's range checks of positions as read: any position it would report is a miss.
 bool positions_in_range(const std::vector<FeatureDraft>& drafts, bool xy) {
   for (const FeatureDraft& d : drafts)
@@ -182,38 +170,19 @@ bool positions_in_range(const std::vector<FeatureDraft>& drafts, bool xy) {
 }  // namespace
 
 std::optional<FeatureDrafts> read_features_fast(std::string_view text, const CoverageMapOptions& options) {
-  enum : unsigned { kType = 1, kFeatures = 2, kCrs = 4 };
   try {
     JsonScan scan(text);
     FeatureDrafts out;
-    std::string_view top_crs;
     std::vector<PendingCrs> pending;
     RawRing scratch;
-    unsigned seen = 0;
-    scan_object(scan, [&](std::string_view key) {
-      if (key == "type") {
-        first_time(seen, kType);
-        expect_string(scan, "FeatureCollection");
-      } else if (key == "features") {
-        first_time(seen, kFeatures);
-        scan.open('[');
-        for (bool first_feature = true; scan.next(']', first_feature);) {
-          if (out.drafts.size() == kMaxMapFeatures) throw FastPathMiss{};
-          out.drafts.push_back(scan_feature(scan, out.drafts.size(), options.sensor_property, pending, scratch));
-        }
-      } else if (key == "crs") {
-        first_time(seen, kCrs);
-        top_crs = scan.raw_value();
-      } else {
-        scan.skip_value();
-      }
+    const std::string_view top_crs = scan_feature_collection(scan, [&](std::size_t i) {
+      if (i == kMaxMapFeatures) throw FastPathMiss{};
+      out.drafts.push_back(scan_feature(scan, i, options.sensor_property, pending, scratch));
     });
-    scan.expect_end();
-    if (!(seen & kType) || !(seen & kFeatures) || out.drafts.empty()) return std::nullopt;
     // The reference's order: the top-level declaration, resolved before the features' are added.
-    add_crs(out.crs, top_crs, "");
+    record_crs(out.crs, top_crs, "");
     if (!options.crs_frame) out.top = resolve_top_level(out.crs, options.resolve_crs, options.planar);
-    for (const PendingCrs& p : pending) add_crs(out.crs, p.text, p.path);
+    for (const PendingCrs& p : pending) record_crs(out.crs, p.text, p.path);
     if (!positions_in_range(out.drafts, positions_are_xy(options, out.top))) return std::nullopt;
     return out;
   } catch (const FastPathMiss&) {
