@@ -16,6 +16,11 @@
 // Each phase's time and peak RSS (VmHWM reset before it) are reported; nothing is asserted.
 //   io_bench --n 1e4,1e5,1e6 --json [--keep DIR]   (--keep leaves sites_N.json there, for
 //   `/usr/bin/time -v covmap diagram DIR/sites_N.json -o ...` end to end on the same sites)
+// With --map FILE (GeoJSON coverage maps, e.g. from covmap-make-map; --planar for x/y maps) the rows
+// are those maps instead: the public reader on the text in memory, its two first passes apart
+// (fast, reference) and the rest of the reader on one worker and on the machine's cores
+// (io/coverage_map_drafts.h; `covmap audit`'s stage "reading map and sensors" is mostly this), and
+// the reported sensors of a sensors.geojson beside the map.
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
@@ -31,6 +36,9 @@
 #include "bench/isolated_run.h"
 #include "bench/site_distributions.h"
 #include "io/atomic_file.h"
+#include "io/coverage_map.h"
+#include "io/coverage_map_drafts.h"
+#include "io/reported_sensors.h"
 #include "io/diagram_json.h"
 #include "io/fast_readers.h"
 #include "io/json_number.h"
@@ -54,6 +62,8 @@ struct Options {
   std::string keep;  // directory for the sites files; empty: a temporary one, removed
   bool reference = true;
   bool json = false;
+  std::vector<std::string> maps;  // coverage maps to time instead of the site rows
+  bool planar = false;            // the maps are planar (covmap audit --planar)
 };
 
 json optional_kib(std::optional<long> kib) { return kib ? json(*kib) : json(nullptr); }
@@ -181,6 +191,58 @@ std::string measure_row(std::size_t n, const bench::Distribution& dist, const Op
   return row.dump();
 }
 
+// One coverage map: the public reader, then its parts on the same text (each first pass's drafts
+// are used by the following phase, so nothing is read twice from the file).
+std::string measure_map_row(const fs::path& file, bool planar) {
+  json row = {{"map", file.string()}, {"map_bytes", fs::file_size(file)}};
+  const std::string text = io::detail::read_text_file(file);
+  io::CoverageMapOptions options;
+  options.planar = planar;
+  const auto map = phase(row, "parse_map", [&] { return io::parse_coverage_map(text, "m", options); });
+  row["cells"] = map.cells.size();
+  row["vertices"] = map.vertex_count;
+  auto fast = phase(row, "map_first_pass_fast", [&] { return io::detail::read_features_fast(text, options); });
+  if (!fast) throw std::runtime_error("the fast path missed " + file.string());
+  auto reference = phase(row, "map_first_pass_reference", [&] { return io::detail::read_features_reference(text, "m", options); });
+  phase(row, "map_rest_one_worker", [&] { return io::detail::finish_coverage_map(std::move(reference), "m", options, 1).cells.size(); });
+  phase(row, "map_rest", [&] { return io::detail::finish_coverage_map(std::move(*fast), "m", options).cells.size(); });
+  // The reported sensors beside the map (covmap-make-map writes them there), placed through its frame.
+  if (const fs::path sensors_file = file.parent_path() / "sensors.geojson"; fs::exists(sensors_file)) {
+    const std::string sensors_text = io::detail::read_text_file(sensors_file);
+    io::ReportedSensorOptions so;
+    so.planar = planar;
+    so.frame = map.frame.get();
+    so.alpha = 3.5;
+    phase(row, "parse_sensors", [&] {
+      return io::parse_reported_sensors(sensors_text, "s", so, io::SensorsFormat::kGeoJson).size();
+    });
+  }
+  return row.dump();
+}
+
+void print_map_row(const json& row) {
+  const auto s = [&](const char* key) { return row.contains(key) ? row[key].get<double>() : -1.0; };
+  std::printf("%s  parse map %.3f s  first pass fast %.3f s (reference %.3f s)  rest %.3f s (one worker %.3f s)"
+              "  parse sensors %.3f s\n",
+              row["map"].get<std::string>().c_str(), s("parse_map_seconds"), s("map_first_pass_fast_seconds"),
+              s("map_first_pass_reference_seconds"), s("map_rest_seconds"), s("map_rest_one_worker_seconds"),
+              s("parse_sensors_seconds"));
+}
+
+int run_maps(const Options& options) {
+  int failures = 0;
+  for (const auto& file : options.maps) {
+    const auto result = bench::run_isolated([&] { return measure_map_row(file, options.planar); });
+    json row = result.ok ? json::parse(result.output) : json{{"map", file}, {"error", result.failure}};
+    row["process_peak_rss_kib"] = result.peak_rss_kib;
+    failures += result.ok ? 0 : 1;
+    if (options.json) std::cout << row.dump() << std::endl;
+    else if (result.ok) print_map_row(row);
+    else std::printf("%s FAILED: %s\n", file.c_str(), result.failure.c_str());
+  }
+  return failures == 0 ? 0 : 1;
+}
+
 void print_row(const json& row) {
   const auto s = [&](const char* key) { return row.contains(key) ? row[key].get<double>() : -1.0; };
   std::printf("%8zu  read sites %.3f s  engine %.3f s  write graph %.3f s (staged %.3f s)  text %.3f s  read graph %.3f s"
@@ -195,6 +257,7 @@ void print_row(const json& row) {
 }
 
 int run(const Options& options) {
+  if (!options.maps.empty()) return run_maps(options);
   std::string error;
   const auto dist = bench::parse_distribution(options.distribution, &error);
   if (!dist) throw CLI::ValidationError("--dist", error);
@@ -226,6 +289,9 @@ int main(int argc, char** argv) {
   app.add_option("--seed", options.seed, "random seed (as mwvd_bench)")->capture_default_str();
   app.add_option("--keep", options.keep, "keep the sites files in this directory");
   app.add_flag("!--no-reference", options.reference, "skip the reference readers and the SAX floor");
+  app.add_option("--map", options.maps, "time reading these GeoJSON coverage maps instead of the site rows (comma separated)")
+      ->delimiter(',');
+  app.add_flag("--planar", options.planar, "the --map files are planar (as covmap audit --planar)");
   app.add_flag("--json", options.json, "one JSON object per row (JSON Lines) instead of a table");
   CLI11_PARSE(app, argc, argv);
   try {

@@ -46,7 +46,10 @@
 //
 // Cost: O(V log V) for V vertices, whatever the shape of the rings (crossings are found by a
 // sweep line, io/segment_sweep.h). When a polygon's rings cross at several places, the message
-// names one crossing: the first the sweep meets, which depends only on the input.
+// names one crossing: the first the sweep meets, which depends only on the input. A well-formed
+// file is read in one pass over its text, anything else through a JSON document
+// (io/coverage_map_drafts.h); a large map's features are checked on the machine's cores
+// (io/coverage_map_cells.h). Neither changes a result or a message.
 #pragma once
 
 #include <cstddef>

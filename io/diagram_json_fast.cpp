@@ -75,7 +75,7 @@ class GraphScan {
   void member(std::string_view key) {
     if (key == "format") {
       first_time(seen_, kFormat);
-      if (scan_.peek() != '"' || scan_.string() != "covmap.arcgraph/1") throw FastPathMiss{};
+      expect_string(scan_, "covmap.arcgraph/1");
     } else if (key == "sites") {
       first_time(seen_, kSites);
       sites();
@@ -212,23 +212,9 @@ class GraphScan {
 
   void clip() {
     scan_.open('[');
-    for (bool first = true; scan_.next(']', first);) {
-      Point p;
-      scan_pair_of_numbers(p);
-      diagram_.clip.push_back(p);
-    }
+    for (bool first = true; scan_.next(']', first);) diagram_.clip.push_back(scan_number_pair(scan_, false));
     if (diagram_.clip.empty()) return;  // empty means "not clipped"
     if (polygon_defect(diagram_.clip) || ring_orientation(diagram_.clip) < 0) throw FastPathMiss{};
-  }
-
-  void scan_pair_of_numbers(Point& p) {
-    scan_.open('[');
-    bool first = true;
-    if (!scan_.next(']', first)) throw FastPathMiss{};
-    p.x = scan_.number();
-    if (!scan_.next(']', first)) throw FastPathMiss{};
-    p.y = scan_.number();
-    if (scan_.next(']', first)) throw FastPathMiss{};
   }
 
   JsonScan scan_;

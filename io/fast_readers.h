@@ -19,6 +19,7 @@
 
 #include "core/diagram.h"
 #include "io/diagram_json.h"
+#include "io/geojson_crs.h"
 #include "io/json_scan.h"
 #include "io/site_validation.h"
 #include "io/sites_io.h"
@@ -36,6 +37,78 @@ Diagram parse_diagram_json_reference(std::string_view text, const std::string& f
 std::vector<SiteDraft> scan_site_drafts(JsonScan& scan);
 // finish_sites, missing instead of throwing.
 SiteTable finish_sites_or_miss(std::vector<SiteDraft> drafts);
+
+// Reads the object that comes next: member(key) for each member, which must read the value.
+template <class Member>
+void scan_object(JsonScan& scan, Member&& member) {
+  scan.open('{');
+  for (bool first = true; scan.next('}', first);) member(scan.key());
+}
+
+// Misses unless the next value is the string `expected` (a format tag, a GeoJSON type).
+inline void expect_string(JsonScan& scan, std::string_view expected) {
+  if (scan.peek() != '"' || scan.string() != expected) throw FastPathMiss{};
+}
+
+// A whole text holding a GeoJSON FeatureCollection: feature(i) reads element i of "features".
+// Returns the text of the collection's "crs" member (empty without one). Misses without "type"
+// "FeatureCollection" or without features, on a repeated member, and on a "format" member (a
+// covmap.sites/1 file, when the kind of file is detected from its content).
+template <class Feature>
+std::string_view scan_feature_collection(JsonScan& scan, Feature&& feature) {
+  enum : unsigned { kType = 1, kFeatures = 2, kCrs = 4 };
+  unsigned seen = 0;
+  std::size_t count = 0;
+  std::string_view crs;
+  scan_object(scan, [&](std::string_view key) {
+    if (key == "type") {
+      first_time(seen, kType);
+      expect_string(scan, "FeatureCollection");
+    } else if (key == "features") {
+      first_time(seen, kFeatures);
+      scan.open('[');
+      for (bool first = true; scan.next(']', first);) feature(count++);
+    } else if (key == "crs") {
+      first_time(seen, kCrs);
+      crs = scan.raw_value();
+    } else if (key == "format") {
+      throw FastPathMiss{};
+    } else {
+      scan.skip_value();
+    }
+  });
+  scan.expect_end();
+  if (!(seen & kType) || !(seen & kFeatures) || count == 0) throw FastPathMiss{};
+  return crs;
+}
+
+// A JSON array of two numbers, [x, y], as a point. With `more_allowed` further elements of any
+// kind follow and are skipped (a GeoJSON position's altitude); otherwise they miss.
+inline Point scan_number_pair(JsonScan& scan, bool more_allowed) {
+  Point p;
+  scan.open('[');
+  bool first = true;
+  if (!scan.next(']', first)) throw FastPathMiss{};
+  p.x = scan.number();
+  if (!scan.next(']', first)) throw FastPathMiss{};
+  p.y = scan.number();
+  while (scan.next(']', first)) {
+    if (!more_allowed) throw FastPathMiss{};
+    scan.skip_value();
+  }
+  return p;
+}
+
+// Records a GeoJSON "crs" member read as text (JsonScan::raw_value) as the reference records it;
+// nothing for an empty text (no member). Text JsonScan took and the JSON library refuses misses.
+inline void record_crs(CrsDeclarations& crs, std::string_view text, const std::string& path) {
+  if (text.empty()) return;
+  try {
+    crs.add_text(text, path);
+  } catch (const Json::exception&) {
+    throw FastPathMiss{};
+  }
+}
 
 // Marks a known member as seen, missing on a repeat: the reference keeps the last of duplicated
 // members, which a one-pass reader cannot do.

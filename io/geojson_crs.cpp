@@ -61,6 +61,12 @@ void CrsDeclarations::add(const Json& object, const std::string& path) {
   declared_.push_back(std::move(d));
 }
 
+void CrsDeclarations::add_text(std::string_view crs, const std::string& path) {
+  Json owner = Json::object();
+  owner["crs"] = Json::parse(crs.begin(), crs.end());
+  add(owner, path);
+}
+
 std::optional<std::string> CrsDeclarations::foreign_top_level() const {
   if (declared_.empty() || declared_.front().path != "crs" || declared_.front().wgs84) return std::nullopt;
   return declared_.front().name;

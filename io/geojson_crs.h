@@ -35,6 +35,9 @@ class CrsDeclarations {
  public:
   // Records object["crs"] if present and not null; `path` is the object's JSON path.
   void add(const Json& object, const std::string& path);
+  // The same for a member handed over as its JSON text (by a one-pass reader that does not build
+  // the owner object). Throws Json::exception for text that is not JSON.
+  void add_text(std::string_view crs, const std::string& path);
 
   // Problems with the declarations, each reported once per distinct system (a file whose 5000
   // features all declare EPSG:32632 gets one message, not 5000). Empty when all is well. With

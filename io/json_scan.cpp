@@ -49,13 +49,17 @@ bool JsonScan::next(char close, bool& first) {
 std::string_view JsonScan::key() {
   expect('"');
   const std::size_t begin = at_;
+  bool ascii = true;
   while (at_ < text_.size() && text_[at_] != '"') {
     const auto c = static_cast<unsigned char>(text_[at_]);
-    if (c == '\\' || c < 0x20 || c >= 0x80) throw FastPathMiss{};  // names are plain ASCII in our formats
+    if (c == '\\' || c < 0x20) throw FastPathMiss{};  // escapes would need decoding to compare
+    if (c >= 0x80) ascii = false;
     ++at_;
   }
   if (at_ == text_.size()) throw FastPathMiss{};
   const std::string_view name = text_.substr(begin, at_ - begin);
+  // Raw UTF-8 names occur in exported maps' properties ("Höhe"); the reference refuses invalid UTF-8.
+  if (!ascii && !valid_utf8(std::string(name))) throw FastPathMiss{};
   ++at_;
   expect(':');
   return name;
@@ -167,6 +171,13 @@ std::string JsonScan::string() {
   ++at_;
   if (!ascii && !valid_utf8(out)) throw FastPathMiss{};
   return out;
+}
+
+std::string_view JsonScan::raw_value() {
+  skip_space();
+  const std::size_t begin = at_;
+  skip_value();
+  return text_.substr(begin, at_ - begin);
 }
 
 void JsonScan::skip_value() {

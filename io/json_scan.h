@@ -11,9 +11,9 @@
 //     exactly (no leading zeros, '+', '.5', '1.', hex, NaN); strings hold no raw control characters
 //     and are valid UTF-8; literals are true/false/null;
 //   - nesting at most kMaxJsonDepth (the reference reader refuses deeper text);
-//   - misses, rather than handles: \u escapes in strings, member names other than plain ASCII, a
-//     byte order mark, and numbers that overflow or underflow (std::from_chars reports them out of
-//     range);
+//   - misses, rather than handles: \u escapes in strings, escapes of any kind in member names (raw
+//     UTF-8 names are taken), a byte order mark, and numbers that overflow or underflow
+//     (std::from_chars reports them out of range);
 //   - reads a number token without fraction or exponent as the reference does (through an integer,
 //     so "-0" is +0.0).
 // Numbers are converted by std::from_chars, correctly rounded like the reference's strtod.
@@ -36,7 +36,7 @@ class JsonScan {
   // next() consumes the separating comma or the closing bracket (then returns false).
   void open(char bracket);
   bool next(char close, bool& first);
-  // The next member name and its ':' (names that are not plain ASCII without escapes miss).
+  // The next member name and its ':' (names with escapes miss; they would need decoding).
   std::string_view key();
 
   // Values.
@@ -49,6 +49,9 @@ class JsonScan {
   std::string_view integer_text();
   std::string string();
   void skip_value();  // any valid JSON value
+  // Skips any valid JSON value and returns its text, for a reader that hands a rare member to the
+  // reference JSON library (a GeoJSON "crs").
+  std::string_view raw_value();
   char peek();        // the next non-space character, '\0' at the end
 
   void expect_end();  // only whitespace may follow

@@ -40,6 +40,12 @@ std::vector<ReportedSensor> parse(std::string_view text, const std::string& file
   std::shared_ptr<const MapFrame> declared;  // a GeoJSON file's own CRS
   if (format == SensorsFormat::kCsv) {
     drafts = detail::parse_sensors_csv(text, file);
+  } else if (std::optional<std::vector<detail::SensorDraft>> fast =
+                 format == SensorsFormat::kSitesJson
+                     ? std::nullopt
+                     : detail::parse_sensors_geojson_fast(text, options.planar, options.xy_frame != nullptr,
+                                                          options.resolve_crs, declared, file_problems)) {
+    drafts = std::move(*fast);  // a well-formed GeoJSON file, read in one pass
   } else {
     const detail::Json root = detail::parse_json(text, file);
     // covmap.sites/1 carries a "format" member; GeoJSON carries a "type" instead.

@@ -14,6 +14,8 @@
 //            Positions are [lon, lat] unless options.planar ([x, y]); crs as in io/geojson_crs.h.
 // Chosen by extension (.csv, .geojson, .json), otherwise by content: JSON with a "format" member is
 // covmap.sites/1, JSON with a "type" is GeoJSON, anything else CSV.
+// A well-formed GeoJSON file is read in one pass over its text, anything else through a JSON
+// document that also words every problem (io/reported_sensors_parsers.h); the results are the same.
 //
 // Strength: every sensor needs a weight or a tx_power_dbm. A weight as read is kept. A sensor with
 // only a power gets weight = weight_from_power(power, alpha), which needs options.alpha (a power

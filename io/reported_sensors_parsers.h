@@ -40,6 +40,17 @@ std::vector<SensorDraft> parse_sensors_geojson(const Json& root, const std::stri
                                                const CrsResolver& resolve, std::shared_ptr<const MapFrame>& declared,
                                                std::vector<InputProblem>& file_problems);
 
+// The same drafts as parse_sensors_geojson for a well-formed GeoJSON text, read in one pass
+// (reported_sensors_fast.cpp; the scanner of io/json_scan.h); nullopt whenever anything is out of
+// the ordinary, including any problem the reference would report in a draft or the file, and for a
+// text with a "format" member (covmap.sites/1 when the format is detected). `declared` and
+// `file_problems` are set only when drafts are returned. The reference then reads the text and
+// words every problem, so every message is the reference's (tests/io/reported_sensors_fast_test.cpp).
+std::optional<std::vector<SensorDraft>> parse_sensors_geojson_fast(std::string_view text, bool planar, bool xy_crs,
+                                                                   const CrsResolver& resolve,
+                                                                   std::shared_ptr<const MapFrame>& declared,
+                                                                   std::vector<InputProblem>& file_problems);
+
 // Value checks, strengths, projection, unique ids and positions; then the sensors, or one
 // InputError listing `file_problems` followed by every sensor's problems in file order.
 // `xy_frame`: the CRS of the drafts' x/y (options.xy_frame or the file's declaration); null: the

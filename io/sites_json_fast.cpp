@@ -84,7 +84,7 @@ std::optional<SiteTable> parse_sites_json_fast(std::string_view text) {
       const std::string_view key = scan.key();
       if (key == "format") {
         first_time(seen, kFormat);
-        if (scan.peek() != '"' || scan.string() != "covmap.sites/1") throw FastPathMiss{};
+        expect_string(scan, "covmap.sites/1");
       } else if (key == "sites") {
         first_time(seen, kSites);
         table = finish_sites_or_miss(scan_site_drafts(scan));

@@ -21,6 +21,7 @@ using detail::parse_diagram_json_fast;
 using detail::parse_diagram_json_reference;
 using detail::parse_sites_json_fast;
 using testing::expect_identical;
+using testing::mutate_all;
 using testing::sample;
 using testing::same;
 
@@ -61,23 +62,6 @@ bool sites_fast_path_agrees(const std::string& text) {
         << "site " << i << " of " << text;
   }
   return true;
-}
-
-// Every single-byte deletion, replacement and insertion of `text`; counts the variants the fast
-// path took, so a test can make sure both outcomes were exercised.
-template <class Agrees>
-std::pair<int, int> mutate_all(const std::string& text, Agrees&& agrees) {
-  static constexpr char kBytes[] = {'"', ',', ':', '[', ']', '{', '}', '0', '1', '-', '.', 'e', ' ', 'n', '\\', '\x01'};
-  int taken = 0, missed = 0;
-  const auto run = [&](const std::string& variant) { (agrees(variant) ? taken : missed) += 1; };
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    run(text.substr(0, i) + text.substr(i + 1));
-    for (const char c : kBytes) {
-      if (c != text[i]) run(text.substr(0, i) + c + text.substr(i + 1));
-      run(text.substr(0, i) + c + text.substr(i));
-    }
-  }
-  return {taken, missed};
 }
 
 TEST(FastReaders, WriterOutputTakesTheFastPathAndAgrees) {
@@ -168,6 +152,13 @@ TEST(FastReaders, NumbersAndStringsAsTheReferenceReadsThem) {
                            one_site("\"a\"", "1e-400"), one_site("-0", "1"), one_site("12345678901234567890", "1")})
     EXPECT_FALSE(parse_sites_json_fast(text)) << text;
   EXPECT_FALSE(parse_sites_json_fast(R"({"format":"covmap.sites/1","format":"covmap.sites/1","sites":[]})"));
+}
+
+TEST(FastReaders, RawUtf8MemberNamesAreTakenInvalidOnesMissed) {
+  const std::string site = R"({"id":"a","x":0,"y":0,"weight":1)";
+  EXPECT_TRUE(sites_fast_path_agrees("{\"format\":\"covmap.sites/1\",\"Größe\":1,\"sites\":[" + site + ",\"Zürich\":2}]}"));
+  EXPECT_FALSE(parse_sites_json_fast("{\"format\":\"covmap.sites/1\",\"\xC3\":1,\"sites\":[" + site + "}]}"));
+  EXPECT_FALSE(parse_sites_json_fast("{\"format\":\"covmap.sites/1\",\"\\u00e9\":1,\"sites\":[" + site + "}]}"));
 }
 
 TEST(FastReaders, ErrorsComeFromTheReferenceReader) {

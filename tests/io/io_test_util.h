@@ -9,6 +9,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "io/input_error.h"
 #include "io/local_projection.h"
@@ -82,6 +83,23 @@ inline InputError input_error_from(const std::function<void()>& f) {
   }
   ADD_FAILURE() << "expected an InputError";
   return InputError("", 0, "", "no error was thrown");
+}
+
+// Every single-byte deletion, replacement and insertion of `text`; counts the variants the fast
+// path took, so a test can make sure both outcomes were exercised.
+template <class Agrees>
+inline std::pair<int, int> mutate_all(const std::string& text, Agrees&& agrees) {
+  static constexpr char kBytes[] = {'"', ',', ':', '[', ']', '{', '}', '0', '1', '-', '.', 'e', ' ', 'n', '\\', '\x01'};
+  int taken = 0, missed = 0;
+  const auto run = [&](const std::string& variant) { (agrees(variant) ? taken : missed) += 1; };
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    run(text.substr(0, i) + text.substr(i + 1));
+    for (const char c : kBytes) {
+      if (c != text[i]) run(text.substr(0, i) + c + text.substr(i + 1));
+      run(text.substr(0, i) + c + text.substr(i));
+    }
+  }
+  return {taken, missed};
 }
 
 }  // namespace covmap::io::testing
