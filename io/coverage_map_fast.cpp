@@ -106,10 +106,7 @@ void scan_properties(JsonScan& scan, const std::string& sensor_property, Feature
       if (draft.sensor.empty()) throw FastPathMiss{};
     } else if (key == kNameProperty) {
       first_time(seen, kName);
-      if (!scan.null()) {
-        if (scan.peek() != '"') throw FastPathMiss{};
-        draft.name = scan.string();
-      }
+      scan_nullable_string(scan, draft.name);
     } else {
       scan.skip_value();
     }

@@ -117,4 +117,11 @@ inline void first_time(unsigned& seen, unsigned bit) {
   seen |= bit;
 }
 
+// A member that is a string or null (a name): null leaves `out` as it is; any other value misses.
+inline void scan_nullable_string(JsonScan& scan, std::string& out) {
+  if (scan.null()) return;
+  if (scan.peek() != '"') throw FastPathMiss{};
+  out = scan.string();
+}
+
 }  // namespace covmap::io::detail

@@ -66,10 +66,7 @@ void scan_properties(JsonScan& scan, FeatureScan& f) {
     else if (key == "power_sigma_db") first_time(seen, kPowerSigma), s.power_sigma_db = scan_optional_number(scan);
     else if (key == "name") {
       first_time(seen, kName);
-      if (!scan.null()) {
-        if (scan.peek() != '"') throw FastPathMiss{};
-        s.name = scan.string();
-      }
+      scan_nullable_string(scan, s.name);
     } else {
       scan.skip_value();
     }
