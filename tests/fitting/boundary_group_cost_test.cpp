@@ -14,6 +14,7 @@
 #include <ceres/loss_function.h>
 #include <ceres/problem.h>
 
+#include "fitting/boundary_group_cost.h"
 #include "fitting/problem_setup.h"
 #include "fitting/residuals.h"
 #include "fitting/robust_loss.h"
@@ -109,6 +110,85 @@ TEST(PairBlocks, PoseTheSameProblemUnderHuber) {
 TEST(PairBlocks, PoseTheSameProblemUnderALossWithPositiveCurvature) {
   const ceres::TolerantLoss loss(2.0, 1.0);
   expect_same_problem(&loss);
+}
+
+// The samples between sites a and b, as a PairCost takes them.
+std::vector<PairSample> pair_samples(const Scene& s, int a, int b) {
+  std::vector<PairSample> pair;
+  for (const BoundarySample& sample : s.samples)
+    if (sample.site_a == a && sample.site_b == b) pair.push_back({sample.p.x, sample.p.y, 1.0 / sample.sigma});
+  return pair;
+}
+
+// Ceres' inner iterations hold every site but one, so they ask a pair block for one side's
+// Jacobian only, which PairCost evaluates with half the derivative slots. Those rows must be the
+// full evaluation's, bit for bit (the inner iterations and the outer steps see one problem), and
+// so must the residuals. (Without any Jacobian the residuals come from plain doubles, as in
+// ceres::AutoDiffCostFunction, and may differ in the last bit.)
+TEST(PairBlocks, OneSidedJacobiansAreTheFullOnesBitForBit) {
+  const Scene s = scene();
+  const auto loss = make_loss(RobustLoss::kCauchy, 3.0);
+  const std::vector<PairSample> pair = pair_samples(s, 0, 1);
+  ASSERT_GE(pair.size(), 10u);
+  const PairCost cost(pair, loss.get());
+  const std::vector<SiteBlock> blocks = initial_blocks(s.sites);
+  const double* parameters[] = {blocks[0].data(), blocks[1].data()};
+  const std::size_t rows = pair.size(), entries = rows * kSiteBlockSize;
+  std::vector<double> r_full(rows), ja_full(entries), jb_full(entries);
+  double* both[] = {ja_full.data(), jb_full.data()};
+  ASSERT_TRUE(cost.Evaluate(parameters, r_full.data(), both));
+  const double rho_full = cost.last_rho();
+  std::vector<double> r_a(rows), ja(entries, -1.0), r_b(rows), jb(entries, -1.0);
+  double* only_a[] = {ja.data(), nullptr};
+  double* only_b[] = {nullptr, jb.data()};
+  ASSERT_TRUE(cost.Evaluate(parameters, r_a.data(), only_a));
+  EXPECT_EQ(cost.last_rho(), rho_full);
+  ASSERT_TRUE(cost.Evaluate(parameters, r_b.data(), only_b));
+  EXPECT_EQ(cost.last_rho(), rho_full);
+  for (std::size_t i = 0; i < rows; ++i) {
+    EXPECT_EQ(r_a[i], r_full[i]) << "sample " << i;
+    EXPECT_EQ(r_b[i], r_full[i]) << "sample " << i;
+  }
+  for (std::size_t k = 0; k < entries; ++k) {
+    EXPECT_EQ(ja[k], ja_full[k]) << "entry " << k;
+    EXPECT_EQ(jb[k], jb_full[k]) << "entry " << k;
+  }
+  // And the sides are not trivially equal: each carries its own derivatives.
+  EXPECT_NE(ja_full, jb_full);
+}
+
+// A PairCost copies its last evaluation when asked for the same point again (boundary_group_cost.h).
+// The oracle is a fresh PairCost, which has nothing to copy: at a point seen before, at a point one
+// micrometre away and back at the first, each answer must be the fresh one's, bit for bit.
+TEST(PairBlocks, AnEvaluationAgainAtTheSamePointIsAFreshOne) {
+  const Scene s = scene();
+  const auto loss = make_loss(RobustLoss::kCauchy, 3.0);
+  const std::vector<PairSample> pair = pair_samples(s, 1, 4);
+  ASSERT_GE(pair.size(), 10u);
+  const std::vector<SiteBlock> blocks = initial_blocks(s.sites);
+  SiteBlock moved = blocks[4];
+  moved[0] += 1e-6;  // a micrometre: every residual changes
+  struct Answer {
+    std::vector<double> residuals, ja, jb;
+    double rho = 0.0;
+    bool operator==(const Answer&) const = default;
+  };
+  const std::size_t rows = pair.size();
+  auto evaluate_pair = [rows](const PairCost& cost, const SiteBlock& a, const SiteBlock& b) {
+    Answer out{std::vector<double>(rows), std::vector<double>(rows * kSiteBlockSize), std::vector<double>(rows * kSiteBlockSize)};
+    const double* parameters[] = {a.data(), b.data()};
+    double* jacobians[] = {out.ja.data(), out.jb.data()};
+    EXPECT_TRUE(cost.Evaluate(parameters, out.residuals.data(), jacobians));
+    out.rho = cost.last_rho();
+    return out;
+  };
+  const PairCost kept(pair, loss.get());
+  const SiteBlock* sequence[] = {&blocks[4], &blocks[4], &moved, &moved, &blocks[4]};
+  for (const SiteBlock* b : sequence) {
+    const PairCost fresh(pair, loss.get());
+    EXPECT_TRUE(evaluate_pair(kept, blocks[1], *b) == evaluate_pair(fresh, blocks[1], *b));
+  }
+  EXPECT_FALSE(evaluate_pair(kept, blocks[1], moved) == evaluate_pair(kept, blocks[1], blocks[4]));
 }
 
 }  // namespace
