@@ -190,6 +190,11 @@ inline constexpr std::size_t kLocalFreeRings = 2;
 // A candidate start within this many bins of the current site or of another candidate descends to
 // the same minimum (a local minimum's basin is several bins wide) and is not solved again.
 inline constexpr double kLocalSameStartBins = 2.0;
+// An island host is a suspect only when its boundaries with its other neighbours could hide a move
+// of this many bins (σ·√n, local_resolve.cpp): the inverse-point ambiguity of an island's circle
+// moves the host by several bins (docs/ACCURACY.md: one ended 8 bins off), and a local minimum's
+// basin is kLocalSameStartBins wide.
+inline constexpr double kLocalIslandHostHiddenBins = 2.0;
 // Iteration cap of one local re-solve (a few dozen sensors; most converge in far fewer).
 inline constexpr int kLocalMaxIterations = 50;
 }  // namespace covmap::audit::tolerance

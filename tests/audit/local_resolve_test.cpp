@@ -5,6 +5,7 @@
 // the truth (docs/ACCURACY.md's target). Each test first asserts that the minimum is really there.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <string>
@@ -36,15 +37,15 @@ struct Pipeline {
 
 // 60 sensors, 2 km apart on average, 100 m bins, exact staircases, through the audit's stages up
 // to a converged refinement.
-void run_to_refinement(Pipeline& p) {
+void run_to_refinement(Pipeline& p, double weight_ratio = 3.0, unsigned seed = 7) {
   mapgen::RandomSitesOptions ro;
   ro.count = 60;
   ro.width_m = ro.height_m = 2000.0 * std::sqrt(60.0);
-  ro.weight_ratio = 3.0;
-  ro.seed = 7;
+  ro.weight_ratio = weight_ratio;
+  ro.seed = seed;
   mapgen::CoverageMapOptions o;
   o.bin_size_m = kBin;
-  o.seed = 7;
+  o.seed = seed;
   p.generated = mapgen::generate_coverage_map(mapgen::random_sites(ro), o);
   for (const mapgen::MapFeature& f : p.generated.features) {
     CoverageCell cell{p.generated.truth[f.sensor].id, static_cast<int>(p.map.size()), {}};
@@ -135,6 +136,53 @@ TEST(LocalResolve, MergedNeighboursAreSeparatedAgain) {
   merged[a].weight = merged[b].weight * (1.0 - 1e-7);
   p.refined = refine_from(p.setup, merged, p.cells.centroids, p.messages);
   ASSERT_GT(largest(errors_in_bins(p)), 3.0) << "the joint refinement left the merged pair by itself: no regression";
+
+  resolve_misplaced(p.setup, p.estimates, p.cells, p.raster, p.reported_of, p.refined, p.messages);
+  expect_repaired(p);
+}
+
+// An island's boundary is an Apollonius circle, which the island's and its host's sites fix only up
+// to a family: the island anywhere inside, the host at its inverse point, their weight ratio the
+// island's distance from the centre over the radius. A host that its other boundaries pin down is
+// no suspect by itself (local_resolve.cpp, drop_pinned_island_hosts): moved with its island along
+// that family by several bins, which leaves the circle as it was, the pair must still be found (by
+// the host's misfit of its other boundaries, or the island's) and solved back to the truth.
+TEST(LocalResolve, IslandHostMovedAlongItsIslandsCircleIsRepaired) {
+  Pipeline p;
+  run_to_refinement(p, 6.0, 11);
+  resolve_misplaced(p.setup, p.estimates, p.cells, p.raster, p.reported_of, p.refined, p.messages);
+  ASSERT_LT(largest(errors_in_bins(p)), 3.0) << "not converged in the first place";
+  std::vector<std::vector<int>> neighbours(p.setup.n);
+  for (const fitting::BoundarySample& s : p.setup.samples) {
+    if (s.site_b == kNone) continue;
+    neighbours[s.site_a].push_back(s.site_b);
+    neighbours[s.site_b].push_back(s.site_a);
+  }
+  int island = kNone, host = kNone;
+  for (std::size_t j = 0; j < p.setup.n && island == kNone; ++j) {
+    std::sort(neighbours[j].begin(), neighbours[j].end());
+    neighbours[j].erase(std::unique(neighbours[j].begin(), neighbours[j].end()), neighbours[j].end());
+    if (neighbours[j].size() == 1) island = static_cast<int>(j), host = neighbours[j][0];
+  }
+  ASSERT_NE(island, kNone) << "no island on this map: nothing to test";
+  Site& in = p.refined.sites[island];
+  Site& out = p.refined.sites[host];
+  const double k = in.weight / out.weight;
+  ASSERT_LT(k, 1.0);
+  const Point c{(in.x - k * k * out.x) / (1 - k * k), (in.y - k * k * out.y) / (1 - k * k)};
+  const double radius = k * std::hypot(in.x - out.x, in.y - out.y) / (1 - k * k);
+  // The host 5 bins further from the centre, the island at its inverse point.
+  const double from_centre = std::hypot(out.x - c.x, out.y - c.y), moved = from_centre + 5.0 * kBin;
+  const Point unit{(out.x - c.x) / from_centre, (out.y - c.y) / from_centre};
+  out.x = c.x + moved * unit.x, out.y = c.y + moved * unit.y;
+  const double inverse = radius * radius / moved;
+  in.x = c.x + inverse * unit.x, in.y = c.y + inverse * unit.y;
+  in.weight = out.weight * radius / moved;
+  // The circle is unchanged: a point on it stays equidistant in the weighted sense.
+  const Point on{c.x + radius, c.y};
+  EXPECT_NEAR(std::hypot(on.x - in.x, on.y - in.y) / in.weight, std::hypot(on.x - out.x, on.y - out.y) / out.weight,
+              1e-9 * radius / in.weight);
+  ASSERT_GT(largest(errors_in_bins(p)), 3.0) << "the move is not a regression to test";
 
   resolve_misplaced(p.setup, p.estimates, p.cells, p.raster, p.reported_of, p.refined, p.messages);
   expect_repaired(p);
