@@ -69,19 +69,21 @@ void write_audit_reports(const AuditReportContext& context, GisFormat format, io
   AuditReportContext layer_context = context;
   layer_context.render.crs_coordinates = context.render.crs_coordinates || format == GisFormat::kGeoPackage;
   if (format == GisFormat::kGeoJson) {
-    // The diagram layer is by far the largest (58 MB at 10⁴ cells) and reads only the finished
-    // result: it is written on a second thread while the others are.
+    // Every file reads only the finished result. The diagram layer is by far the largest (58 MB at
+    // 10⁴ cells), the HTML page next (its map drawn from the cells and diagrams): each is written
+    // on a thread of its own while the rest are (measured at 10⁴ cells: 0.8, 0.7 and 0.5 s of CPU).
     std::future<void> diagram = std::async(std::launch::async, [&] {
       streamed("diagram.geojson", write_diagram_geojson, layer_context);
     });
+    std::future<void> html = std::async(std::launch::async, [&] { streamed("report.html", write_audit_html, context); });
     say("report.json");
     streamed("report.json", write_audit_json, context);
-    say("report.html");
-    streamed("report.html", write_audit_html, context);
     say("sensors.geojson");
     streamed("sensors.geojson", write_sensors_geojson, layer_context);
     say("shifts.geojson");
     streamed("shifts.geojson", write_shifts_geojson, layer_context);
+    say("report.html");
+    html.get();
     say("diagram.geojson");
     diagram.get();
     return;
