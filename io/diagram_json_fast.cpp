@@ -100,13 +100,14 @@ class GraphScan {
     if (requested_ == ArcLabels::kIgnored) return scan_.skip_value();
     // Labels are read by the arcs; arcs already read cannot take them any more.
     if (seen_ & kArcs) throw FastPathMiss{};
-    std::vector<SiteDraft> drafts = scan_site_drafts(scan_);
+    SiteTable table = scan_sites(scan_);
     // kOptional: an empty list means an arc graph without sites.
-    if (drafts.empty() && labels_ == ArcLabels::kOptional) {
+    if (table.sites.empty() && labels_ == ArcLabels::kOptional) {
       labels_ = ArcLabels::kIgnored;
       return;
     }
-    diagram_.sites = finish_sites_or_miss(std::move(drafts)).sites;
+    check_sites_or_miss(table);
+    diagram_.sites = std::move(table.sites);
   }
 
   void nodes() {

@@ -32,11 +32,12 @@ std::optional<Diagram> parse_diagram_json_fast(std::string_view text, ArcLabels 
 // The reference arc graph reader (the sites one is parse_sites_json in site_parsers.h).
 Diagram parse_diagram_json_reference(std::string_view text, const std::string& file, ArcLabels labels);
 
-// The elements of a "sites" array, each checked as one site (check_site_values); misses on any
-// problem. Empty when the array is.
-std::vector<SiteDraft> scan_site_drafts(JsonScan& scan);
-// finish_sites, missing instead of throwing.
-SiteTable finish_sites_or_miss(std::vector<SiteDraft> drafts);
+// The elements of a "sites" array, each checked as one site (site_values_valid), with their
+// origins ("sites[3]"); misses on any problem. Empty when the array is.
+SiteTable scan_sites(JsonScan& scan);
+// finish_sites's whole-list checks (at least one site, unique ids, unique positions), missing
+// instead of throwing.
+void check_sites_or_miss(const SiteTable& table);
 
 // Reads the object that comes next: member(key) for each member, which must read the value.
 template <class Member>

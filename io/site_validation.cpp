@@ -1,10 +1,14 @@
 #include "io/site_validation.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <functional>
+#include <limits>
 #include <numeric>
+#include <stdexcept>
 #include <string_view>
-#include <unordered_map>
 
 #include "core/large_buffer.h"
 #include "io/text_util.h"
@@ -15,6 +19,10 @@ std::string site_label(const SiteDraft& draft) {
   const std::string id = draft.site.id.empty() ? "" : "site " + quote_id(draft.site.id);
   if (draft.line > 0) return id.empty() ? "row" : id;
   return id.empty() ? draft.origin : draft.origin + " (" + id + ")";
+}
+
+bool site_values_valid(const Site& s) {
+  return std::isfinite(s.x) && std::isfinite(s.y) && std::isfinite(s.weight) && s.weight > 0;
 }
 
 void check_site_values(SiteDraft& draft) {
@@ -33,32 +41,77 @@ namespace {
 // "site 'a' (line 4)" / "site 'a' (sites[0])": how a message refers to the other site of a pair.
 std::string reference(const SiteDraft& other) { return "site " + quote_id(other.site.id) + " (" + other.origin + ")"; }
 
-void check_unique_ids(std::vector<SiteDraft>& drafts) {
-  // Views into the drafts' own ids (no copies: a million sites would be a million strings more).
-  std::unordered_map<std::string_view, std::size_t> first;
-  first.reserve(drafts.size());
-  for (std::size_t i = 0; i < drafts.size(); ++i) {
-    if (drafts[i].site.id.empty()) continue;  // already reported as missing
-    const auto [it, inserted] = first.emplace(drafts[i].site.id, i);
-    if (!inserted) drafts[i].problems.push_back("duplicate id; first used by " + reference(drafts[it->second]));
+// The first key of each value, in a flat open-addressing table (linear probing, at most half
+// full), with no allocation per key. Issue 16: the std::unordered_map it replaces for ids allocated
+// a node per site and, at 10^6 sites, took a cache miss for the bucket, the node and its cached
+// hash on every probe (56 MB of them scattered over fresh 4 KiB pages), then freed a million nodes:
+// half of reading 10^6 sites, against a tenth at 10^5, where all of it fitted in the cache.
+// Each slot holds the upper half of a key's hash and its index + 1 (0: empty), so a probe only
+// looks at the key itself when the halves agree. Keys are inserted in increasing index order, so
+// the index kept for a value is that of its first key.
+class FirstOfEqualKeys {
+ public:
+  explicit FirstOfEqualKeys(std::size_t keys) {
+    if (keys >= std::numeric_limits<std::uint32_t>::max()) throw std::length_error("FirstOfEqualKeys: too many keys");
+    const std::size_t size = std::bit_ceil(std::max<std::size_t>(2 * keys, 16));
+    slots_.reserve(size);
+    advise_huge_pages(slots_.data(), size * sizeof(std::uint64_t));  // core/large_buffer.h
+    slots_.resize(size);
+    mask_ = size - 1;
+  }
+
+  // The first index whose key equals key `index` (same_key_as(j): key j equals it), recording
+  // `index` as the first when there is none; then it returns `index` itself.
+  template <class SameKeyAs>
+  std::size_t first(std::uint64_t hash, std::size_t index, SameKeyAs&& same_key_as) {
+    const std::uint64_t tag = hash >> 32;  // the lower half places the key, the upper half is kept
+    for (std::size_t s = hash & mask_;; s = (s + 1) & mask_) {
+      const std::uint64_t slot = slots_[s];
+      if (slot == 0) {
+        slots_[s] = tag << 32 | (index + 1);
+        return index;
+      }
+      const std::size_t other = (slot & 0xffff'ffff) - 1;
+      if (slot >> 32 == tag && same_key_as(other)) return other;
+    }
+  }
+
+ private:
+  std::vector<std::uint64_t> slots_;
+  std::size_t mask_ = 0;
+};
+
+}  // namespace
+
+void find_repeated_ids(std::size_t count, const SiteAt& site, const Repeat& repeat) {
+  // Views into the sites' own ids (no copies: a million sites would be a million strings more).
+  FirstOfEqualKeys first(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const Site* s = site(i);
+    if (!s) continue;
+    const std::string_view id = s->id;
+    const std::size_t j = first.first(std::hash<std::string_view>{}(id), i, [&](std::size_t k) { return site(k)->id == id; });
+    if (j != i) repeat(i, j);
   }
 }
 
-void check_unique_positions(std::vector<SiteDraft>& drafts) {
+void find_repeated_positions(std::size_t count, const SiteAt& site, const Repeat& repeat) {
   // Exact equality only: nearly coincident sites are legal input, and deciding how near is too near
-  // belongs to the engine's tolerances, not to the file reader.
+  // belongs to the engine's tolerances, not to the file reader. Sorted rather than hashed: a sort
+  // stays n log n whatever the coordinates, where a hash of numbers a file chooses can be made to
+  // collide.
   struct Position {
     double x, y;
     std::size_t index;  // the tie-break keeps file order within a position: the first is reported against
     auto operator<=>(const Position&) const = default;
   };
-  // Sorted as compact records, not as indices into the drafts (whose scattered reads made this the
+  // Sorted as compact records, not as indices into the sites (whose scattered reads made this the
   // slowest part of reading a million sites).
   std::vector<Position> order;
-  order.reserve(drafts.size());
+  order.reserve(count);
   advise_huge_pages(order.data(), order.capacity() * sizeof(Position));
-  for (std::size_t i = 0; i < drafts.size(); ++i) {
-    if (drafts[i].usable()) order.push_back({drafts[i].site.x, drafts[i].site.y, i});
+  for (std::size_t i = 0; i < count; ++i) {
+    if (const Site* s = site(i)) order.push_back({s->x, s->y, i});
   }
   std::sort(order.begin(), order.end());
   std::size_t run_start = 0;  // first site (in sorted order) at the current position
@@ -67,10 +120,29 @@ void check_unique_positions(std::vector<SiteDraft>& drafts) {
       run_start = k;
       continue;
     }
-    const auto& s = drafts[order[k].index].site;
-    drafts[order[k].index].problems.push_back("same position (" + format_number(s.x) + ", " + format_number(s.y) +
-                                              ") as " + reference(drafts[order[run_start].index]));
+    repeat(order[k].index, order[run_start].index);
   }
+}
+
+namespace {
+
+void check_unique_ids(std::vector<SiteDraft>& drafts) {
+  // Drafts with no id have it reported as missing already.
+  find_repeated_ids(
+      drafts.size(), [&](std::size_t i) { return drafts[i].site.id.empty() ? nullptr : &drafts[i].site; },
+      [&](std::size_t i, std::size_t first) {
+        drafts[i].problems.push_back("duplicate id; first used by " + reference(drafts[first]));
+      });
+}
+
+void check_unique_positions(std::vector<SiteDraft>& drafts) {
+  find_repeated_positions(
+      drafts.size(), [&](std::size_t i) { return drafts[i].usable() ? &drafts[i].site : nullptr; },
+      [&](std::size_t i, std::size_t first) {
+        const auto& s = drafts[i].site;
+        drafts[i].problems.push_back("same position (" + format_number(s.x) + ", " + format_number(s.y) + ") as " +
+                                     reference(drafts[first]));
+      });
 }
 
 }  // namespace
