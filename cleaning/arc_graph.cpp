@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "cleaning/curve_fit.h"
+#include "core/parallel.h"
 
 namespace covmap::cleaning {
 namespace {
@@ -231,7 +232,7 @@ std::vector<Point> simplify_closed(std::span<const Point> points, double tol) {
   return out;
 }
 
-void build_graph(CleanedMap& map, double snap, double huber) {
+void build_graph(CleanedMap& map, double snap, double huber, int threads) {
   auto& g = map.graph;
   g.nodes.clear();
   g.arcs.clear();
@@ -244,6 +245,18 @@ void build_graph(CleanedMap& map, double snap, double huber) {
   const auto add_arc = [&](Arc arc, std::size_t chain) {
     g.arcs.push_back(std::move(arc));
     map.arc_chain.push_back(static_cast<int>(chain));
+  };
+  // Non-frame arcs are fitted (fit_through) after every node is placed, on the threads, each into
+  // its own slot of g.arcs: the nodes and the arcs' order are settled first, in chain order.
+  struct BoundaryArc {
+    std::size_t arc = 0, chain = 0;
+    int from = kNone, to = kNone;
+    std::vector<Point> half;  // a half of a loop through one junction; empty: the chain's points
+  };
+  std::vector<BoundaryArc> boundary;
+  const auto add_boundary_arc = [&](std::size_t chain, int from, int to, std::vector<Point> half) {
+    boundary.push_back({g.arcs.size(), chain, from, to, std::move(half)});
+    add_arc(Arc{}, chain);
   };
   const double tiny = tolerance::kTouching * snap;
 
@@ -277,11 +290,11 @@ void build_graph(CleanedMap& map, double snap, double huber) {
       continue;
     }
     if (chain.from == kNone) {  // closed loop: the fitted circle itself
-      add_arc(boundary_arc(chain, pts, kNone, kNone, g.nodes, huber), c);
+      add_boundary_arc(c, kNone, kNone, {});
       continue;
     }
     if (chain.from != chain.to) {
-      add_arc(boundary_arc(chain, pts, chain.from, chain.to, g.nodes, huber), c);
+      add_boundary_arc(c, chain.from, chain.to, {});
       continue;
     }
     // A loop through one junction: split at its point farthest from the junction (moved onto the
@@ -295,9 +308,15 @@ void build_graph(CleanedMap& map, double snap, double huber) {
     std::vector<Point> first(pts.begin(), pts.begin() + static_cast<std::ptrdiff_t>(far) + 1);
     std::vector<Point> second(pts.begin() + static_cast<std::ptrdiff_t>(far), pts.end());
     first.back() = second.front() = {g.nodes[middle].x, g.nodes[middle].y};
-    add_arc(boundary_arc(chain, first, chain.from, middle, g.nodes, huber), c);
-    add_arc(boundary_arc(chain, second, middle, chain.to, g.nodes, huber), c);
+    add_boundary_arc(c, chain.from, middle, std::move(first));
+    add_boundary_arc(c, middle, chain.to, std::move(second));
   }
+  parallel_items(boundary.size(), threads, [&](std::size_t k) {
+    const BoundaryArc& b = boundary[k];
+    const BoundaryChain& chain = map.chains[b.chain];
+    const std::span<const Point> pts = b.half.empty() ? std::span<const Point>(chain.points) : std::span<const Point>(b.half);
+    g.arcs[b.arc] = boundary_arc(chain, pts, b.from, b.to, g.nodes, huber);
+  });
 }
 
 }  // namespace covmap::cleaning

@@ -31,7 +31,8 @@ std::vector<Point> simplify_closed(std::span<const Point> points, double toleran
 // map.chains (points now with their junctions at both ends, frame chains simplified) and
 // map.junctions → map.graph nodes and arcs, map.arc_chain. Non-frame arcs lie on their chain's
 // curve refitted through the arc's end nodes (fit_through), so every arc ends exactly on its curve.
-// graph.sites must already hold one site per sensor.
-void build_graph(CleanedMap& map, double snap, double huber);
+// graph.sites must already hold one site per sensor. threads: for the refits (the graph is the
+// same whatever the count).
+void build_graph(CleanedMap& map, double snap, double huber, int threads = 1);
 
 }  // namespace covmap::cleaning

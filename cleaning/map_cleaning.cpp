@@ -98,8 +98,12 @@ CleanedMap clean_coverage_map(std::span<const CoverageCell> cells, const Cleanin
   for (const auto& ring : rings.rings) perimeter += ring.perimeter();
   if (!(snap > 0.0) || perimeter / (cleaning::tolerance::kSampleSpacing * snap) > cleaning::tolerance::kMaxSamples)
     throw SnapTooSmall(snap, perimeter);
-  const cleaning::BoundaryIndex index(rings.rings, snap);
-  cleaning::Topology topology = cleaning::build_topology(index, options.min_chain_length * snap, options.threads);
+  // The edge index serves only the topology: released before the fits (it is a large part of the
+  // memory at its peak).
+  cleaning::Topology topology = [&] {
+    const cleaning::BoundaryIndex index(rings.rings, snap, options.threads);
+    return cleaning::build_topology(index, options.min_chain_length * snap, options.threads);
+  }();
   report.junctions_merged = topology.junctions_merged;
   report.short_chains_dropped = topology.short_chains_dropped;
   report.gaps_closed = topology.gaps_closed;
@@ -154,7 +158,7 @@ CleanedMap clean_coverage_map(std::span<const CoverageCell> cells, const Cleanin
   report.range_edges = out.range_edges.size();
   report.chains = out.chains.size();
   report.junctions = out.junctions.size();
-  cleaning::build_graph(out, snap, huber);
+  cleaning::build_graph(out, snap, huber, options.threads);
   return out;
 }
 

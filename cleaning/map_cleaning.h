@@ -77,7 +77,8 @@ struct CleaningOptions {
   double min_chain_length = 4.0;
   // A line is preferred over a circle when its rms is within this factor of the circle's.
   double line_preference = 1.05;
-  // Threads for the rings' boundary sampling (the result is the same whatever the count). >= 1.
+  // Threads for indexing, sampling and reading the rings and for fitting the chains and arcs (the
+  // result is the same whatever the count). >= 1.
   int threads = 1;
 };
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "core/parallel.h"
+
 namespace covmap::cleaning {
 
 UniformGrid::UniformGrid(double cell, Index index) : cell_(cell), index_kind_(index) {
@@ -12,37 +14,58 @@ UniformGrid::UniformGrid(double cell, Index index) : cell_(cell), index_kind_(in
 
 void UniformGrid::add_point(int item, Point p) { entries_.emplace_back(key(0, index(p.x, 0), index(p.y, 0)), item); }
 
-void UniformGrid::add_segment(int item, Point a, Point b) {
+void UniformGrid::add_segment(int item, Point a, Point b) { segment_entries(level_cell_, item, a, b, entries_, levels_used_); }
+
+void UniformGrid::Batch::add_segment(int item, Point a, Point b) {
+  segment_entries(level_cell_, item, a, b, entries_, levels_used_);
+}
+
+void UniformGrid::append(std::vector<Batch>&& batches) {
+  std::size_t total = entries_.size();
+  for (const Batch& batch : batches) total += batch.entries_.size();
+  if (entries_.empty() && !batches.empty() && batches.front().entries_.capacity() >= total) {
+    entries_.swap(batches.front().entries_);  // one batch: its entries as they are
+  }
+  entries_.reserve(total);
+  for (Batch& batch : batches) {
+    levels_used_ |= batch.levels_used_;
+    entries_.insert(entries_.end(), batch.entries_.begin(), batch.entries_.end());
+    batch.entries_ = {};  // released as soon as copied
+  }
+}
+
+void UniformGrid::segment_entries(const double* level_cell, int item, Point a, Point b,
+                                  std::vector<std::pair<std::uint64_t, int>>& entries, std::uint32_t& levels_used) {
   // Pieces no longer than a cell: each piece's bounding box spans at most 2×2 cells and contains
   // every cell the piece passes through, so their union covers the segment's cells.
   const double length = std::hypot(b.x - a.x, b.y - a.y);
   int level = 0;
-  while (level + 1 < kLevels && !(length <= kMaxCellsPerSegment * level_cell_[level])) ++level;
-  levels_used_ |= 1u << level;
+  while (level + 1 < kLevels && !(length <= kMaxCellsPerSegment * level_cell[level])) ++level;
+  levels_used |= 1u << level;
   if (level == kLevels - 1) {  // longer than any finite map: one cell that every query visits
-    entries_.emplace_back(key(level, 0, 0), item);
+    entries.emplace_back(key(level, 0, 0), item);
     return;
   }
-  const double cell = level_cell_[level];
+  const double cell = level_cell[level];
   const int pieces = std::max(1, static_cast<int>(std::ceil(std::min(length / cell, kMaxCellsPerSegment))));
-  const std::size_t first = entries_.size();
+  const std::size_t first = entries.size();
   for (int k = 0; k < pieces; ++k) {
     const double t0 = static_cast<double>(k) / pieces, t1 = static_cast<double>(k + 1) / pieces;
     const double x0 = a.x + (b.x - a.x) * t0, y0 = a.y + (b.y - a.y) * t0;
     const double x1 = a.x + (b.x - a.x) * t1, y1 = a.y + (b.y - a.y) * t1;
-    for (std::int64_t iy = index(std::min(y0, y1), level); iy <= index(std::max(y0, y1), level); ++iy)
-      for (std::int64_t ix = index(std::min(x0, x1), level); ix <= index(std::max(x0, x1), level); ++ix)
-        entries_.emplace_back(key(level, ix, iy), item);
+    for (std::int64_t iy = index(std::min(y0, y1), level_cell, level); iy <= index(std::max(y0, y1), level_cell, level); ++iy)
+      for (std::int64_t ix = index(std::min(x0, x1), level_cell, level); ix <= index(std::max(x0, x1), level_cell, level); ++ix)
+        entries.emplace_back(key(level, ix, iy), item);
   }
   // Consecutive pieces share cells: keep each cell once for this segment.
-  std::sort(entries_.begin() + static_cast<std::ptrdiff_t>(first), entries_.end());
-  entries_.erase(std::unique(entries_.begin() + static_cast<std::ptrdiff_t>(first), entries_.end()), entries_.end());
+  std::sort(entries.begin() + static_cast<std::ptrdiff_t>(first), entries.end());
+  entries.erase(std::unique(entries.begin() + static_cast<std::ptrdiff_t>(first), entries.end()), entries.end());
 }
 
-void UniformGrid::finish() {
+void UniformGrid::finish(int threads) {
   // Stable: within a cell, items keep insertion order (which is deterministic).
-  std::stable_sort(entries_.begin(), entries_.end(),
-                   [](const auto& l, const auto& r) { return l.first < r.first; });
+  parallel_stable_sort(entries_.begin(), entries_.end(), threads,
+                       [](const auto& l, const auto& r) { return l.first < r.first; });
   std::size_t cells = 0;
   for (std::size_t k = 0; k < entries_.size(); ++k) cells += k == 0 || entries_[k].first != entries_[k - 1].first;
   std::size_t capacity = 16;

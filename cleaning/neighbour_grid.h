@@ -2,6 +2,8 @@
 // come within one cell of p". Internal to map_cleaning.
 //
 // Contract: cell > 0 and finite. Items are added, then finish() is called once, then queries run.
+// Segments may also be gathered in Batches (one per thread) and appended in order: the grid is the
+// same as if their segments had been added directly in that order.
 // for_each_near(p, f) calls f(item) for every item that has a point within distance `cell` of p
 // (and possibly for some farther ones, and possibly more than once: callers compute the exact
 // distance themselves); for_each_within_half_cell likewise for distance cell / 2.
@@ -31,10 +33,26 @@ class UniformGrid {
   enum class Index { kAuto, kHashOnly };  // kHashOnly: never the dense table (tests compare the two)
   explicit UniformGrid(double cell, Index index = Index::kAuto);
 
+  // Segments' entries gathered apart from the grid (on another thread), for append().
+  class Batch {
+   public:
+    explicit Batch(const UniformGrid& grid) : level_cell_(grid.level_cell_) {}
+    void add_segment(int item, Point a, Point b);
+
+   private:
+    friend class UniformGrid;
+    const double* level_cell_;
+    std::uint32_t levels_used_ = 0;
+    std::vector<std::pair<std::uint64_t, int>> entries_;
+  };
+
   void add_point(int item, Point p);
   // Registered in every cell the segment passes through.
   void add_segment(int item, Point a, Point b);
-  void finish();
+  // The batches' entries after those added so far, in the batches' order.
+  void append(std::vector<Batch>&& batches);
+  // threads: for sorting the entries (the result is the same whatever the count).
+  void finish(int threads = 1);
 
   template <class F>
   void for_each_near(Point p, F&& f) const {
@@ -109,10 +127,7 @@ class UniformGrid {
     return x ^ (x >> 31);
   }
   // Clamped before the conversion, which is undefined beyond the range of int64.
-  std::int64_t index(double v, int level) const {
-    const double i = std::floor(v / level_cell_[level]);
-    return static_cast<std::int64_t>(std::clamp(i, -4e18, 4e18));
-  }
+  std::int64_t index(double v, int level) const { return index(v, level_cell_, level); }
   // Modulo 2^28, offset by 2^27 so that the indices around 0 (maps centred on their origin) stay
   // in order: a dense table needs its box unbroken by the wrap.
   static constexpr int kAxisBits = 28;
@@ -127,6 +142,14 @@ class UniformGrid {
   // Row-major: sorted keys list a level's cells row by row, x increasing within a row.
   static std::uint64_t key(int level, std::int64_t ix, std::int64_t iy) {
     return (static_cast<std::uint64_t>(level) << 56) | (wrapped(iy) << kAxisBits) | wrapped(ix);
+  }
+
+  // Appends the entries of segment a–b to `entries` and marks its level in `levels_used`.
+  static void segment_entries(const double* level_cell, int item, Point a, Point b,
+                              std::vector<std::pair<std::uint64_t, int>>& entries, std::uint32_t& levels_used);
+  static std::int64_t index(double v, const double* level_cell, int level) {
+    const double i = std::floor(v / level_cell[level]);
+    return static_cast<std::int64_t>(std::clamp(i, -4e18, 4e18));
   }
 
   double cell_;

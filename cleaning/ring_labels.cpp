@@ -5,41 +5,44 @@
 #include <cmath>
 #include <limits>
 
+#include "core/parallel.h"
+
 namespace covmap::cleaning {
 
 
-BoundaryIndex::BoundaryIndex(const std::vector<BoundaryRing>& rings, double snap)
+BoundaryIndex::BoundaryIndex(const std::vector<BoundaryRing>& rings, double snap, int threads)
     : rings_(rings), snap_(snap), grid_(tolerance::kRelabelRadius * snap) {
   std::size_t edges = 0;
   for (const BoundaryRing& r : rings) {
     first_edge_.push_back(edges);
     edges += r.size();
   }
-  edge_ring_.reserve(edges);
-  for (std::size_t r = 0; r < rings.size(); ++r) {
-    const BoundaryRing& ring = rings[r];
-    for (std::size_t i = 0; i < ring.size(); ++i) {
-      grid_.add_segment(static_cast<int>(edge_ring_.size()), ring.points[i], ring.points[(i + 1) % ring.size()]);
-      edge_ring_.push_back(static_cast<int>(r));
+  edges_.resize(edges);
+  // Contiguous runs of rings on the threads, each into its own batch of grid entries and its own
+  // range of edges; the batches are appended in ring order, so the grid is the one a single
+  // thread builds.
+  const int workers = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(threads), std::max<std::size_t>(rings.size(), 1)));
+  std::vector<UniformGrid::Batch> batches(static_cast<std::size_t>(workers), UniformGrid::Batch(grid_));
+  parallel_chunks(rings.size(), workers, [&](std::size_t begin, std::size_t end, int worker) {
+    UniformGrid::Batch& batch = batches[static_cast<std::size_t>(worker)];
+    for (std::size_t r = begin; r < end; ++r) {
+      const BoundaryRing& ring = rings[r];
+      for (std::size_t i = 0; i < ring.size(); ++i) {
+        const std::size_t k = first_edge_[r] + i;
+        const Point a = ring.points[i], b = ring.points[(i + 1) % ring.size()];
+        batch.add_segment(static_cast<int>(k), a, b);
+        const double length = ring.arc[i + 1] - ring.arc[i];
+        edges_[k] = {a, {(b.x - a.x) / length, (b.y - a.y) / length}, length, ring.sensor};
+      }
     }
-  }
-  grid_.finish();
+  });
+  grid_.append(std::move(batches));
+  grid_.finish(threads);
 }
 
 Across BoundaryIndex::across_at(int ring, std::size_t edge, Point p, int sensor, double radius) const {
   const std::size_t own = first_edge_[ring] + edge;
-  // An edge's start, unit direction and length, from its ring.
-  const auto geometry = [&](std::size_t k, Point& a, Point& u, double& length) {
-    const BoundaryRing& r = rings_[edge_ring_[k]];
-    const std::size_t i = k - first_edge_[edge_ring_[k]];
-    a = r.points[i];
-    const Point b = r.points[(i + 1) % r.size()];
-    length = r.arc[i + 1] - r.arc[i];
-    u = {(b.x - a.x) / length, (b.y - a.y) / length};
-  };
-  Point own_start, d;
-  double own_length = 0.0;
-  geometry(own, own_start, d, own_length);
+  const Point d = edges_[own].u;
   const int own_sensor = rings_[ring].sensor;
   const double overhang = tolerance::kEdgeOverhang * snap_;
   double best = radius * radius;  // squared distances from here on
@@ -48,17 +51,15 @@ Across BoundaryIndex::across_at(int ring, std::size_t edge, Point p, int sensor,
   const auto consider = [&](int e) {
     const auto k = static_cast<std::size_t>(e);
     if (k == own) return;
-    Point a, u;
-    double length = 0.0;
-    geometry(k, a, u, length);
+    const Edge& other = edges_[k];
+    const Point a = other.a, u = other.u;
     if (d.x * u.x + d.y * u.y > -tolerance::kAntiparallelCosine) return;
-    const int other = rings_[edge_ring_[k]].sensor;
-    if (sensor != kNone && other != sensor) return;
+    if (sensor != kNone && other.sensor != sensor) return;
     // Facing: p's foot lies on the other edge, give or take the overhang. Without this, the edge
     // of a neighbour that ends at a junction would still claim p for up to s beyond its end.
     const double along = (p.x - a.x) * u.x + (p.y - a.y) * u.y;
-    if (along < -overhang || along > length + overhang) return;
-    const double t = std::clamp(along, 0.0, length);
+    if (along < -overhang || along > other.length + overhang) return;
+    const double t = std::clamp(along, 0.0, other.length);
     const Point q{a.x + u.x * t, a.y + u.y * t};
     const double dist = (p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y);
     // Ties (an edge reported from two grid cells, or two edges meeting at q): the lower id.
@@ -73,16 +74,14 @@ Across BoundaryIndex::across_at(int ring, std::size_t edge, Point p, int sensor,
   best = std::sqrt(best);
   Across out;
   if (best_edge == std::numeric_limits<std::size_t>::max()) return out;
-  const int other = rings_[edge_ring_[best_edge]].sensor;
-  out.label = other == own_sensor ? kSelf : other;
+  const Edge& nearest = edges_[best_edge];
+  out.label = nearest.sensor == own_sensor ? kSelf : nearest.sensor;
   out.q = best_q;
   if (best <= tolerance::kTouching * snap_) {
     out.contact = Contact::kTouching;
   } else {
     // Left of the other copy's edge = inside the other cell (its cell is on its left).
-    Point a, u;
-    double length = 0.0;
-    geometry(best_edge, a, u, length);
+    const Point a = nearest.a, u = nearest.u;
     const double side = u.x * (p.y - a.y) - u.y * (p.x - a.x);
     out.contact = side > 0.0 ? Contact::kOverlap : Contact::kGap;
   }

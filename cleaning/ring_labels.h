@@ -37,7 +37,8 @@ struct Sample {
 
 class BoundaryIndex {
  public:
-  BoundaryIndex(const std::vector<BoundaryRing>& rings, double snap);
+  // threads: for indexing the rings' edges (the index is the same whatever the count).
+  BoundaryIndex(const std::vector<BoundaryRing>& rings, double snap, int threads = 1);
 
   // The cell across ring `ring` at arc length s.
   Across across(int ring, double s) const;
@@ -50,10 +51,19 @@ class BoundaryIndex {
   double snap() const { return snap_; }
 
  private:
+  // An edge as the queries read it, computed once from its ring (start, unit direction, length,
+  // the ring's sensor): one record per candidate instead of a walk through ring, points and arc
+  // lengths for every edge the grid reports.
+  struct Edge {
+    Point a;
+    Point u;
+    double length = 0.0;
+    int sensor = kNone;
+  };
   const std::vector<BoundaryRing>& rings_;
   double snap_;
   std::vector<std::size_t> first_edge_;  // per ring: its first global edge id
-  std::vector<int> edge_ring_;           // per global edge id: its ring (the geometry is the ring's)
+  std::vector<Edge> edges_;              // per global edge id
   UniformGrid grid_;
 };
 

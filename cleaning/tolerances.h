@@ -34,8 +34,8 @@ inline constexpr double kSnapMedianEdges = 0.5;
 // Boundary samples: every ring edge is cut into pieces no longer than this (× s); a sample is
 // the midpoint of a piece (never a vertex, where two edge directions compete).
 inline constexpr double kSampleSpacing = 1.0;
-// Rings sampled at once (on the threads) before they are read in order: enough to keep the
-// threads busy, few enough that their samples stay a small part of memory.
+// Rings sampled and read at once (on the threads) before their readings are combined in order:
+// enough to keep the threads busy, few enough that their samples stay a small part of memory.
 inline constexpr std::size_t kSampledRingsBatch = 256;
 // Work and memory grow with the total boundary length over the sample spacing: more samples
 // than this (a snap distance far below the map's scale) are refused rather than run out of memory.

@@ -49,6 +49,18 @@ struct PendingChain {
   int zone_from = kNone, zone_to = kNone;
 };
 
+// What one ring contributes: its junction candidates, its chains (zone ids counted from the ring's
+// own first zone) and its repair counts. Rings are read independently, on the threads; their
+// readings are then combined in ring order.
+struct RingReading {
+  std::vector<Zone> zones;
+  std::vector<PendingChain> chains;
+  std::size_t short_chains_dropped = 0;
+  std::size_t gaps_closed = 0;
+  std::size_t overlaps_resolved = 0;
+  std::size_t seams = 0;
+};
+
 class UnionFind {
  public:
   explicit UnionFind(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
@@ -65,21 +77,36 @@ class UnionFind {
   std::vector<std::size_t> parent_;
 };
 
-class Builder {
+// Reads one ring's samples into runs, zones and chains. Only reads the index: any number of rings
+// may be read at once.
+class RingReader {
  public:
-  Builder(const BoundaryIndex& index, double min_length) : index_(index), min_length_(min_length) {}
+  RingReader(const BoundaryIndex& index, double min_length) : index_(index), min_length_(min_length) {}
 
-  void read_ring(int r, const std::vector<Sample>& samples);
-  Topology finish();
+  RingReading read(int r, const std::vector<Sample>& samples) const;
 
  private:
   // Whether ring `own`'s run with this label yields a chain: frame runs always, boundaries from
   // the side of the smaller sensor index only.
   static bool reads(int own, int label) { return label == kOutside || (label >= 0 && own < label); }
-  void count_short_run(int own, int label, bool between_cells);
-  void add_chain(int r, const Walk& walk, std::size_t o_begin, std::size_t o_end, double t_begin,
-                 double t_end, int label, int zone_from, int zone_to, bool loop);
+  static void count_short_run(int own, int label, bool between_cells, RingReading& out);
+  void add_chain(int r, const Walk& walk, std::size_t o_begin, std::size_t o_end, double t_begin, double t_end,
+                 int label, int zone_from, int zone_to, bool loop, RingReading& out) const;
   void frame_points(const BoundaryRing& ring, double t_begin, double t_end, bool loop, std::vector<Point>& out) const;
+
+  const BoundaryIndex& index_;
+  double min_length_;
+};
+
+// Combines the rings' readings in ring order, then merges zones into junctions and joins chains.
+class Builder {
+ public:
+  Builder(const BoundaryIndex& index, double min_length) : index_(index), min_length_(min_length) {}
+
+  void add(RingReading&& reading);
+  Topology finish();
+
+ private:
   void join_degree_two(std::vector<RawChain>& chains, std::size_t junctions);
 
   const BoundaryIndex& index_;
@@ -89,18 +116,18 @@ class Builder {
   Topology out_;
 };
 
-void Builder::count_short_run(int own, int label, bool between_cells) {
+void RingReader::count_short_run(int own, int label, bool between_cells, RingReading& out) {
   if (label == kOutside) {
     // A little outside between two cells is a gap at a junction; on the frame, a frame piece too
     // short to keep.
-    if (between_cells) ++out_.gaps_closed;
-    else ++out_.short_chains_dropped;
+    if (between_cells) ++out.gaps_closed;
+    else ++out.short_chains_dropped;
   } else if (label >= 0 && own < label) {
-    ++out_.short_chains_dropped;
+    ++out.short_chains_dropped;
   }
 }
 
-void Builder::frame_points(const BoundaryRing& ring, double t_begin, double t_end, bool loop,
+void RingReader::frame_points(const BoundaryRing& ring, double t_begin, double t_end, bool loop,
                            std::vector<Point>& out) const {
   const std::size_t nv = ring.size();
   if (loop) {
@@ -120,12 +147,12 @@ void Builder::frame_points(const BoundaryRing& ring, double t_begin, double t_en
   }
 }
 
-void Builder::add_chain(int r, const Walk& walk, std::size_t o_begin, std::size_t o_end, double t_begin,
-                        double t_end, int label, int zone_from, int zone_to, bool loop) {
+void RingReader::add_chain(int r, const Walk& walk, std::size_t o_begin, std::size_t o_end, double t_begin,
+                           double t_end, int label, int zone_from, int zone_to, bool loop, RingReading& out) const {
   const BoundaryRing& ring = index_.rings()[r];
   const int own = ring.sensor;
   if (label == kSelf) {
-    ++out_.seams;
+    ++out.seams;
     return;
   }
   if (!reads(own, label)) return;
@@ -146,20 +173,21 @@ void Builder::add_chain(int r, const Walk& walk, std::size_t o_begin, std::size_
       if (a.label != label) continue;
       p.chain.points.push_back({0.5 * (s.p.x + a.q.x), 0.5 * (s.p.y + a.q.y)});
       if (a.contact != previous) {
-        if (a.contact == Contact::kGap) ++out_.gaps_closed;
-        if (a.contact == Contact::kOverlap) ++out_.overlaps_resolved;
+        if (a.contact == Contact::kGap) ++out.gaps_closed;
+        if (a.contact == Contact::kOverlap) ++out.overlaps_resolved;
       }
       previous = a.contact;
     }
   }
-  pending_.push_back(std::move(p));
+  out.chains.push_back(std::move(p));
 }
 
-void Builder::read_ring(int r, const std::vector<Sample>& samples) {
+RingReading RingReader::read(int r, const std::vector<Sample>& samples) const {
+  RingReading out;
   const BoundaryRing& ring = index_.rings()[r];
   const int own = ring.sensor;
   const std::size_t n = samples.size();
-  if (n == 0) return;
+  if (n == 0) return out;
   std::size_t start = n;
   for (std::size_t k = 0; k < n && start == n; ++k)
     if (samples[k].label != samples[(k + n - 1) % n].label) start = k;
@@ -167,9 +195,9 @@ void Builder::read_ring(int r, const std::vector<Sample>& samples) {
 
   if (start == n) {  // one neighbour all around: a closed loop (an island, or a lone cell's frame)
     const int label = samples[0].label;
-    if (ring.perimeter() < min_length_) count_short_run(own, label, false);
-    else add_chain(r, walk, 0, n, 0.0, ring.perimeter(), label, kNone, kNone, true);
-    return;
+    if (ring.perimeter() < min_length_) count_short_run(own, label, false, out);
+    else add_chain(r, walk, 0, n, 0.0, ring.perimeter(), label, kNone, kNone, true, out);
+    return out;
   }
 
   std::vector<Run> runs;
@@ -194,11 +222,11 @@ void Builder::read_ring(int r, const std::vector<Sample>& samples) {
     Zone zone{r, {}};
     for (const Run& run : runs) {
       zone.points.push_back(ring.at(run.begin));
-      count_short_run(own, run.label, false);
+      count_short_run(own, run.label, false, out);
     }
     for (const Sample& s : samples) zone.points.push_back(s.p);
-    zones_.push_back(std::move(zone));
-    return;
+    out.zones.push_back(std::move(zone));
+    return out;
   }
 
   // Zones between consecutive long runs (cyclically): dissolved when both runs have one label.
@@ -215,13 +243,13 @@ void Builder::read_ring(int r, const std::vector<Sample>& samples) {
     const bool between_cells = before.label != kOutside && after.label != kOutside;
     Zone zone{r, {ring.at(before.end)}};
     for (std::size_t j = (longs[z] + 1) % m; j != longs[(z + 1) % q]; j = (j + 1) % m) {
-      count_short_run(own, runs[j].label, between_cells);
+      count_short_run(own, runs[j].label, between_cells, out);
       for (std::size_t o = runs[j].first; o < runs[j].first + runs[j].count; ++o) zone.points.push_back(walk.at(o).p);
     }
     zone.points.push_back(ring.at(after.begin));
     if (dissolve) continue;
-    zone_id[z] = static_cast<int>(zones_.size());
-    zones_.push_back(std::move(zone));
+    zone_id[z] = static_cast<int>(out.zones.size());
+    out.zones.push_back(std::move(zone));
   }
 
   // Chains: from one kept zone to the next, through dissolved ones.
@@ -229,8 +257,8 @@ void Builder::read_ring(int r, const std::vector<Sample>& samples) {
   if (first_kept == zone_id.end()) {  // every zone dissolved: one boundary all around
     const Run& first = runs[longs[0]];
     add_chain(r, walk, first.first, first.first + n, first.begin, first.begin + walk.perimeter, first.label, kNone,
-              kNone, true);
-    return;
+              kNone, true, out);
+    return out;
   }
   const std::size_t z0 = static_cast<std::size_t>(first_kept - zone_id.begin());
   std::size_t z = z0;
@@ -242,9 +270,24 @@ void Builder::read_ring(int r, const std::vector<Sample>& samples) {
     const bool wraps = longs[next] < longs[(z + 1) % q];
     const std::size_t o_end = last.first + last.count + (wraps ? n : 0);
     const double t_end = last.end + (wraps ? walk.perimeter : 0.0);
-    add_chain(r, walk, first.first, o_end, first.begin, t_end, first.label, zone_id[z], zone_id[next], false);
+    add_chain(r, walk, first.first, o_end, first.begin, t_end, first.label, zone_id[z], zone_id[next], false, out);
     z = next;
   } while (z != z0);
+  return out;
+}
+
+void Builder::add(RingReading&& reading) {
+  const int offset = static_cast<int>(zones_.size());
+  for (Zone& zone : reading.zones) zones_.push_back(std::move(zone));
+  for (PendingChain& p : reading.chains) {
+    if (p.zone_from != kNone) p.zone_from += offset;
+    if (p.zone_to != kNone) p.zone_to += offset;
+    pending_.push_back(std::move(p));
+  }
+  out_.short_chains_dropped += reading.short_chains_dropped;
+  out_.gaps_closed += reading.gaps_closed;
+  out_.overlaps_resolved += reading.overlaps_resolved;
+  out_.seams += reading.seams;
 }
 
 void Builder::join_degree_two(std::vector<RawChain>& chains, std::size_t junctions) {
@@ -372,16 +415,21 @@ Topology Builder::finish() {
 }  // namespace
 
 Topology build_topology(const BoundaryIndex& index, double min_length, int threads) {
+  const RingReader reader(index, min_length);
   Builder builder(index, min_length);
-  // Sampling a ring (two thirds of the work: a neighbour query per sample) only reads the index:
-  // a batch of rings is sampled on the threads, then read in ring order. Batches bound the samples
-  // held at once.
+  // Sampling and reading a ring (a neighbour query per sample, then per sample of its chains and
+  // per bisection step of its label changes) only read the index: a batch of rings is sampled and
+  // read on the threads, each into its own slot, then the readings are combined in ring order, so
+  // the result does not depend on the thread count. Batches bound the readings held at once.
   const std::size_t rings = index.rings().size();
-  std::vector<std::vector<Sample>> batch(tolerance::kSampledRingsBatch);
+  std::vector<RingReading> batch(tolerance::kSampledRingsBatch);
   for (std::size_t first = 0; first < rings; first += batch.size()) {
     const std::size_t count = std::min(batch.size(), rings - first);
-    parallel_items(count, threads, [&](std::size_t k) { batch[k] = sample_ring(index, static_cast<int>(first + k)); });
-    for (std::size_t k = 0; k < count; ++k) builder.read_ring(static_cast<int>(first + k), batch[k]);
+    parallel_items(count, threads, [&](std::size_t k) {
+      const int r = static_cast<int>(first + k);
+      batch[k] = reader.read(r, sample_ring(index, r));
+    });
+    for (std::size_t k = 0; k < count; ++k) builder.add(std::move(batch[k]));
   }
   return builder.finish();
 }

@@ -41,9 +41,9 @@ struct Topology {
   std::size_t seams = 0;  // stretches where two pieces of one sensor's region touch
 };
 
-// min_length: the shortest chain, in map units. Rings are sampled (sample_ring) in batches on
-// `threads` threads and read in ring order.
-// threads: for sampling the rings (the result is the same whatever the count).
+// min_length: the shortest chain, in map units. Rings are sampled (sample_ring) and read in
+// batches on `threads` threads, and their readings combined in ring order.
+// threads: for sampling and reading the rings (the result is the same whatever the count).
 Topology build_topology(const BoundaryIndex& index, double min_length, int threads = 1);
 
 }  // namespace covmap::cleaning

@@ -1,5 +1,5 @@
 // A minimal fork–join loop for independent per-item work (engine cells and facets, face tracing,
-// recognition's checks), at most 8 workers over contiguous chunks. Plain std::thread keeps covmap
+// recognition's checks), at most 8 workers over contiguous chunks; two-thread sorts. Plain std::thread keeps covmap
 // free of a thread-pool dependency.
 #pragma once
 
@@ -62,23 +62,40 @@ void parallel_items(std::size_t n, int workers, F&& f) {
   for (auto& t : threads) t.join();
 }
 
+// Sorts the two halves of [first, last) concurrently with sort(begin, end), then merges them
+// through a copy of the left half (a large buffer: no fresh 4 KiB pages for it), the left half's
+// element first among equals.
+template <class It, class Less, class Sort>
+void sort_halves_and_merge(It first, It last, Less& less, Sort sort) {
+  const It mid = first + (last - first) / 2;
+  std::thread left([&] { sort(first, mid); });
+  sort(mid, last);
+  left.join();
+  LargeVector<typename std::iterator_traits<It>::value_type> buffer(std::make_move_iterator(first), std::make_move_iterator(mid));
+  std::merge(std::make_move_iterator(buffer.begin()), std::make_move_iterator(buffer.end()), std::make_move_iterator(mid),
+             std::make_move_iterator(last), first, less);
+}
+
 // Sorts [first, last) with two threads: the halves concurrently, then one merge. Same result as
 // std::sort for keys without ties (both orders are then the unique sorted one).
 template <class It, class Less = std::less<>>
 void parallel_sort(It first, It last, Less less = {}) {
-  const auto n = static_cast<std::size_t>(last - first);
-  if (worker_count(n) <= 1) {
+  if (worker_count(static_cast<std::size_t>(last - first)) <= 1) {
     std::sort(first, last, less);
     return;
   }
-  const It mid = first + static_cast<std::ptrdiff_t>(n / 2);
-  std::thread left([&] { std::sort(first, mid, less); });
-  std::sort(mid, last, less);
-  left.join();
-  // Merged through a copy of the left half (a large buffer: no fresh 4 KiB pages for it).
-  LargeVector<typename std::iterator_traits<It>::value_type> buffer(std::make_move_iterator(first), std::make_move_iterator(mid));
-  std::merge(std::make_move_iterator(buffer.begin()), std::make_move_iterator(buffer.end()), std::make_move_iterator(mid),
-             std::make_move_iterator(last), first, less);
+  sort_halves_and_merge(first, last, less, [&](It b, It e) { std::sort(b, e, less); });
+}
+
+// Stable-sorts [first, last) on up to two of `workers` threads, the same way. Same result as
+// std::stable_sort whatever the thread count (a stable order is unique; the merge is stable).
+template <class It, class Less = std::less<>>
+void parallel_stable_sort(It first, It last, int workers, Less less = {}) {
+  if (workers <= 1 || worker_count(static_cast<std::size_t>(last - first)) <= 1) {
+    std::stable_sort(first, last, less);
+    return;
+  }
+  sort_halves_and_merge(first, last, less, [&](It b, It e) { std::stable_sort(b, e, less); });
 }
 
 }  // namespace covmap

@@ -15,7 +15,9 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <variant>
+#include <utility>
 #include <vector>
 
 #include "cleaning/map_cleaning.h"
@@ -778,18 +780,108 @@ TEST(MapCleaning, MovedMapGivesTheMovedGraph) {
   }
 }
 
-TEST(MapCleaning, LargeMapOfTwoThousandCells) {
-  // 2000 sites with weights in [0.8, 1] on a jittered grid, ~50 bins each, jittered copies.
-  std::mt19937 rng(42);
+// gx × gy sites, one in each cell of a grid `spacing` wide (away from the cell's edges), weights
+// uniform in [weight_min, weight_min + weight_span], and their raster of `bin` over the grid.
+struct GridMap {
+  std::vector<Site> sites;
+  Raster raster;
+};
+GridMap jittered_grid(int gx, int gy, double spacing, double bin, double weight_min, double weight_span, unsigned seed) {
+  std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   std::vector<Site> sites;
-  const int gx = 50, gy = 40;
-  const double spacing = 70.0, bin = 10.0;
   for (int j = 0; j < gy; ++j)
     for (int i = 0; i < gx; ++i)
       sites.push_back({site_name(static_cast<long long>(sites.size())), (i + 0.15 + 0.7 * u(rng)) * spacing,
-                       (j + 0.15 + 0.7 * u(rng)) * spacing, 0.8 + 0.2 * u(rng)});
-  const Raster r = rasterize(sites, bin, static_cast<int>(gx * spacing / bin), static_cast<int>(gy * spacing / bin));
+                       (j + 0.15 + 0.7 * u(rng)) * spacing, weight_min + weight_span * u(rng)});
+  Raster raster = rasterize(sites, bin, static_cast<int>(gx * spacing / bin), static_cast<int>(gy * spacing / bin));
+  return {std::move(sites), std::move(raster)};
+}
+
+// Everything clean_coverage_map returns, compared exactly.
+void expect_identical(const CleanedMap& got, const CleanedMap& expected, const std::string& what) {
+  SCOPED_TRACE(what);
+  ASSERT_EQ(got.sensors, expected.sensors);
+  const auto same_curve = [](const Curve& a, const Curve& b) {
+    if (a.index() != b.index()) return false;
+    if (const auto* c = std::get_if<Circle>(&a)) {
+      const auto& d = std::get<Circle>(b);
+      return c->cx == d.cx && c->cy == d.cy && c->r == d.r;
+    }
+    const auto& l = std::get<Line>(a);
+    const auto& m = std::get<Line>(b);
+    return l.x == m.x && l.y == m.y && l.dx == m.dx && l.dy == m.dy;
+  };
+  const auto same_points = [](const std::vector<Point>& a, const std::vector<Point>& b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](Point p, Point q) { return p.x == q.x && p.y == q.y; });
+  };
+  ASSERT_EQ(got.chains.size(), expected.chains.size());
+  for (std::size_t c = 0; c < got.chains.size(); ++c) {
+    const BoundaryChain &g = got.chains[c], &e = expected.chains[c];
+    EXPECT_TRUE(g.sensor_a == e.sensor_a && g.sensor_b == e.sensor_b && g.from == e.from && g.to == e.to) << "chain " << c;
+    EXPECT_TRUE(same_points(g.points, e.points)) << "chain " << c;
+    EXPECT_TRUE(same_curve(g.fit.curve, e.fit.curve) && g.fit.rms == e.fit.rms && g.fit.max_deviation == e.fit.max_deviation)
+        << "chain " << c;
+  }
+  EXPECT_TRUE(same_points(got.junctions, expected.junctions));
+  ASSERT_EQ(got.graph.nodes.size(), expected.graph.nodes.size());
+  for (std::size_t n = 0; n < got.graph.nodes.size(); ++n)
+    EXPECT_TRUE(got.graph.nodes[n].x == expected.graph.nodes[n].x && got.graph.nodes[n].y == expected.graph.nodes[n].y)
+        << "node " << n;
+  ASSERT_EQ(got.graph.arcs.size(), expected.graph.arcs.size());
+  for (std::size_t a = 0; a < got.graph.arcs.size(); ++a) {
+    const Arc &g = got.graph.arcs[a], &e = expected.graph.arcs[a];
+    EXPECT_TRUE(g.from == e.from && g.to == e.to && g.ccw == e.ccw && g.left_site == e.left_site &&
+                g.right_site == e.right_site && g.frame == e.frame && same_curve(g.curve, e.curve))
+        << "arc " << a;
+  }
+  EXPECT_EQ(got.arc_chain, expected.arc_chain);
+  ASSERT_EQ(got.range_edges.size(), expected.range_edges.size());
+  for (std::size_t r = 0; r < got.range_edges.size(); ++r) {
+    EXPECT_EQ(got.range_edges[r].sensor, expected.range_edges[r].sensor);
+    EXPECT_TRUE(same_curve(got.range_edges[r].fit.curve, expected.range_edges[r].fit.curve));
+  }
+  const CleaningReport &g = got.report, &e = expected.report;
+  EXPECT_EQ(g.snap_distance, e.snap_distance);
+  EXPECT_EQ(g.bin_size_estimate, e.bin_size_estimate);
+  for (const auto& [name, a, b] : {std::tuple{"chains", g.chains, e.chains}, std::tuple{"junctions", g.junctions, e.junctions},
+                                  std::tuple{"junctions_merged", g.junctions_merged, e.junctions_merged},
+                                  std::tuple{"gaps_closed", g.gaps_closed, e.gaps_closed},
+                                  std::tuple{"overlaps_resolved", g.overlaps_resolved, e.overlaps_resolved},
+                                  std::tuple{"short_chains_dropped", g.short_chains_dropped, e.short_chains_dropped},
+                                  std::tuple{"nodes_snapped", g.nodes_snapped, e.nodes_snapped},
+                                  std::tuple{"frame_chains", g.frame_chains, e.frame_chains},
+                                  std::tuple{"range_edges", g.range_edges, e.range_edges}, std::tuple{"seams", g.seams, e.seams}})
+    EXPECT_EQ(a, b) << name;
+}
+
+TEST(MapCleaning, SameResultOnOneTwoThreeAndEightThreads) {
+  // 600 sites with jittered, rounded copies: gaps and overlaps, and more edges (so grid entries)
+  // than the 20000 below which the grid's sort stays on one thread. The reference is the serial
+  // path (one thread: one batch, an unsplit sort, every ring and chain in turn); the others index,
+  // sample, read, fit and refit on 2, 3 and 8 threads.
+  const GridMap grid = jittered_grid(30, 20, 70.0, 5.0, 0.5, 0.5, 7);
+  TraceOptions o;
+  o.jitter = 0.625;
+  o.round_to = 0.25;
+  o.seed = 3;
+  const auto cells = polygonize(grid.raster, names(grid.sites.size()), o);
+  const CleanedMap reference = clean_coverage_map(cells);
+  expect_consistent(reference);
+  EXPECT_GT(reference.report.input_vertices, 20000u);
+  EXPECT_GT(reference.report.gaps_closed, 0u);
+  EXPECT_GT(reference.report.overlaps_resolved, 0u);
+  for (const int threads : {1, 2, 3, 8}) {
+    CleaningOptions options;
+    options.threads = threads;
+    expect_identical(clean_coverage_map(cells, options), reference, std::to_string(threads) + " threads");
+  }
+}
+
+TEST(MapCleaning, LargeMapOfTwoThousandCells) {
+  // 2000 sites with weights in [0.8, 1] on a jittered grid, ~50 bins each, jittered copies.
+  const double bin = 10.0;
+  const auto [sites, r] = jittered_grid(50, 40, 70.0, bin, 0.8, 0.2, 42);
   TraceOptions o;
   o.jitter = 1.0;
   const CleanedMap m = clean_coverage_map(polygonize(r, names(sites.size()), o));

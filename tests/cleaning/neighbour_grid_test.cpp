@@ -9,6 +9,10 @@
 #include <cmath>
 #include <random>
 #include <set>
+#include <utility>
+#include <vector>
+
+#include "core/parallel.h"
 
 namespace covmap::cleaning {
 namespace {
@@ -113,6 +117,62 @@ TEST(NeighbourGrid, DenseTableVisitsWhatTheHashVisitsInTheSameOrder) {
         }
       }
     }
+  }
+}
+
+TEST(NeighbourGrid, BatchesAppendedInOrderGiveTheGridOfDirectAdds) {
+  // The reference adds every segment to the grid itself and sorts on one thread; the others gather
+  // contiguous runs of the same segments in 2, 3 and 8 batches and sort on that many threads.
+  // Many segments share cells (items in one cell must keep insertion order through the sort).
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double cell = 1.0;
+  std::vector<std::pair<Point, Point>> segments;
+  for (int i = 0; i < 30000; ++i) {
+    const Point a{30 * unit(rng), 30 * unit(rng)};
+    const double length = cell * (i % 50 == 0 ? std::pow(10.0, 3 * unit(rng)) : 2 * unit(rng));
+    const double angle = 6.283185307179586 * unit(rng);
+    segments.emplace_back(a, Point{a.x + length * std::cos(angle), a.y + length * std::sin(angle)});
+  }
+  UniformGrid reference(cell);
+  for (std::size_t i = 0; i < segments.size(); ++i)
+    reference.add_segment(static_cast<int>(i), segments[i].first, segments[i].second);
+  reference.finish(1);
+  std::vector<Point> queries;
+  for (int q = 0; q < 3000; ++q) queries.push_back({-2 + 34 * unit(rng), -2 + 34 * unit(rng)});
+  for (const int parts : {1, 2, 3, 8}) {
+    UniformGrid grid(cell);
+    std::vector<UniformGrid::Batch> batches(static_cast<std::size_t>(parts), UniformGrid::Batch(grid));
+    parallel_chunks(segments.size(), parts, [&](std::size_t begin, std::size_t end, int w) {
+      for (std::size_t i = begin; i < end; ++i)
+        batches[static_cast<std::size_t>(w)].add_segment(static_cast<int>(i), segments[i].first, segments[i].second);
+    });
+    grid.append(std::move(batches));
+    grid.finish(parts);
+    for (const Point p : queries) {
+      std::vector<int> expected, got, expected_half, got_half;
+      reference.for_each_near(p, [&](int item) { expected.push_back(item); });
+      grid.for_each_near(p, [&](int item) { got.push_back(item); });
+      reference.for_each_within_half_cell(p, [&](int item) { expected_half.push_back(item); });
+      grid.for_each_within_half_cell(p, [&](int item) { got_half.push_back(item); });
+      ASSERT_EQ(got, expected) << parts << " batches, query " << p.x << ", " << p.y;
+      ASSERT_EQ(got_half, expected_half) << parts << " batches, query " << p.x << ", " << p.y;
+    }
+  }
+}
+
+TEST(NeighbourGrid, ParallelStableSortIsStdStableSort) {
+  // Few distinct keys: long runs of ties whose order only a stable sort keeps.
+  std::mt19937_64 rng(9);
+  std::vector<std::pair<int, int>> items;
+  for (int i = 0; i < 50000; ++i) items.emplace_back(static_cast<int>(rng() % 97), i);
+  const auto by_key = [](const auto& l, const auto& r) { return l.first < r.first; };
+  auto expected = items;
+  std::stable_sort(expected.begin(), expected.end(), by_key);
+  for (const int threads : {1, 2, 3, 8}) {
+    auto got = items;
+    parallel_stable_sort(got.begin(), got.end(), threads, by_key);
+    EXPECT_EQ(got, expected) << threads << " threads";
   }
 }
 
