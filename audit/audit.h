@@ -62,7 +62,8 @@ struct AuditOptions {
   // Called with (stage name, fraction done in [0, 1]) on long runs; may be empty.
   std::function<void(const std::string&, double)> progress;
   // Worker threads of the cleaning's ring sampling, the refinement's covariance and its
-  // independent solves (the starts of the multi-start and the waves of local re-solves). The result is the same whatever the count (each
+  // independent solves (the starts of the multi-start and the waves of local re-solves), and of
+  // the per-sensor verdicts. The result is the same whatever the count (each
   // solve runs on one thread, fitting/refine.cpp says why, and their results are compared in a
   // fixed order).
   int threads = 2;

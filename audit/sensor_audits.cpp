@@ -1,12 +1,14 @@
 // Verdicts per sensor for audit(): the common factor of reported and reconstructed weights, and per
 // sensor its reconstruction, uncertainty (local_uncertainty.h says why conditional) and verdict.
 #include <cmath>
+#include <exception>
 
 #include "audit/audit_stages.h"
 #include "audit/cell_evidence.h"
 #include "audit/tolerances.h"
 #include "core/readable_numbers.h"
 #include "audit/verdict.h"
+#include "core/parallel.h"
 #include "fitting/local_uncertainty.h"
 
 namespace covmap::audit::stages {
@@ -184,6 +186,27 @@ void judge_absent(const ReportedSensor& r, const AuditContext& c, SensorAudit& s
   }
 }
 
+// Map sensor i: its reconstruction, uncertainty and, when reported, verdict.
+void judge_map_sensor(std::size_t i, const AuditContext& c, const ReportedOf& reported_of, const MapCells& cells,
+                      const fitting::LocalUncertainty& u, SensorAudit& s) {
+  const Site& site = c.refined.sites[i];
+  s.id = c.cleaned.sensors[i];
+  s.position = {site.x, site.y};
+  s.weight = site.weight;
+  if (c.scale.p0 && c.options.alpha) s.tx_power_dbm = *c.scale.p0 + 10.0 * *c.options.alpha * std::log10(s.weight);
+  if (c.options.alpha) s.relative_power_db = 10.0 * *c.options.alpha * std::log10(s.weight);
+  s.uncertainty_available = u.available;
+  s.sigma_x = u.sigma_x, s.sigma_y = u.sigma_y, s.cov_xy = u.cov_xy, s.sigma_log_weight = u.sigma_log_weight;
+  {
+    const double a = u.sigma_x * u.sigma_x, b = u.sigma_y * u.sigma_y, xy = u.cov_xy;
+    s.sigma_position_m = std::sqrt(0.5 * (a + b) + std::sqrt(0.25 * (a - b) * (a - b) + xy * xy));
+  }
+  const auto it = reported_of.find(static_cast<int>(i));
+  // The operator's name for the sensor first: the map's is often an export's label.
+  s.name = it != reported_of.end() && !it->second->name.empty() ? it->second->name : cells.names[i];
+  if (it != reported_of.end()) judge_reported(*it->second, i, u, c, s);
+}
+
 }  // namespace
 
 // Powers and the common factor of weights: reported and reconstructed weights are each known
@@ -216,26 +239,20 @@ std::vector<SensorAudit> sensor_audits(const cleaning::CleanedMap& cleaned, cons
   const std::size_t n = setup.n;
   const std::vector<fitting::LocalUncertainty> local =
       fitting::local_uncertainty(refined.sites, setup.samples, setup.options.loss_scale, refined.range);
-  for (std::size_t i = 0; i < n; ++i) {
-    SensorAudit s;
-    s.id = cleaned.sensors[i];
-    s.position = {refined.sites[i].x, refined.sites[i].y};
-    s.weight = refined.sites[i].weight;
-    if (scale.p0 && options.alpha) s.tx_power_dbm = *scale.p0 + 10.0 * *options.alpha * std::log10(s.weight);
-    if (options.alpha) s.relative_power_db = 10.0 * *options.alpha * std::log10(s.weight);
-    const fitting::LocalUncertainty& u = local[i];
-    s.uncertainty_available = u.available;
-    s.sigma_x = u.sigma_x, s.sigma_y = u.sigma_y, s.cov_xy = u.cov_xy, s.sigma_log_weight = u.sigma_log_weight;
-    {
-      const double a = u.sigma_x * u.sigma_x, b = u.sigma_y * u.sigma_y, c = u.cov_xy;
-      s.sigma_position_m = std::sqrt(0.5 * (a + b) + std::sqrt(0.25 * (a - b) * (a - b) + c * c));
+  // Each map sensor is judged on its own (its predicted cells are small rasters of their own), into
+  // its own slot: on the audit's threads, the same whatever their count.
+  // An exception is kept per sensor and the first sensor's thrown after, as the plain loop would.
+  sensors.resize(n);
+  std::vector<std::exception_ptr> failed(n);
+  parallel_items(n, options.threads, [&](std::size_t i) {
+    try {
+      judge_map_sensor(i, context, reported_of, cells, local[i], sensors[i]);
+    } catch (...) {
+      failed[i] = std::current_exception();
     }
-    const auto it = reported_of.find(static_cast<int>(i));
-    // The operator's name for the sensor first: the map's is often an export's label.
-    s.name = it != reported_of.end() && !it->second->name.empty() ? it->second->name : cells.names[i];
-    if (it != reported_of.end()) judge_reported(*it->second, i, u, context, s);
-    sensors.push_back(std::move(s));
-  }
+  });
+  for (const std::exception_ptr& e : failed)
+    if (e) std::rethrow_exception(e);
   for (const ReportedSensor& r : reported) {
     if (cells.index.count(r.id)) continue;
     SensorAudit s;
