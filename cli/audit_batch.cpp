@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "cli/audit_batch_summary.h"
-#include "cli/audit_map.h"
+#include "cli/audit_summary.h"
 #include "cli/cli_support.h"
 #include "io/input_error.h"
 #include "io/output_plan.h"
@@ -26,22 +26,22 @@ std::vector<fs::path> all_inputs(const AuditCommandOptions& options, const MapLi
 }
 
 fs::path map_folder(const AuditCommandOptions& options, const BatchMap& m) {
-  return io::normalized_output_path(options.output_dir) / m.folder;
+  return io::normalized_output_path(options.request.outputs.folder.string()) / m.folder;
 }
 
 // Every output of the batch, before any work (header: a refusal writes nothing).
 void check_outputs(const AuditCommandOptions& options, const MapList& list) {
   io::OutputPlan batch;
   batch.inputs = all_inputs(options, list);
-  batch.folder = options.output_dir;
+  batch.folder = options.request.outputs.folder;
   batch.folder_files = {std::string(kSummaryCsv), std::string(kSummaryJson)};
   for (const BatchMap& m : list.maps) batch.folder_files.push_back(m.folder);
-  batch.force = options.force;
+  batch.force = options.request.settings.force;
   io::check_output_plan(batch);
   for (const BatchMap& m : list.maps) {
     io::OutputPlan own = batch;
     own.folder = map_folder(options, m);
-    own.folder_files = report::audit_report_file_names(options.format);
+    own.folder_files = report::audit_report_file_names(options.request.outputs.format);
     io::check_output_plan(own);
   }
 }
@@ -50,12 +50,12 @@ void check_outputs(const AuditCommandOptions& options, const MapList& list) {
 // before the maps' folders go in: else a killed batch would leave folders without a marker, which
 // the next run could only write into with --force. A marked OUTDIR is left for the summaries.
 void mark_output_folder(const AuditCommandOptions& options) {
-  const fs::path folder = io::normalized_output_path(options.output_dir);
+  const fs::path folder = io::normalized_output_path(options.request.outputs.folder.string());
   std::error_code ec;
   if (fs::exists(folder / io::kFolderMarker, ec)) return;
   for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec))
     if (!it->path().filename().string().starts_with(io::kTemporaryPrefix)) return;  // --force: left as it is
-  io::write_report_folder(folder, {}, options.force);
+  io::write_report_folder(folder, {}, options.request.settings.force);
 }
 
 struct MapRun {
@@ -65,16 +65,16 @@ struct MapRun {
 
 MapRun audit_one(const AuditCommandOptions& options, const BatchMap& m, std::size_t index, std::size_t count) {
   const std::string which = "map " + std::to_string(index + 1) + " of " + std::to_string(count) + ": " + m.map;
-  AuditCommandOptions one = options;
-  one.map_path = m.map;
-  one.sensors_path = m.sensors;
-  one.output_dir = map_folder(options, m).string();
+  job::AuditRequest one = options.request;
+  one.inputs.map = m.map;
+  one.inputs.sensors = m.sensors;
+  one.outputs.folder = map_folder(options, m);
   if (!options.quiet)
     std::cerr << "covmap audit: " << which << (m.sensors.empty() ? "" : " with " + m.sensors) << " -> "
-              << one.output_dir << "\n";
+              << one.outputs.folder.string() << "\n";
   try {
     if (!m.problem.empty()) throw io::InputError(m.map, 0, "", m.problem);
-    const AuditedMap audited = audit_map(one, stderr_progress(options.quiet));
+    const job::AuditedMap audited = job::run_audit_job(one, stderr_hooks(options.quiet));
     print_audit_summary(std::cout, one, audited);
     return {audited_outcome(m, audited), is_finding(options, audited) ? kFindings : kOk};
   } catch (const std::exception&) {
@@ -91,7 +91,7 @@ int run_audit_batch(const AuditCommandOptions& options, const MapList& list) {
     std::cerr << "covmap audit: skipped " << s.file << ": " << skip_reason_words(s.reason) << "\n";
   check_outputs(options, list);
   mark_output_folder(options);
-  BatchSummary summary{options.command_line, {}, list.skipped};
+  BatchSummary summary{options.request.command_line, {}, list.skipped};
   int exit_code = kOk;  // the worst: internal error, bad input, findings, none (4 > 2 > 1 > 0)
   std::size_t failed = 0;
   for (std::size_t k = 0; k < list.maps.size(); ++k) {
@@ -100,9 +100,9 @@ int run_audit_batch(const AuditCommandOptions& options, const MapList& list) {
     failed += run.outcome.status == MapStatus::kFailed;
     summary.maps.push_back(std::move(run.outcome));
   }
-  const fs::path folder = io::normalized_output_path(options.output_dir);
+  const fs::path folder = io::normalized_output_path(options.request.outputs.folder.string());
   io::write_report_folder(folder, {{std::string(kSummaryCsv), summary_csv(summary)}, {std::string(kSummaryJson), summary_json(summary)}},
-                          options.force);
+                          options.request.settings.force);
   std::cout << list.maps.size() << " maps: " << list.maps.size() - failed << " audited, " << failed << " failed -> "
             << (folder / kSummaryCsv).string() << ", " << kSummaryJson << "\n";
   return exit_code;

@@ -1,5 +1,5 @@
 // `covmap audit MAP1 MAP2 ... -o OUTDIR/` and `covmap audit FOLDER -o OUTDIR/`: several maps, each
-// audited by audit_map (cli/audit_map.h) with the same options into OUTDIR/<folder>/, then
+// audited by the job library (job/audit_job.h) with the same options into OUTDIR/<folder>/, then
 // OUTDIR/summary.csv and OUTDIR/summary.json (cli/audit_batch_summary.h). Which maps, their
 // sensors and folders: cli/audit_batch_inputs.h.
 //
@@ -24,7 +24,7 @@
 
 namespace covmap::cli {
 
-// options.inputs and options.map_path are not looked at: `maps` are audited.
+// options.inputs and options.request.inputs.map are not looked at: `maps` are audited.
 int run_audit_batch(const AuditCommandOptions& options, const MapList& maps);
 
 }  // namespace covmap::cli

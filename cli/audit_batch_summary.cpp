@@ -71,7 +71,7 @@ std::string_view to_string(MapStatus status) {
   return "failed";
 }
 
-MapOutcome audited_outcome(const BatchMap& input, const AuditedMap& audited) {
+MapOutcome audited_outcome(const BatchMap& input, const job::AuditedMap& audited) {
   MapOutcome m;
   m.input = input;
   m.status = MapStatus::kAudited;

@@ -21,7 +21,7 @@
 
 #include "audit/audit.h"
 #include "cli/audit_batch_inputs.h"
-#include "cli/audit_map.h"
+#include "job/audit_job.h"
 #include "report/audit_report.h"
 
 namespace covmap::cli {
@@ -40,7 +40,7 @@ struct MapOutcome {
   std::string error;                               // failed only: the message, as on stderr
 };
 
-MapOutcome audited_outcome(const BatchMap& input, const AuditedMap& audited);
+MapOutcome audited_outcome(const BatchMap& input, const job::AuditedMap& audited);
 MapOutcome failed_outcome(const BatchMap& input, const std::string& error);
 
 struct BatchSummary {

@@ -8,25 +8,12 @@
 #include <iostream>
 #include <unistd.h>
 
-#include "audit/audit.h"
-#include "cleaning/map_cleaning.h"
-#include "io/atomic_file.h"
+#include "core/typed_numbers.h"
 #include "io/input_error.h"
-#include "voronoi/clip.h"
-#include "voronoi/engine.h"
+#include "job/audit_job.h"
 
 namespace covmap::cli {
 namespace {
-
-// The number a user typed, or NaN when the text is not one whole finite number.
-double parse_finite(const std::string& text) {
-  if (text.empty()) return std::nan("");
-  char* end = nullptr;
-  errno = 0;
-  const double value = std::strtod(text.c_str(), &end);
-  if (*end != '\0' || errno == ERANGE || !std::isfinite(value)) return std::nan("");
-  return value;
-}
 
 int say(const std::string& message, int code) {
   std::cerr << "covmap: " << message << "\n";
@@ -45,23 +32,12 @@ std::string subcommand_list(const CLI::App& app) {
 Failure current_failure() {
   try {
     throw;
-  } catch (const io::InputError& e) {
-    return {e.what(), kBadInput};
-  } catch (const io::OutputError& e) {
-    return {e.what(), kBadInput};
-  } catch (const cleaning::SnapTooSmall& e) {
-    return {std::string(e.what()) + "; give a larger --snap (about the map's staircase step, in map units)", kBadInput};
-  } catch (const voronoi::InvalidSites& e) {
-    return {e.what(), kBadInput};
-  } catch (const voronoi::ClipTooLarge& e) {
-    return {e.what(), kBadInput};
-  } catch (const audit::MapTooLarge& e) {
-    return {e.what(), kBadInput};
-  } catch (const std::bad_alloc&) {
-    return {"out of memory; the input is too large for this machine (see docs/RELIABILITY.md for the limits)",
-            kBadInput};
-  } catch (const std::exception& e) {
-    return {std::string("internal error (please report it): ") + e.what(), kInternal};
+  } catch (const job::ImplausibleInputError& e) {
+    // The job leaves the way to force it to the shell: here, a flag.
+    return {io::InputError(e.file.string(), 0, "", e.finding + " (pass --force to audit anyway)").what(), kBadInput};
+  } catch (const std::exception&) {
+    const job::AuditFailure failure = job::describe_current_failure();
+    return {failure.message, failure.kind == job::FailureKind::kBadInput ? kBadInput : kInternal};
   }
 }
 
@@ -92,8 +68,8 @@ int exit_for_parse_error(const CLI::App& app, const CLI::ParseError& error, int 
 CLI::Validator positive_number() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
-        const double v = parse_finite(text);
-        return std::isfinite(v) && v > 0 ? "" : "must be a positive number (got '" + text + "')";
+        const std::optional<double> v = parse_finite_number(text);
+        return v && *v > 0 ? "" : "must be a positive number (got '" + text + "')";
       },
       "POSITIVE");
 }
@@ -101,8 +77,8 @@ CLI::Validator positive_number() {
 CLI::Validator non_negative_number() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
-        const double v = parse_finite(text);
-        return std::isfinite(v) && v >= 0 ? "" : "must be a number ≥ 0 (got '" + text + "')";
+        const std::optional<double> v = parse_finite_number(text);
+        return v && *v >= 0 ? "" : "must be a number ≥ 0 (got '" + text + "')";
       },
       "NUMBER ≥ 0");
 }
@@ -110,8 +86,8 @@ CLI::Validator non_negative_number() {
 CLI::Validator fraction() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
-        const double v = parse_finite(text);
-        return std::isfinite(v) && v > 0 && v < 1 ? "" : "must be a number between 0 and 1, such as 1e-7 (got '" + text + "')";
+        const std::optional<double> v = parse_finite_number(text);
+        return v && *v > 0 && *v < 1 ? "" : "must be a number between 0 and 1, such as 1e-7 (got '" + text + "')";
       },
       "0 < NUMBER < 1");
 }
@@ -120,10 +96,8 @@ CLI::Validator whole_number_in(long long lowest, long long highest) {
   const std::string range = std::to_string(lowest) + "–" + std::to_string(highest);
   return CLI::Validator(
       [=](std::string& text) -> std::string {
-        char* end = nullptr;
-        errno = 0;
-        const long long v = text.empty() ? 0 : std::strtoll(text.c_str(), &end, 10);
-        if (text.empty() || *end != '\0' || errno == ERANGE || v < lowest || v > highest)
+        const std::optional<long long> v = parse_whole_number(text);
+        if (!v || *v < lowest || *v > highest)
           return "must be a whole number in " + range + " (got '" + text + "')";
         return "";
       },

@@ -16,10 +16,8 @@ namespace covmap::cli {
 enum ExitCode : int { kOk = 0, kFindings = 1, kBadInput = 2, kNotBisectorGraph = 3, kInternal = 4 };
 
 // Runs `body`, turning covmap's typed errors into a message on stderr and an exit code: the errors
-// that describe the user's input or outputs (io::InputError, io::OutputError, InvalidSites,
-// cleaning::SnapTooSmall, audit::MapTooLarge, voronoi::ClipTooLarge) and running out of memory
-// exit kBadInput; anything
-// else is a bug and exits kInternal.
+// that describe the user's input or outputs (job::describe_current_failure says which) and running
+// out of memory exit kBadInput; anything else is a bug and exits kInternal.
 int guarded(const std::function<int()>& body);
 
 // What the exception being handled means for the user, as guarded() reports it: the message

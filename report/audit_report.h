@@ -142,6 +142,8 @@ struct AuditVerdictCounts {
 // Throws std::logic_error for a verdict missing from audit::kAllSensorVerdicts (a programming
 // error: such a sensor would otherwise go uncounted).
 AuditVerdictCounts count_verdicts(std::span<const audit::SensorAudit> sensors);
+// The counts as report.json's "summary" object, as compact JSON text.
+std::string verdict_counts_json(const AuditVerdictCounts& counts);
 
 // A verdict in plain words, the same in the summary line, the HTML cards, legend and table:
 // "consistent", "inconsistent", "undetermined (not judged)", "reported but not in the map", "in

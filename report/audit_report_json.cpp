@@ -208,4 +208,6 @@ void write_audit_json(const AuditReportContext& c, std::ostream& out) {
   detail::write_json(j, out, 1);
 }
 
+std::string verdict_counts_json(const AuditVerdictCounts& counts) { return summary_json(counts).dump(); }
+
 }  // namespace covmap::report

@@ -109,4 +109,55 @@ run audit_bern "$covmap" audit "$data/maps/bern/map.geojson" --sensors "$data/ma
 run audit_ticino "$covmap" audit "$data/maps/ticino/map.geojson" --sensors "$data/maps/ticino/sensors.geojson" --planar -q --threads 1 -o audit_ticino
 run audit_no_sensors "$covmap" audit "$data/maps/ticino/map.geojson" --planar -q --threads 1 -o audit_nosensors
 run audit_garbage "$covmap" audit garbage.json -q -o audit_garbage
+run audit_batch "$covmap" audit gen_random/map.geojson gen_towns/map.geojson --planar -q --threads 1 -o audit_batch
+run audit_gpkg "$covmap" audit gen_random/map.geojson --sensors gen_random/sensors.geojson --planar -q --threads 1 \
+  --format gpkg -o audit_gpkg
+rm -f "$out/audit_gpkg/files/audit_gpkg/audit.gpkg"  # SQLite pages carry write times: the GeoPackage's rows are dumped instead
+if command -v ogrinfo >/dev/null && [ -f "$RUN_DIR/audit_gpkg/audit.gpkg" ]; then
+  ogrinfo -ro -al -q "$RUN_DIR/audit_gpkg/audit.gpkg" >"$out/audit_gpkg/gpkg_rows" 2>&1
+fi
+
+# covmap serve: the synchronous endpoints answer exactly what the CLI's library functions compute,
+# and an audit job's outcome (done, or failed with its error) is what the job API reports.
+serve_log=$RUN_DIR/serve.log
+"$covmap" serve --port 0 --data "$RUN_DIR/serve-data" --workers 1 >"$serve_log" 2>&1 &
+serve_pid=$!
+port=""
+for _ in $(seq 100); do
+  port=$(sed -n 's#.*listening on http://127.0.0.1:\([0-9]*\)/.*#\1#p' "$serve_log")
+  [ -n "$port" ] && break
+  sleep 0.1
+done
+post() {  # NAME PATH CURL-ARGS...: status code and body of one request
+  local name=$1 path=$2; shift 2
+  mkdir -p "$out/$name"
+  curl -s -o "$out/$name/body" -w '%{http_code}\n' "$@" "http://127.0.0.1:$port$path" >"$out/$name/status"
+  normalise "$out/$name/body"
+}
+if [ -n "$port" ]; then
+  post serve_diagram /v1/diagram --data-binary @"$RUN_DIR/square.json"
+  post serve_diagram_csv /v1/diagram -H 'Content-Type: text/csv' --data-binary @"$RUN_DIR/grid.csv"
+  post serve_diagram_bad /v1/diagram --data-binary @"$RUN_DIR/bad_sites.csv"
+  post serve_check /v1/check --data-binary @"$RUN_DIR/grid_d.json"
+  post serve_recognize /v1/recognize --data-binary @"$RUN_DIR/square_d.json"
+  post serve_recognize_garbage /v1/recognize --data-binary @"$RUN_DIR/garbage.json"
+  python3 -c 'import json,sys; print(json.dumps({"a": json.load(open(sys.argv[1])), "b": json.load(open(sys.argv[2]))}))' \
+    "$RUN_DIR/towns.json" "$RUN_DIR/towns_clip.json" >"$RUN_DIR/pair.json"
+  post serve_compare /v1/compare --data-binary @"$RUN_DIR/pair.json"
+  post serve_audit_bad_options /v1/audits -F map=@"$RUN_DIR/gen_random/map.geojson" -F 'options={"alpha": -1}'
+  post serve_audit_garbage /v1/audits -F map=@"$RUN_DIR/garbage.json" -F 'options={"planar": true}'
+  post serve_audit_submit /v1/audits -F map=@"$RUN_DIR/gen_random/map.geojson" \
+    -F sensors=@"$RUN_DIR/gen_random/sensors.geojson" -F 'options={"planar": true}'
+  id=$(sed -n 's/.*"id": *"\([0-9a-f]*\)".*/\1/p' "$out/serve_audit_submit/body")
+  for _ in $(seq 600); do
+    curl -s "http://127.0.0.1:$port/v1/audits/$id" >"$RUN_DIR/job.json"
+    grep -q '"status": *"\(done\|failed\)"' "$RUN_DIR/job.json" && break
+    sleep 0.2
+  done
+  python3 -c 'import json,sys; j=json.load(open(sys.argv[1])); print(j["status"], json.dumps(j.get("error")), json.dumps(j.get("summary"), sort_keys=True))' \
+    "$RUN_DIR/job.json" >"$out/serve_audit_submit/outcome" 2>&1
+  sed -i -E 's/[0-9a-f]{32}/ID/g' "$out/serve_audit_submit/body"
+fi
+kill "$serve_pid" 2>/dev/null
+wait "$serve_pid" 2>/dev/null
 echo "snapshot: $(find "$out" -type f | wc -l) files in $out"

@@ -1,5 +1,6 @@
-// covmap::service audit processes: one audit runs as `covmap audit ...` in a child process of its
-// own, so that a crash, a runaway input or a memory blow-up ends that job and never the server.
+// covmap::service audit processes: one audit runs as `covmap audit-job REQUEST OUTCOME`
+// (cli/audit_job_command.h) in a child process of its own, so that a crash, a runaway input or a
+// memory blow-up ends that job and never the server.
 //
 // Contract: run_audit_process forks; the child sets its limits (RLIMIT_CPU, RLIMIT_AS, no core
 // files), asks the kernel to kill it if the server dies (PR_SET_PDEATHSIG: no orphan keeps writing

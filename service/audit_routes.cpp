@@ -61,7 +61,7 @@ void write_upload(const std::filesystem::path& path, const std::string& content)
 // Throws (having removed the folder) if the inputs are refused; `label` names the map in messages
 // of a batch ("map[2]").
 Job prepare_job(HttpServer::State& s, const httplib::MultipartFormData& map_part, const httplib::MultipartFormData* sensors,
-                const std::string& options_json, const AuditRequest& request, const std::string& label) {
+                const std::string& options_json, job::AuditRequest request, const std::string& label) {
   Job job;
   job.id = new_job_id();
   job.options_json = options_json;
@@ -73,8 +73,9 @@ Job prepare_job(HttpServer::State& s, const httplib::MultipartFormData& map_part
     std::filesystem::create_directories(files.input_dir());
     write_upload(files.input_dir() / job.map_name, map_part.content);
     if (sensors) write_upload(files.input_dir() / job.sensors_name, sensors->content);
-    check_audit_inputs(request, files.input_dir() / job.map_name,
-                       sensors ? files.input_dir() / job.sensors_name : std::filesystem::path());
+    request.inputs.map = files.input_dir() / job.map_name;
+    if (sensors) request.inputs.sensors = files.input_dir() / job.sensors_name;
+    check_audit_inputs(request);
   } catch (ApiError& e) {
     std::error_code ignored;
     std::filesystem::remove_all(files.dir, ignored);
@@ -100,7 +101,7 @@ void submit(HttpServer::State& s, const httplib::Request& req, httplib::Response
   if (s.store->count_with_status(JobStatus::kQueued) + maps.size() > s.options.queue_limit)
     throw ApiError(ErrorCode::kQueueFull, std::to_string(s.options.queue_limit) + " jobs may wait at once; try again later", "");
   const std::string options_json = req.has_file("options") ? req.get_file_value("options").content : "";
-  const AuditRequest request = parse_audit_request(options_json);
+  const job::AuditRequest request = parse_audit_request(options_json);
   const httplib::MultipartFormData* sensors =
       req.has_file("sensors") && !req.get_file_value("sensors").content.empty() ? &req.files.find("sensors")->second : nullptr;
   std::vector<Job> jobs;

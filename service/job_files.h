@@ -2,7 +2,9 @@
 //
 //   DATA/jobs.sqlite            the job store (service/job_store.h)
 //   DATA/jobs/ID/input/NAME     the uploaded map and sensors, under safe names keeping the extension
-//   DATA/jobs/ID/out/           the reports `covmap audit -o` writes
+//   DATA/jobs/ID/out/           the reports the audit writes
+//   DATA/jobs/ID/request.json   the job's audit request (job/audit_request_json.h)
+//   DATA/jobs/ID/outcome.json   how the job's process ended the audit (job/audit_outcome.h)
 //   DATA/jobs/ID/stdout.txt     the audit's summary lines
 // IDs are checked (is_valid_job_id) before any path is made of them, so no request can name a
 // file outside DATA.
@@ -19,6 +21,8 @@ struct JobFiles {
   std::filesystem::path input_dir() const { return dir / "input"; }
   std::filesystem::path output_dir() const { return dir / "out"; }
   std::filesystem::path stdout_file() const { return dir / "stdout.txt"; }
+  std::filesystem::path request_file() const { return dir / "request.json"; }
+  std::filesystem::path outcome_file() const { return dir / "outcome.json"; }
 };
 
 JobFiles job_files(const std::filesystem::path& data_dir, const std::string& id);

@@ -1,6 +1,5 @@
 #include "service/job_runner.h"
 
-#include <nlohmann/json.hpp>
 #include <signal.h>
 #include <unistd.h>
 
@@ -9,9 +8,13 @@
 #include <fstream>
 #include <sstream>
 
+#include "io/atomic_file.h"
+#include "job/audit_outcome.h"
+#include "job/audit_request_json.h"
 #include "service/audit_process.h"
 #include "service/audit_request.h"
 #include "service/job_files.h"
+#include "service/upload_check.h"
 
 namespace covmap::service {
 namespace {
@@ -26,15 +29,18 @@ std::filesystem::path this_program() {
   return ec ? std::filesystem::path("covmap") : self;
 }
 
-// report.json's "summary" (the counts by verdict and the agreement), as JSON text.
-std::string summary_of(const std::filesystem::path& report_json) {
-  std::ifstream in(report_json);
-  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
-  if (j.is_discarded() || !j.contains("summary")) return "";
-  return j["summary"].dump();
+// The request a job's process runs: the options as submitted, the uploads, the job's report folder.
+job::AuditRequest job_request(const Job& job, const JobFiles& files) {
+  job::AuditRequest r = parse_audit_request(job.options_json);
+  r.inputs.map = files.input_dir() / job.map_name;
+  if (!job.sensors_name.empty()) r.inputs.sensors = files.input_dir() / job.sensors_name;
+  r.outputs.folder = files.output_dir();
+  r.command_line = "covmap serve: POST /v1/audits, job " + job.id + (job.options_json.empty() ? "" : ", options " + job.options_json);
+  return r;
 }
 
-// The last non-empty line the audit wrote on stderr: covmap's own error message.
+// The last non-empty line the process wrote on stderr, for a process that died before saying how
+// the audit ended.
 std::string last_line(const std::string& text) {
   std::istringstream in(text);
   std::string line, last;
@@ -47,16 +53,41 @@ std::string last_line(const std::string& text) {
 struct Outcome {
   JobStatus status = JobStatus::kFailed;
   std::optional<JobError> error;
+  std::string summary;  // done: the audit's summary, JSON text
 };
 
-Outcome outcome_of(const AuditProcessResult& r, const ServeOptions& o) {
+// The outcome record the process left (job/audit_outcome.h), said as the API says it.
+Outcome recorded_outcome(const AuditProcessResult& r, const JobFiles& files, const job::AuditRequest& request) {
+  job::AuditOutcome recorded;
+  try {
+    std::ifstream in(files.outcome_file(), std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    recorded = job::outcome_from_json(text.str());
+  } catch (const std::exception&) {
+    const std::string said = last_line(r.stderr_tail);
+    return {JobStatus::kFailed,
+            JobError{"internal",
+                     "the audit's process ended (exit " + std::to_string(r.exit_code) + ") without recording how the audit "
+                         "ended" + (said.empty() ? std::string() : ": " + without_server_paths(said, request)),
+                     ""},
+            ""};
+  }
+  if (recorded.done) return {JobStatus::kDone, std::nullopt, recorded.summary_json};
+  const job::AuditFailure& f = recorded.failure.value();
+  std::string where(job::input_kind_name(f.input));
+  if (!f.item.empty()) where += (where.empty() ? "" : ": ") + f.item;
+  return {JobStatus::kFailed, JobError{std::string(job::failure_kind_name(f.kind)), without_server_paths(f.message, request), where}, ""};
+}
+
+Outcome outcome_of(const AuditProcessResult& r, const ServeOptions& o, const JobFiles& files, const job::AuditRequest& request) {
   switch (r.end) {
-    case ProcessEnd::kCancelled: return {JobStatus::kCancelled, std::nullopt};
+    case ProcessEnd::kCancelled: return {JobStatus::kCancelled, std::nullopt, ""};
     case ProcessEnd::kOutOfTime:
       return {JobStatus::kFailed, JobError{"resource_limit",
                                            "the audit ran out of its CPU time (" + std::to_string(o.job_cpu_seconds) +
                                                " s, `covmap serve --job-cpu-seconds`)",
-                                           ""}};
+                                           ""}, ""};
     case ProcessEnd::kCrashed:
       return {JobStatus::kFailed,
               JobError{"crashed",
@@ -64,13 +95,10 @@ Outcome outcome_of(const AuditProcessResult& r, const ServeOptions& o) {
                            "; SIGKILL is also how the system ends a process out of memory or past its hard CPU "
                            "limit; limits " + std::to_string(o.job_memory_mb) + " MiB, " +
                            std::to_string(o.job_cpu_seconds) + " s)",
-                       ""}};
+                       ""}, ""};
     case ProcessEnd::kExited: break;
   }
-  if (r.exit_code == 0 || r.exit_code == 1) return {JobStatus::kDone, std::nullopt};
-  const std::string said = last_line(r.stderr_tail);
-  if (r.exit_code == 2) return {JobStatus::kFailed, JobError{"bad_input", said, ""}};
-  return {JobStatus::kFailed, JobError{"internal", said.empty() ? "exit " + std::to_string(r.exit_code) : said, ""}};
+  return recorded_outcome(r, files, request);
 }
 
 }  // namespace
@@ -135,14 +163,14 @@ void JobRunner::run(const Job& job) {
   }
   const JobFiles files = job_files(options_.data_dir, job.id);
   Outcome outcome;
-  std::string summary;
   try {
-    const AuditRequest request = parse_audit_request(job.options_json);
-    const auto sensors = job.sensors_name.empty() ? std::filesystem::path() : files.input_dir() / job.sensors_name;
+    const job::AuditRequest request = job_request(job, files);
     std::filesystem::remove_all(files.output_dir());  // a requeued job starts clean
+    std::filesystem::remove(files.outcome_file());
+    io::write_files_atomically({{files.request_file(), job::request_json(request)}});
     AuditProcessSpec spec;
     spec.program = options_.worker_program;
-    spec.args = audit_arguments(request, files.input_dir() / job.map_name, sensors, files.output_dir());
+    spec.args = {"audit-job", files.request_file().string(), files.outcome_file().string()};
     spec.stdout_file = files.stdout_file();
     spec.cpu_seconds = options_.job_cpu_seconds;
     spec.memory_mb = options_.job_memory_mb;
@@ -155,10 +183,9 @@ void JobRunner::run(const Job& job) {
           if (!store_.set_progress(job.id, fraction_so_far, stage)) flag->store(true);
         },
         *flag);
-    outcome = outcome_of(result, options_);
-    if (outcome.status == JobStatus::kDone) summary = summary_of(files.output_dir() / "report.json");
+    outcome = outcome_of(result, options_, files, request);
   } catch (const std::exception& e) {
-    outcome = {JobStatus::kFailed, JobError{"internal", e.what(), ""}};
+    outcome = {JobStatus::kFailed, JobError{"internal", e.what(), ""}, ""};
   }
   bool stopping = false;
   {
@@ -168,7 +195,7 @@ void JobRunner::run(const Job& job) {
   }
   // Killed because the server is stopping: not the job's fault; recovery will run it again.
   if (stopping && outcome.status == JobStatus::kCancelled) return;
-  store_.finish(job.id, outcome.status, outcome.error, summary, now_ms());
+  store_.finish(job.id, outcome.status, outcome.error, outcome.summary, now_ms());
 }
 
 }  // namespace covmap::service

@@ -22,7 +22,8 @@ declare -A allowed=(
   [covmap_audit]="covmap_core covmap_cleaning covmap_fitting covmap_mobius covmap_voronoi"
   [covmap_io]="covmap_core"
   [covmap_gis]="covmap_core covmap_io"
-  [covmap_service]="covmap_core covmap_voronoi covmap_check covmap_mobius covmap_recognition covmap_cleaning covmap_fitting covmap_audit covmap_io covmap_gis covmap_report"
+  [covmap_job]="covmap_core covmap_voronoi covmap_mobius covmap_recognition covmap_cleaning covmap_fitting covmap_audit covmap_io covmap_gis covmap_report"
+  [covmap_service]="covmap_core covmap_voronoi covmap_check covmap_mobius covmap_recognition covmap_cleaning covmap_fitting covmap_audit covmap_io covmap_gis covmap_report covmap_job"
   [covmap_report]="covmap_core covmap_voronoi covmap_mobius covmap_recognition covmap_cleaning covmap_fitting covmap_audit covmap_io covmap_gis"
 )
 # Third-party libraries a covmap library must not link, even indirectly.

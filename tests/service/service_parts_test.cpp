@@ -62,14 +62,16 @@ TEST(OpenApi, DocumentListsExactlyTheRoutesTheServerAdds) {
   }
 }
 
-TEST(AuditRequest, OptionsBecomeTheCommandLine) {
-  const AuditRequest r = parse_audit_request(R"({"alpha": 3.5, "planar": true, "sensor_property": "cell", "format": "gpkg", "band": 2})");
-  const auto args = audit_arguments(r, "in/map.tif", "in/s.csv", "out");
-  const std::vector<std::string> want = {"audit", "in/map.tif", "-o", "out", "--sensor-property", "cell", "--sensors",
-                                         "in/s.csv", "--alpha", "3.5", "--planar", "--band", "2", "--format", "gpkg"};
-  EXPECT_EQ(args, want);
+TEST(AuditRequest, OptionsFillTheJobRequest) {
+  const job::AuditRequest r =
+      parse_audit_request(R"({"alpha": 3.5, "planar": true, "sensor_property": "cell", "format": "gpkg", "band": 2})");
+  EXPECT_EQ(r.settings.alpha, 3.5);
+  EXPECT_TRUE(r.inputs.planar);
+  EXPECT_EQ(r.inputs.sensor_property, "cell");
+  EXPECT_EQ(r.inputs.band, 2);
+  EXPECT_EQ(r.outputs.format, report::GisFormat::kGeoPackage);
   EXPECT_EQ(report_files(r), (std::vector<std::string>{"report.json", "report.html", "audit.gpkg"}));
-  EXPECT_EQ(parse_audit_request("").sensor_property, "sensor");
+  EXPECT_EQ(parse_audit_request("").inputs.sensor_property, "sensor");
 }
 
 std::string where_of(const std::string& options) {
@@ -91,6 +93,11 @@ TEST(AuditRequest, BadOptionsNameTheMember) {
   EXPECT_EQ(where_of(R"({"band": 0})"), "options.band");
   EXPECT_EQ(where_of(R"({"format": "shp"})"), "options.format");
   EXPECT_EQ(where_of(R"({"--alpha": 3})"), "options.--alpha");
+  EXPECT_EQ(where_of(R"({"band": 2.5})"), "options.band");
+  EXPECT_EQ(where_of(R"({"sensor_property": ""})"), "options.sensor_property");
+  EXPECT_EQ(where_of(R"({"basemap": "https://tiles/{z}/{x}.png"})"), "options.basemap");
+  // threads are the service's to decide (its limits), not a submitter's.
+  EXPECT_EQ(where_of(R"({"threads": 2})"), "options.threads");
 }
 
 TEST(AuditProcess, ProgressLinesOfTheCli) {

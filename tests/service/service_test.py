@@ -387,7 +387,7 @@ def audit_processes(data):
         except OSError:
             continue
         text = [w.decode(errors="replace") for w in words if w]
-        if len(text) > 1 and text[1] == "audit" and any(str(data) in w for w in text):
+        if len(text) > 1 and text[1] in ("audit", "audit-job") and any(str(data) in w for w in text):
             found.append(" ".join(text))
     return found
 
