@@ -13,6 +13,9 @@ import sys
 
 # (file pattern, pattern every differing line must match, explanation)
 EXPLAINED = [
+    (r"^serve_audit_bad_options/body$", r'"message":"must be',
+     "the service's audit options are judged by the job library's one validator, in the command "
+     "line's words (\"must be a positive number (got '-1')\" where the service alone said \"must be > 0\")."),
     (r"(^|/)truth\.json$", r'^\s*"description": "transverse Mercator',
      "covmap-make-map projects with io's LocalProjection now (issue 9: one transverse Mercator); "
      "its description prints the centre with four decimals (7.4000°E) where the generator's own "

@@ -9,6 +9,7 @@
 
 #include "service/api_error.h"
 #include "service/audit_process.h"
+#include "job/audit_request_json.h"
 #include "service/audit_request.h"
 #include "service/http_server.h"
 #include "service/job_files.h"
@@ -55,11 +56,16 @@ TEST(OpenApi, DocumentListsExactlyTheRoutesTheServerAdds) {
   for (const auto& [name, schema] : doc["components"]["schemas"]["AuditOptions"]["properties"].items()) {
     Json one;
     if (schema["type"] == "boolean") one[name] = true;
+    else if (name == "basemap") one[name] = "https://tiles.example/{z}/{x}/{y}.png";  // the validator checks URLs
     else if (schema["type"] == "string") one[name] = schema.contains("enum") ? schema["enum"][0] : Json("x");
     else if (schema["type"] == "integer") one[name] = 2;
     else one[name] = 1.5;
     EXPECT_NO_THROW(parse_audit_request(one.dump())) << name;
   }
+  // ... and every option the service takes is documented.
+  for (const job::AuditOption o : job::kServiceOptions)
+    EXPECT_TRUE(doc["components"]["schemas"]["AuditOptions"]["properties"].contains(std::string(job::option_name(o))))
+        << job::option_name(o);
 }
 
 TEST(AuditRequest, OptionsFillTheJobRequest) {
