@@ -1,5 +1,5 @@
 // write_diagram_json (io/diagram_json.h): the arc graph written token by token through JsonOut,
-// with no JSON document in memory (issue 16), in pieces of a few hundred elements rendered on the
+// with no JSON document in memory, in pieces of a few hundred elements rendered on the
 // machine's cores and written in order (io/ordered_pieces.h). The layout is the one documented in
 // FORMATS.md: one element per line, so a diff shows which arc changed.
 #include <algorithm>
