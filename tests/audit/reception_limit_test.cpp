@@ -1,4 +1,4 @@
-// Reception limits (issue 12): maps whose coverage ends where every sensor's reach R·w ends. The
+// Reception limits: maps whose coverage ends where every sensor's reach R·w ends. The
 // oracle is the generator's truth: the true sensors, their weights and the reach R it drew the map
 // with (tools/mapgen, max_range_m). Asserted: cleaning finds the range edges (circles about the
 // true sensors with radius R·w) and only where coverage ends at the reach, never along the
