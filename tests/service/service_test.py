@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""`covmap serve` driven over real HTTP (issue 15): a server on a free loopback port, Python's own
+"""`covmap serve` driven over real HTTP: a server on a free loopback port, Python's own
 HTTP client, the bundled maps.
 
 Usage: service_test.py path/to/covmap path/to/datasets WORKDIR [part]
