@@ -14,7 +14,7 @@ import sys
 # (file pattern, pattern every differing line must match, explanation)
 EXPLAINED = [
     (r"(^|/)truth\.json$", r'^\s*"description": "transverse Mercator',
-     "covmap-make-map projects with io's LocalProjection now (issue 9: one transverse Mercator); "
+     "covmap-make-map projects with io's LocalProjection (one transverse Mercator in covmap); "
      "its description prints the centre with four decimals (7.4000°E) where the generator's own "
      "copy printed six significant digits (7.4°E). The projection itself is the same."),
 ]

@@ -9,7 +9,7 @@ table is printed either way.
 
 Each map is audited as a user would (its sensors.geojson, --alpha from the generator, --planar for a
 planar map) and the verdicts in report.json are compared with what the generator really did
-(truth.json, datasets/maps/README.md). The targets are issue 12's, stated in docs/ACCURACY.md; none
+(truth.json, datasets/maps/README.md). The targets are those of docs/ACCURACY.md; none
 is adjusted to what the audit achieves:
 
   precision  >= 0.95  of the sensors judged "inconsistent", the share that truly has a gross error
