@@ -58,11 +58,10 @@ double coordinate_rounding(double offset, double scale) {
   return 16 * std::numeric_limits<double>::epsilon() * std::abs(offset) / scale;
 }
 
-// The issue: 300 sites near 1e7 came back with position error 1e-7 and weight error 1.4e-5, and
-// "voronoi: no" with 822 differences, while the same graph at the origin gave 5e-12 and "yes".
-// (Sites spread over 1e3 near 1e7 reproduce it: 1.3e-7, 1.9e-5 and no "yes" in five seeds before
-// the graph frame. A unit extent at 1e7 is not used: the engine's diagram of it fails the
-// independent checker.)
+// Recognition works in the graph's own frame: without it, 300 sites near 1e7 come back with
+// position error ~1e-7 and weight error ~1e-5, and "voronoi: no" with hundreds of differences,
+// while the same graph at the origin gives 5e-12 and "yes". Sites spread over 1e3 near 1e7 show
+// it. (A unit extent at 1e7 is not used: the engine's diagram of it fails the independent checker.)
 TEST(FrameInvariance, TranslatedRotatedAndScaledCopiesGiveTheSameAnswer) {
   const Similarity copies[] = {
       {1.0, 0.0, 0.0, 0.0},     {1e3, 0.0, 1e7, 1e7},   {1e-3, 0.0, 0.0, 0.0}, {1e7, 0.0, 0.0, 0.0},
