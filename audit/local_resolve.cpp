@@ -397,7 +397,7 @@ void resolve_misplaced(const RefinementSetup& setup, const SiteEstimates& estima
   drop_pinned_island_hosts(setup, adj, refined, suspect);
   // Local minima are local: when a large share of the map looks stuck, the cause is global (the map
   // does not follow the model, which the model fit will report), and re-solves would only chase it
-  // (a 100-town map of terrain shadowing: 87 suspects, 39 s).
+  // at great cost.
   const std::size_t suspects = n - static_cast<std::size_t>(std::count(suspect.begin(), suspect.end(), Suspicion::kNone));
   if (static_cast<double>(suspects) > tolerance::kLocalMaxSuspectShare * static_cast<double>(n)) {
     messages.push_back(std::to_string(suspects) + " of " + std::to_string(n) +
