@@ -132,9 +132,9 @@ TEST(NearDegenerate, GridsAndCollinearSitesAreTheMwvdOfTheirReconstruction) {
         ++valid;
         const std::string what = testing::to_string(family) + " perturbed " + p.name() + " seed " + std::to_string(seed);
         ASSERT_TRUE(rt.r.bisector_graph) << what << ": " << rt.r.reason;
-        // Grid seed 5 reconstructs sites an ulp off the integers; the engine used to refuse to draw
-        // them (a short arc between nodes that other mends merged read with one angle at both
-        // ends), and the MWVD check answered "unknown".
+        // Grid seed 5 reconstructs sites an ulp off the integers; the engine must draw them (a short
+        // arc between nodes that other mends merged, read with one angle at both ends, would make
+        // it refuse), or the MWVD check answers "unknown".
         EXPECT_EQ(rt.r.voronoi, MwvdAnswer::kYes) << what << ": " << rt.r.voronoi_differences.size() << " differences; " << rt.r.reason;
         if (family == RecognitionFamily::kGrid && rt.r.unique) {
           EXPECT_LE(rt.error.position, 1e-12) << what;
@@ -144,12 +144,11 @@ TEST(NearDegenerate, GridsAndCollinearSitesAreTheMwvdOfTheirReconstruction) {
   EXPECT_GE(valid, 30);
 }
 
-// Nearly collinear sites put nodes 10^4..10^13 extents out. Tracing faces by geometry used to leave
-// arcs' sides open there, and an accepted reconstruction was wrong (40 sites, 1e-9, seed 2: sites
-// 0.66 of their extent off, a weight 0.61 off). Now every arc is traced and verified, and a unique
-// answer is as close to the drawing sites as the graph determines them: across the line only to
-// the conditioning of the mirror relations (measured up to 2.3e-8 in position, 3e-10 in weight
-// at 40 sites; docs/RECOGNITION.md, "What the graph determines").
+// Nearly collinear sites put nodes 10^4..10^13 extents out, where tracing faces by geometry can
+// leave arcs' sides open and let a wrong reconstruction be accepted (40 sites, 1e-9, seed 2). Every
+// arc must be traced and verified, and a unique answer as close to the drawing sites as the graph
+// determines them: across the line only to the conditioning of the mirror relations
+// (docs/RECOGNITION.md, "What the graph determines").
 TEST(NearDegenerate, CollinearSitesComeBackToTheirConditioning) {
   const Perturbation perturbations[] = {{}, {true, 0.0}, {false, 1e-15}, {false, 1e-12}, {false, 1e-9}};
   int compared = 0;
