@@ -8,13 +8,11 @@
 // gradients preconditioned with aggregation multigrid (laplacian_multigrid.h).
 //
 // Why multigrid: the Laplacian's condition grows like the number of faces, and Jacobi-preconditioned
-// conjugate gradients need O(√n) iterations. Where the start is good that does not show (the
-// residual reaches its rounding in ~40 iterations at 10^6 faces), but one wrong statement — an arc
-// the engine drew as a line between sites whose weights differ by 5e-7, in the 10^6-site diagram of
-// weights in [0.1, 1.1] — shifts the whole subtree behind it, and Jacobi stopped at the cap of 100
-// iterations with weights 3.8e-7 off across the graph. Multigrid-preconditioned, the same system
-// reaches its rounding in ~70 iterations and the solution a sparse direct factorisation gives
-// (Eigen's SimplicialLDLT took 19 s and 18 million factor entries there).
+// conjugate gradients need O(√n) iterations. Where the start is good that does not show, but one
+// wrong statement (an arc the engine drew as a line between sites of slightly different weights)
+// shifts the whole subtree behind it, and Jacobi stops at its iteration cap with weights off across
+// the graph. Multigrid-preconditioned, the same system reaches its rounding and the solution a
+// sparse direct factorisation gives, at a fraction of the factorisation's time and memory.
 #include <algorithm>
 #include <cmath>
 #include <limits>
