@@ -118,9 +118,10 @@ TEST(NearDegenerate, FamiliesPerturbedSlightlyAreRecovered) {
 
 // Grids with weights 1 and 2 (nodes of degree up to nine, tangencies) and collinear sites, exact and
 // perturbed: every diagram the independent checker accepts is a bisector graph and the MWVD of its
-// reconstruction. Before: a grid's parallel bisectors met 1e15 out and mirrors through that node
-// were 0.1 off; split nodes put the sites 1e13 units out in their frame; collinear faces whose only
-// near nodes were one mirror pair took far nodes' solution circles for candidates.
+// reconstruction. The hard parts: a grid's parallel bisectors meet 1e15 out, where mirrors through
+// that node lose their digits; split nodes put the sites 1e13 units out in their frame; collinear
+// faces whose only near nodes are one mirror pair must not take far nodes' solution circles for
+// candidates.
 TEST(NearDegenerate, GridsAndCollinearSitesAreTheMwvdOfTheirReconstruction) {
   const Perturbation perturbations[] = {{}, {true, 0.0}, {false, 1e-15}, {false, 1e-12}, {false, 1e-9}};
   int valid = 0;
