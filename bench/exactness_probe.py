@@ -8,7 +8,8 @@ generating sites); a graph with two site labels swapped; graphs rounded to 15, 1
 Usage: python3 bench/exactness_probe.py build/cli/covmap [engine] [recognize] [labels] [rounded]
 Prints one line per case; the engine section ends with the number of diagrams written wrongly
 (exit 0 from `diagram` but rejected by `check`, or any exit but 0 and 2). Exit status 1 when that
-number is not 0. The generated files stay in the temporary probe-* folder the lines name, for inspection."""
+number is not 0. The generated files stay in the temporary probe-* folder the lines name, for
+inspection."""
 import json, math, os, random, subprocess, sys, tempfile
 COVMAP = sys.argv[1]
 SECTIONS = sys.argv[2:] or ["engine", "recognize", "labels", "rounded"]
