@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 """Near-degenerate and extreme inputs through the CLI, as a user would meet them: nearly
-degenerate site sets (collinear, cocircular, grids, equal weights; moved by an ulp, 1e-15, 1e-12, 1e-9 or not at all; at
-1 and at 1e7) and extreme values through `diagram` and `check`; translated, rotated and scaled
-graphs and the near-degenerate diagrams through `recognize` (position and weight errors against the
-generating sites); a graph with two site labels swapped; graphs rounded to 15, 12, 9 and 6 digits.
+degenerate site sets (collinear, cocircular, grids, equal weights; moved by an ulp, 1e-15, 1e-12,
+1e-9 or not at all; at 1 and at 1e7) and extreme values through `diagram` and `check`;
+translated, rotated and scaled graphs and the near-degenerate diagrams through `recognize`
+(position and weight errors against the generating sites); a graph with two site labels swapped;
+graphs rounded to 15, 12, 9 and 6 digits.
 
 Usage: python3 bench/exactness_probe.py build/cli/covmap [engine] [recognize] [labels] [rounded]
 Prints one line per case; the engine section ends with the number of diagrams written wrongly
