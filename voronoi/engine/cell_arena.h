@@ -27,7 +27,8 @@ void arena_deallocate(void* p, std::size_t bytes) noexcept;
 
 // Maps chunks for `bytes` more of blocks and touches every page of them, for the blocks allocated
 // next: build_diagram calls it on its second thread as the insertion starts, so that the inserting
-// thread finds its memory faulted in rather than zeroing fresh pages itself. A chunk still being touched is not handed out; the allocator maps its own then.
+// thread finds its memory faulted in rather than zeroing fresh pages itself. A chunk still being
+// touched is not handed out; the allocator maps its own then.
 void arena_prefault(std::size_t bytes);
 
 // Unmaps the prefaulted chunks no block was carved from.
