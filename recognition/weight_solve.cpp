@@ -2,7 +2,7 @@
 // arc. Each arc with sites s_l, s_r on its two sides states their weight ratio (Lemma 1:
 // w_l / w_r = |c - s_l| / r = r / |c - s_r|, equal weights for a line); breadth-first propagation
 // uses only the arcs of one spanning tree, so its weights carry the sum of the rounding along the
-// tree path (~√depth crossings, 4e-11 relative at 10^4 sites, 2.5e-8 at 10^6). Here every arc
+// tree path (~√depth crossings, growing with the graph). Here every arc
 // counts: minimise Σ ω_a (u_r - u_l - d_a)² over u = log w, a graph-Laplacian system, started from
 // the ratios integrated along the tree again from the refined sites and solved by conjugate
 // gradients preconditioned with aggregation multigrid (laplacian_multigrid.h).
