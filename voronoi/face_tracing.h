@@ -11,7 +11,7 @@
 //   hole placement       hole_placement.cpp     each hole into its face, by ray or by containment
 //   face cycles          outer_faces.cpp        each face's cycles into Diagram::cycles
 //   face index           face_index.cpp         per half-arc, its face and its successor
-// Small helpers used in the hot loops are inline here, as they were in one file before.
+// Small helpers used in the hot loops are inline here, so that every file above inlines them.
 #pragma once
 
 #include <array>

@@ -81,8 +81,9 @@ void straighten_flat_arcs(Diagram& d) {
 // bit of a double's mantissa, and the diagram of scaled sites is the scaled diagram (positions
 // scale it, weights only enter as ratios), so every exact decision is the one the input asked
 // for. What the scaling buys is range: the lifted coordinates and the double constructions stay
-// far from overflow (sites at 1e15 gave infinite nodes) and from the magnitudes at which the
-// engine's internal thresholds were chosen (sites at 1e9 gave a wrong diagram). A site whose
+// far from overflow (unscaled, sites at 1e15 give infinite nodes) and from the magnitudes at
+// which the engine's internal thresholds were chosen (unscaled, sites at 1e9 give a wrong
+// diagram). A site whose
 // scaled value would leave the normal range of doubles (coordinates or weights spanning more
 // than ~600 orders of magnitude) is refused: it cannot be scaled exactly.
 struct Scaling {

@@ -100,7 +100,7 @@ class SpatialExtractor {
   LargeVector<int> vertex_node_;    // node id of a zero vertex, by union-find root
   std::vector<std::pair<int, int>> zero_nodes_;  // (cell, node) of the finite zero-vertex cells, by cell
   // Large buffers, sized without being written: every entry is written as its node is placed, on
-  // all cores (as std::vectors they were zero-filled on one core first, through 4 KiB page faults).
+  // all cores (std::vectors would be zero-filled on one core first, through 4 KiB page faults).
   LargeVector<std::array<int, 3>> node_facet_;  // per root node: the sites of its facet
   LargeVector<AlongLine> node_root_;            // per root node: which root of its facet's line
   int workers_ = 1;
