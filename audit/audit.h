@@ -1,6 +1,6 @@
 // audit::audit — does a coverage map agree with the sensors that drew it?
 //
-// Pipeline (issue 4): clean the map into an arc graph (map_cleaning.h); estimate every sensor's
+// Pipeline: clean the map into an arc graph (map_cleaning.h); estimate every sensor's
 // position and weight from the fitted bisectors with the recognition machinery run with
 // tolerances (tolerant_sites.h); refine all of them by robust least squares on points sampled along
 // the boundaries (fitting/refine.h); recompute the MWVD of the refined sensors and of the reported
@@ -12,7 +12,7 @@
 // and the later stages work with what they have. Throws std::invalid_argument for an empty map
 // and, before any work, MapTooLarge for a map naming more than kMaxSensors; throws
 // cleaning::SnapTooSmall when the snap distance is too small for the map. Long solves call
-// `progress` at least every tolerance::kHeartbeatSeconds. Deterministic (issue 12): the same
+// `progress` at least every tolerance::kHeartbeatSeconds. Deterministic: the same
 // input and options give the same result, bit for bit, whatever options.threads, except the
 // wall-clock `timings` and `seconds`.
 #pragma once
@@ -69,10 +69,9 @@ struct AuditOptions {
   int threads = 2;
 };
 
-// The most sensors one audit takes. The joint refinement grows faster than linearly (a 10⁴-sensor
-// map took ~80 s end to end on a loaded 2-core machine, docs/RELIABILITY.md), so a map of 10⁶
-// sensors would run for hours; above the limit the audit is refused at once with a message that
-// says to split the map into regions.
+// The most sensors one audit takes. The joint refinement's time grows faster than linearly
+// (docs/RELIABILITY.md), so a map of 10⁶ sensors would run for hours; above the limit the audit is
+// refused at once with a message that says to split the map into regions.
 inline constexpr std::size_t kMaxSensors = 100'000;
 
 // The map names more sensors than kMaxSensors; thrown before any work.
@@ -121,7 +120,7 @@ struct DiagramAgreement {
   std::vector<std::string> appeared;  // sensors with a recomputed cell but none in the map
 };
 
-// The map's reception limit (issue 12): where coverage ends against uncovered area that is not the
+// The map's reception limit: where coverage ends against uncovered area that is not the
 // map's frame (cleaning's range edges), sensor i's coverage ends at R·w_i with one R for the map.
 struct ReceptionLimit {
   double range_m = 0.0;        // R: the reach of a sensor of weight 1 (the strongest), metres
@@ -133,9 +132,9 @@ struct ReceptionLimit {
   std::size_t sensors = 0;     // sensors whose coverage ends at a range edge somewhere
 };
 
-// How well the multiplicative model explains the map (issue 12; audit/model_fit.h has both
-// statistics): (1) the mean square of the model's boundary residuals over that of free curves
-// fitted to each boundary on its own, ~1 where the map follows the model; (2) the reported sensors
+// How well the multiplicative model explains the map (audit/model_fit.h has both statistics):
+// (1) the mean square of the model's boundary residuals over that of free curves fitted to each
+// boundary on its own, ~1 where the map follows the model; (2) the reported sensors
 // against the map: where the model holds and the reports are right but for a few gross errors, most
 // sensors' χ² tail probabilities are large; a region (or map) where most are small is not drawn by
 // the model the reports describe (e.g. every sensor its own path-loss exponent: the boundaries are
@@ -162,7 +161,7 @@ struct StageTiming {
 };
 
 // Every member but `timings` and `seconds` is the same, bit for bit, on every run of the same input
-// and options, whatever options.threads (issue 12); those two are wall-clock times, kept apart.
+// and options, whatever options.threads; those two are wall-clock times, kept apart.
 struct AuditResult {
   std::vector<SensorAudit> sensors;   // map sensors first (map order), then reported-only ones
   cleaning::CleanedMap cleaned;

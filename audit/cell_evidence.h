@@ -1,4 +1,4 @@
-// What a sensor's mapped cell says about its report, apart from the boundary fit (issue 12).
+// What a sensor's mapped cell says about its report, apart from the boundary fit.
 // Internal to the audit library.
 //
 // Two facts of the model need no boundary fit:

@@ -1,41 +1,13 @@
 // Local re-solves of the sensors that the joint refinement left badly placed (audit_stages.h).
 //
-// Why sensors end far off. The joint refinement is one descent of the whole map; on generated maps
-// of 10⁴ sensors (docs/ACCURACY.md, Limits) a few sensors per thousand ended 3–10 bins off, held in
-// local minima of three kinds (each found by solving their neighbourhoods from the truth):
-//  - two neighbours merged: both sites at one point with nearly equal weights. Their bisector is
-//    then an Apollonius circle through that point whose radius is a ratio of two tiny differences
-//    (NUMERICS.md): it fits their common boundary whatever the pair does elsewhere, and their
-//    samples' residuals vanish with the gradient (fitting/residuals.h), an attractor of the descent;
-//  - a heavy sensor with an island (a neighbour's cell entirely inside its own): the island's circle
-//    leaves the pair two free parameters, the island's site anywhere in it and the host's at the
-//    inverse point, so the host ended 8 bins off with every boundary fitting to 0.9 σ;
-//  - the region around either, distorted by it: one ring of neighbours held at their values kept
-//    the solve from the truth 5 bins off; two rings free undo it.
-// A descent of the whole map cannot leave such a minimum (every other sensor holds the pair in
-// place); a solve of the sensor's neighbourhood alone, from a few starts that its own cell suggests,
-// can. It is small, so it is cheap, and its cost compares starts fairly: each sees the same samples
-// with the same sensors held around them.
-//
-// Which sensors (suspected): those whose site lies outside their own cell (a site always lies
-// inside its own region), whose weight is far from their neighbours' (a divergence), with a
-// neighbour within kLocalMergedBins (merged), hosting an island that its other boundaries do not
-// pin down (drop_pinned_island_hosts), or with a boundary fitted poorly
-// (its median residual above kLocalPoorFitSigma). The neighbourhood of sensor i: every sensor within
-// kLocalFreeRings shared boundaries of i is free, under the joint refinement's weak priors (position
-// and phase 1's loose log weight, about their current values, the same for every start); the
-// sensors around them are held (tight priors at their current values); the samples are every
-// sample of a free sensor. The starts: the current
-// solution (so a re-solve never ends worse than where it began); i at its cell's centroid, at its
-// tolerant estimate and at its reported position; every free sensor at its cell's centroid. At a new
-// position a sensor's weight is the one that puts its boundaries where the samples are (the median
-// of log(|q − s_i| / |q − s_j|) + log w_j over its samples q). A solution that leaves a free site
-// outside its own cell or on another site is a degenerate minimum and is never taken; among the
-// others the lowest cost wins. Sensors are taken in index order, each re-solve seeing the ones
-// before, and a suspect solved as a neighbour of an earlier one is done. Suspects whose
-// neighbourhoods share no sensor cannot see each other, so they run at once in waves
-// (resolve_misplaced), every start of each on its own thread, compared in start order: the result
-// is the sequence's, whatever the threads or timing.
+// Why: one descent of the whole map can leave a sensor in a local minimum that the sensors around
+// it hold it in: two neighbours merged at one point with nearly equal weights (their bisector
+// circle fits their common boundary whatever the pair does elsewhere, docs/NUMERICS.md, 'Apollonius
+// centre'), a heavy sensor at the wrong inverse point of its island's circle, or the ring around
+// either distorted by it. A solve of the neighbourhood alone, from a few starts its own cell
+// suggests, can leave such a minimum; it is small, so cheap, and every start sees the same samples
+// and held sensors, so their costs compare fairly. The functions below say which sensors are
+// suspects, what a neighbourhood and a start are, and why the result does not depend on threads.
 #include <algorithm>
 #include <cmath>
 #include <exception>
@@ -324,8 +296,7 @@ Suspicion suspicion(const RefinementSetup& setup, const MapCells& cells, const M
 // its island's circle, which moves it by bins: they would show the move. What they can hide is a
 // move that shifts each of their n samples by no more than its noise: about σ·√n, with σ the
 // host's conditional position 1-σ from them (fitting/local_uncertainty.h, neighbours held). Below
-// kLocalIslandHostHiddenBins the host is no suspect. (On a 10⁴-sensor map 267 of 280 re-solves
-// were of island hosts, all with σ·√n of 0.6–1.3 bins, and none found a lower minimum.)
+// kLocalIslandHostHiddenBins the host is no suspect: such re-solves cost time and find nothing.
 void drop_pinned_island_hosts(const RefinementSetup& setup, const Adjacency& adj, const fitting::RefineResult& refined,
                               std::vector<Suspicion>& suspect) {
   if (std::none_of(suspect.begin(), suspect.end(), [](Suspicion s) { return s == Suspicion::kIslandHost; })) return;
@@ -426,7 +397,7 @@ void resolve_misplaced(const RefinementSetup& setup, const SiteEstimates& estima
   drop_pinned_island_hosts(setup, adj, refined, suspect);
   // Local minima are local: when a large share of the map looks stuck, the cause is global (the map
   // does not follow the model, which the model fit will report), and re-solves would only chase it
-  // (a 100-town map of terrain shadowing: 87 suspects, 39 s).
+  // at great cost.
   const std::size_t suspects = n - static_cast<std::size_t>(std::count(suspect.begin(), suspect.end(), Suspicion::kNone));
   if (static_cast<double>(suspects) > tolerance::kLocalMaxSuspectShare * static_cast<double>(n)) {
     messages.push_back(std::to_string(suspects) + " of " + std::to_string(n) +
@@ -448,7 +419,8 @@ void resolve_misplaced(const RefinementSetup& setup, const SiteEstimates& estima
     for (std::size_t l = 0; l < nb.free; ++l) sites[nb.sensors[l]] = best.sites[l];
     // Its neighbours were solved with it, from the same starts: a later suspect among them is
     // done. So is an island host anywhere in the free set (it was solved from its centroid with
-    // its island); a misfit two rings away needs starts of its own (measured: one ended 3.1 bins off).
+    // its island); a misfit two rings away needs starts of its own (the shared ones can leave it
+    // bins off).
     for (int j : adj.neighbours[i]) suspect[j] = Suspicion::kNone;
     for (std::size_t l = 0; l < nb.free; ++l)
       if (suspect[nb.sensors[l]] == Suspicion::kIslandHost) suspect[nb.sensors[l]] = Suspicion::kNone;

@@ -1,4 +1,4 @@
-// Model fit (issue 12): how well the multiplicative model explains the map, measured against the
+// Model fit: how well the multiplicative model explains the map, measured against the
 // noise the map itself carries. Internal to the audit library.
 //
 // Every boundary chain has two fits: its own free circle or line (cleaning, three parameters per

@@ -64,10 +64,10 @@ fitting::RefineResult multi_start_refinement(const RefinementSetup& setup, const
   const std::size_t n = setup.n;
   const std::vector<Point>& centroids = cells.centroids;
   const bool multi_start = n <= tolerance::kMultiStartSensors;
-  // The first start: every sensor at its cell's centroid, with the tolerant weights. Measured on
-  // generated maps (docs/ACCURACY.md), it converges in about half the iterations of the junction
-  // positions, whose solution circles come from short, noisy arcs; those positions are a second
-  // start on maps small enough for several.
+  // The first start: every sensor at its cell's centroid, with the tolerant weights. On generated
+  // maps it converges faster than the junction positions (docs/ACCURACY.md), whose solution circles
+  // come from short, noisy arcs; those positions are a second start on maps small enough for
+  // several.
   std::vector<Site> centroid_start = estimates.sites;
   for (std::size_t i = 0; i < n; ++i) centroid_start[i].x = centroids[i].x, centroid_start[i].y = centroids[i].y;
   std::vector<std::vector<Site>> starts{centroid_start};

@@ -20,7 +20,7 @@ inline constexpr SensorVerdict kAllSensorVerdicts[] = {SensorVerdict::kUnreporte
                                                        SensorVerdict::kInconsistent, SensorVerdict::kUndetermined,
                                                        SensorVerdict::kNotInMap, SensorVerdict::kModelMisfit};
 
-// What a verdict rests on (issue 12): the χ² test of the boundary fit, the sensor's mapped cell
+// What a verdict rests on: the χ² test of the boundary fit, the sensor's mapped cell
 // (audit/cell_evidence.h: where the boundaries do not pin it down), the predicted cell of a sensor
 // absent from the map, or the model fit (model_misfit); kNone for unreported sensors and for
 // sensors nothing could judge.

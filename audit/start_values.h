@@ -1,5 +1,5 @@
 // audit::estimate_sites — the recognition machinery run with tolerances on a cleaned
-// coverage map, for starting values of the least-squares refinement (issue 4).
+// coverage map, for starting values of the least-squares refinement.
 //
 // A cleaned map knows which sensor owns each face, but its arcs are fitted to staircases: no exact
 // solution exists, so every exact test of recognize() becomes a least-squares problem:

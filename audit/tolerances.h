@@ -39,9 +39,9 @@ inline constexpr double kEstimateStepStop = 1e-12;
 // sensor by a measurable fraction of a bin.
 inline constexpr double kAuditFunctionTolerance = 1e-7;
 // Phase 1 of the refinement (weights held loosely by priors) stops earlier: it is only the start of
-// phase 2, which releases those priors and lowers the cost by percents (16 % on the 10⁴-sensor map
-// of docs/PERFORMANCE.md); resolving phase 1 beyond a part in 10⁴ of its cost changes nothing
-// that phase 2 does not move again. (Its tail there ran 60 iterations for 0.7 % of its cost.)
+// phase 2, which releases those priors and lowers the cost by percents; resolving phase 1 beyond a
+// part in 10⁴ of its cost changes nothing that phase 2 does not move again, and its slow tail
+// would cost many iterations for nothing.
 inline constexpr double kPhase1FunctionTolerance = 1e-4;
 // Robust loss scale of the refinement, in sample σ (σ = bin / √12): a staircase point is at most
 // ±bin/2 ≈ 1.7 σ from the true boundary, so residuals beyond 3 σ are outliers (a misassigned bin,
@@ -58,9 +58,8 @@ inline constexpr int kPhase2Iterations = 60;
 // A twentieth of a bin and 0.01 (0.15 dB at α = 3.5) are far below what the staircases resolve
 // (a sample's σ is bin/√12). The few sensors still moving then are those creeping along a flat
 // valley or running off; the restart round and the local re-solves that follow are built for them,
-// while every further joint iteration costs a linear solve of the whole map. On the 10⁴-sensor map
-// of docs/PERFORMANCE.md phase 2's iterations 25–60 moved 4–6 sensors (one running off); at
-// 3·10⁴ sensors tens of thousands still move until Ceres' own tolerance ends it (41 iterations).
+// while every further joint iteration costs a linear solve of the whole map. On large maps many
+// sensors may still move, and then Ceres' own tolerance ends phase 2.
 inline constexpr int kPhase2SettleWindow = 5;
 inline constexpr double kPhase2SettledBins = 0.05;
 inline constexpr double kPhase2SettledLogWeight = 0.01;
@@ -78,8 +77,8 @@ inline constexpr double kMaxComparisonBins = 4e6;
 inline constexpr std::size_t kMultiStartSensors = 300;
 // Maps up to this many sensors get one boundary sample per bin, larger ones one per two bins.
 inline constexpr std::size_t kDenseSamplingSensors = 3000;
-// Rounds of restarting sensors that ended outside their own cell. A second round was measured on
-// a 10⁴-sensor map: mean IoU 0.942 -> 0.953 for twice the refinement time (55 s end to end).
+// Rounds of restarting sensors that ended outside their own cell. A second round improves the
+// agreement only slightly for twice the refinement time (docs/PERFORMANCE.md).
 inline constexpr int kRestartRounds = 1;
 
 // Seconds between progress heartbeats inside a long stage (solver iterations).
@@ -98,13 +97,12 @@ inline constexpr double kCellModelOverlap = 0.8;
 // cell's boundary by a bin or two; a gross error of several bins, or of several dB, beyond them
 // halves the overlap.
 inline constexpr double kPredictedOverlap = 0.5;
-// A cell of fewer bins than this (8 × 8) is below the map's resolution. The resolution
-// condition, bins at most 1/10 of the local spacing, gives cells of ~80 bins; a smaller cell's
-// boundaries are a few staircase steps between merged junctions, whose errors are correlated, so
-// neither the χ² test of the boundary fit (it takes them as independent) nor the model-fit ratio
-// applies. Measured on the bundled Switzerland map (1 km bins): cells of 11–44 bins reached
-// model-fit ratios of 3–50 under the model itself, and two of them failed the χ² test by 4–5σ in
-// weight without any error. Such cells are judged by their cell (cell_evidence.h).
+// A cell of fewer bins than this (8 × 8) is below the map's resolution. The resolution condition
+// of the accuracy targets (docs/ACCURACY.md), bins at most 1/10 of the local spacing, gives cells
+// of ~80 bins; a smaller cell's boundaries are a few staircase steps between merged junctions,
+// whose errors are correlated, so neither the χ² test of the boundary fit (it takes them as
+// independent) nor the model-fit ratio applies: both flag such cells without any error. Such cells
+// are judged by their cell (cell_evidence.h).
 inline constexpr double kResolvedCellBins = 64.0;
 // A sensor absent from the map contradicts it when its reported values would give it at least this
 // many bins (a cell of a bin or two can vanish in a raster by where its bin centres fall).
@@ -120,9 +118,8 @@ inline constexpr double kPredictionSearchSpacings = 4.0;
 inline constexpr double kRangeEdgeMisfitRatio = 4.0;
 
 // Local re-solves (audit/local_resolve.cpp) run only while at most this share of the sensors is
-// suspect: on maps drawn by the model 3–27 % are (300 of 10⁴, mostly hosts of island cells; 27 of
-// 100 Dutch towns with an 8 km reach); on maps the model does not explain most are (87 of 100 with
-// terrain shadowing), and the re-solves, which cannot fix a model, took 39 s of a 40 s audit.
+// suspect: on maps drawn by the model a minority are; on maps the model does not explain most are,
+// and the re-solves, which cannot fix a model, would take nearly all of the audit's time.
 inline constexpr double kLocalMaxSuspectShare = 0.5;
 
 // Model fit (audit/model_fit.h). The map's own noise is at least this many bins (rms), however
@@ -134,16 +131,14 @@ inline constexpr double kMisfitNoiseFloorBins = 0.1;
 inline constexpr double kMisfitAreaShare = 0.1;
 // A sensor's model-fit ratio is measured only over at least this many boundary samples (about one
 // per bin): a cell a few bins across is below the map's resolution, and a mean square of a handful
-// of staircase steps varies by factors of several by chance (measured on the bundled Switzerland
-// map: cells of 1–25 bins reached ratios of 5–80 under the model itself).
+// of staircase steps varies by factors of several by chance, even under the model itself.
 inline constexpr int kMisfitMinSamples = 20;
 // ... and only for cells of at least kResolvedCellBins.
 // The reports against the map (audit/model_fit.h, ModelFit (2)). Where the model holds and the
 // reports are right, a sensor's χ² tail probability is uniform or larger (the floors only shrink
 // χ²): the median over its neighbours is below 0.1 only when more than half of them carry gross
-// errors (with 10 % of sensors wrong and six neighbours, P ≈ 1.6 %). On maps drawn with a
-// path-loss exponent per sensor the median χ² was 19–41 (tail ~10⁻⁴), under the model 0.5–0.8 even
-// with 30 % gross errors (docs/ACCURACY.md).
+// errors (with 10 % of sensors wrong and six neighbours, P ≈ 1.6 %); maps drawn by other models
+// fall far below it (docs/ACCURACY.md).
 inline constexpr double kMisfitPValue = 0.1;
 // ... over at least this many judged neighbours (a sensor with fewer is judged alone).
 inline constexpr std::size_t kMisfitMinNeighbours = 4;
@@ -182,17 +177,16 @@ inline constexpr double kLocalOutsideMapSpacings = 3.0;
 inline constexpr double kLocalHeldPositionBins = 1e-3;
 inline constexpr double kLocalHeldLogWeight = 1e-4;
 // The sensors within this many steps (shared boundaries) of a re-solved sensor are free in its
-// local solve. One ring cannot undo a merged pair's distortion of the sensors around it (measured
-// on a 10⁴-sensor map: solved from the truth with one ring free and the next held at the distorted
-// values, a sensor left it by 5 bins); with two no sensor ended more than 3 bins off, as with three
-// at 1.7 times the audit's time.
+// local solve. One ring cannot undo a merged pair's distortion of the sensors around it (the ring
+// held at the distorted values keeps the sensor bins off); two can, and three cost more time for
+// no better result.
 inline constexpr std::size_t kLocalFreeRings = 2;
 // A candidate start within this many bins of the current site or of another candidate descends to
 // the same minimum (a local minimum's basin is several bins wide) and is not solved again.
 inline constexpr double kLocalSameStartBins = 2.0;
 // An island host is a suspect only when its boundaries with its other neighbours could hide a move
 // of this many bins (σ·√n, local_resolve.cpp): the inverse-point ambiguity of an island's circle
-// moves the host by several bins (docs/ACCURACY.md: one ended 8 bins off), and a local minimum's
+// moves the host by several bins (docs/ACCURACY.md), and a local minimum's
 // basin is kLocalSameStartBins wide.
 inline constexpr double kLocalIslandHostHiddenBins = 2.0;
 // Iteration cap of one local re-solve (a few dozen sensors; most converge in far fewer).

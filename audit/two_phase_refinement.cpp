@@ -21,10 +21,10 @@ namespace {
 // poor start a weakly bounded weight can otherwise run off and take a whole neighbourhood with
 // it, and with weights held this way Ceres' inner iterations (per-site block descent) may run,
 // which cut its iterations several-fold. Phase 2 drops the weight priors and polishes from
-// phase 1's optimum (its gauge: one reference weight held), on every map: it was once skipped
-// above kDenseSamplingSensors for time, but phase 1's priors, loose for each weight, add up along
-// the chains of neighbours of a large map, and a 10⁴-sensor map's weights drifted to 1.2 dB RMS
-// (0.41 dB with phase 2, and no slower end to end: docs/PERFORMANCE.md).
+// phase 1's optimum (its gauge: one reference weight held), on every map, large ones included:
+// phase 1's priors, loose for each weight, add up along the chains of neighbours of a large map,
+// and its weights drift by about a dB RMS without phase 2, at little cost in time
+// (docs/PERFORMANCE.md).
 std::vector<fitting::SitePrior> priors_for(const RefinementSetup& setup, const std::vector<Site>& from, bool weights) {
   std::vector<fitting::SitePrior> priors;
   for (std::size_t i = 0; i < setup.n; ++i)

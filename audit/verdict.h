@@ -1,4 +1,4 @@
-// Judging one reported sensor against the one the map implies (issue 4). The reconstruction and
+// Judging one reported sensor against the one the map implies. The reconstruction and
 // the report are two estimates of the same (x, y, log w); their difference, measured in the sum of
 // both covariances plus model floors, is a Mahalanobis distance² that is χ²-distributed with 3
 // degrees of freedom (2 when no strength was reported) when the report is right. The report is

@@ -127,7 +127,7 @@ struct Tally {
   nlohmann::json stages = nlohmann::json::array();
   std::map<std::string, int> verdicts;
   int gross_total = 0, gross_flagged = 0, flagged_total = 0, judged = 0, correct_flagged = 0;
-  // The issue-12 targets (docs/ACCURACY.md): over sensors whose cell has ≥ kResolvedBins bins,
+  // The accuracy targets (docs/ACCURACY.md): over sensors whose cell has ≥ kResolvedBins bins,
   // position and weight RMSE, undetermined share; recall of the gross errors such a map can reveal
   // (≥ 5 bins or ≥ 5 dB, on a resolved cell); maps reported as model misfits.
   double pos_sq = 0.0, weight_sq = 0.0;

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The audit's scaling table of docs/PERFORMANCE.md: `covmap audit` end to end on generated planar
 # maps of N sensors at a constant density (mean spacing 2 km, 100 m bins, weight ratio 3, 10 %
-# gross errors, seed 1: the issue-4 map at N = 10⁴), with its stage times from report.json, wall
+# gross errors, seed 1), with its stage times from report.json, wall
 # and user time and peak memory from /usr/bin/time, and a same-run reference: the engine's MWVD of
 # 10⁵ uniform sites (mwvd_bench) timed just before each audit, so rows taken under different loads
 # can be compared.

@@ -1,14 +1,16 @@
 #!/usr/bin/env python3
-"""The cases of issue 11 through the CLI, as a user would meet them: nearly degenerate site sets
-(collinear, cocircular, grids, equal weights; moved by an ulp, 1e-15, 1e-12, 1e-9 or not at all; at
-1 and at 1e7) and extreme values through `diagram` and `check`; translated, rotated and scaled
-graphs and the near-degenerate diagrams through `recognize` (position and weight errors against the
-generating sites); a graph with two site labels swapped; graphs rounded to 15, 12, 9 and 6 digits.
+"""Near-degenerate and extreme inputs through the CLI, as a user would meet them: nearly
+degenerate site sets (collinear, cocircular, grids, equal weights; moved by an ulp, 1e-15, 1e-12,
+1e-9 or not at all; at 1 and at 1e7) and extreme values through `diagram` and `check`;
+translated, rotated and scaled graphs and the near-degenerate diagrams through `recognize`
+(position and weight errors against the generating sites); a graph with two site labels swapped;
+graphs rounded to 15, 12, 9 and 6 digits.
 
 Usage: python3 bench/exactness_probe.py build/cli/covmap [engine] [recognize] [labels] [rounded]
 Prints one line per case; the engine section ends with the number of diagrams written wrongly
 (exit 0 from `diagram` but rejected by `check`, or any exit but 0 and 2). Exit status 1 when that
-number is not 0. The generated files stay in the /tmp/probe-* folder the lines name, for inspection."""
+number is not 0. The generated files stay in the temporary probe-* folder the lines name, for
+inspection."""
 import json, math, os, random, subprocess, sys, tempfile
 COVMAP = sys.argv[1]
 SECTIONS = sys.argv[2:] or ["engine", "recognize", "labels", "rounded"]

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Times covmap on the hostile inputs of issue 10 (docs/RELIABILITY.md has the figures).
+"""Times covmap on hostile inputs (docs/RELIABILITY.md has the figures).
 
 Usage: bench/hostile_inputs.py BUILD_DIR [--json] [--only NAME ...] [--work DIR]
 

@@ -1,5 +1,5 @@
 // io_bench: the file I/O of `covmap diagram` and of the commands that read arc graphs, timed apart
-// from the engine (issue 16: reading and writing within 20 % of the engine's time). Each row, in a
+// from the engine (the aim: reading and writing within 20 % of the engine's time). Each row, in a
 // child process of its own (bench/isolated_run.h):
 //   1. n sites from bench/site_distributions.h (the same sites as mwvd_bench for the same --n,
 //      --dist and --seed), written as covmap.sites/1 JSON (not timed);

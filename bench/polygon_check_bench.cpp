@@ -1,5 +1,5 @@
-// polygon_check_bench: times the two simplicity checks of covmap::io on large polygons (issue 10,
-// "bounded work on hostile input"): polygon_defect (every --clip polygon, every arc graph's "clip")
+// polygon_check_bench: times the two simplicity checks of covmap::io on large polygons (bounded
+// work on hostile input): polygon_defect (every --clip polygon, every arc graph's "clip")
 // and detail::find_crossing (every ring set of a coverage map). See docs/PERFORMANCE.md. Measures
 // only; nothing asserts a time.
 //

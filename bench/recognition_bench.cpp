@@ -4,8 +4,8 @@
 //
 //   recognition_bench --n 1000,10000,100000 [--dist uniform12] [--seed 1] [--json]
 //   recognition_bench --n 1000000 --no-check          (the MWVD check at 10^6 takes minutes)
-//   recognition_bench --n 1000000 --no-check --cache /tmp/graphs --repeat 3
-//       keeps the engine's graph in /tmp/graphs between runs (building it takes longer than
+//   recognition_bench --n 1000000 --no-check --cache graphs --repeat 3
+//       keeps the engine's graph in the folder graphs between runs (building it takes longer than
 //       recognizing it) and reports the fastest of three recognitions with its stages
 #include <CLI/CLI.hpp>
 #include <sys/resource.h>

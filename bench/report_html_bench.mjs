@@ -1,4 +1,4 @@
-// How report.html behaves in a real browser at scale (issue 13): file size, time to the first
+// How report.html behaves in a real browser at scale: file size, time to the first
 // drawn map, and the time of one redraw when zooming, panning and selecting a sensor, in headless
 // Chromium (the browser tests' set-up: tests/browser/lib). Prints one JSON object per page.
 //

@@ -215,8 +215,8 @@ namespace {
 
 CurveIntersection circle_circle(const ArcPath& a, const ArcPath& b, double eps) {
   CurveIntersection out;
-  // Work from the smaller circle (NUMERICS.md: the textbook radical-line formula loses digits when
-  // a huge circle meets a small one).
+  // Work from the smaller circle: the textbook radical-line formula loses digits when a huge circle
+  // meets a small one (docs/NUMERICS.md, 'Circle–circle intersection').
   const ArcPath& p = a.radius <= b.radius ? a : b;
   const ArcPath& q = a.radius <= b.radius ? b : a;
   const double r1 = p.radius, r2 = q.radius;

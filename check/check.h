@@ -73,7 +73,7 @@ struct CheckOptions {
   // third site being closer, arc ends on their curve, curve parameters against the bisector's
   // closed form, and how far from end nodes an intersection must be to count as a crossing. 1e-7 is
   // what careful double-precision constructions reach on realistic data (see
-  // /work/shared/NUMERICS.md).
+  // docs/NUMERICS.md, 'Vertices far from the sites').
   double relative_tolerance = 1e-7;
   // Not a choice but a floating-point fact: a number of magnitude M is only known to about
   // M * DBL_EPSILON. Each test at a point p allows eps + rounding_ulps * DBL_EPSILON * M with

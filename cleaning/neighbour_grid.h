@@ -14,7 +14,7 @@
 // level whose occupied cells fill their bounding box densely enough, or whose box is small (the
 // coarse levels of a map: its few long edges over a box 8^L times smaller), a dense row-major table
 // of first entries serves a query's row of cells as one contiguous run instead of one hash probe
-// per cell. The probes' cache misses were a fifth of the map cleaning's CPU time on a 10⁴-cell map,
+// per cell. The probes' cache misses are a large part of the map cleaning's CPU time otherwise,
 // most of them on level 1, which every query visits once a map has an edge over 32 cells long.
 #pragma once
 

@@ -1,5 +1,5 @@
-// Range edges: where a sensor's coverage ends at a reception limit rather than at the map's frame
-// (issue 12). Internal to map_cleaning.
+// Range edges: where a sensor's coverage ends at a reception limit rather than at the map's frame.
+// Internal to map_cleaning.
 //
 // In the path-loss model the coverage of sensor i ends on the circle about it of radius R·w_i. A
 // map's outside boundary is either the frame of the area the map was computed over (the raster's

@@ -60,8 +60,8 @@ int run_diagram(const DiagramOptions& options) {
       throw io::InputError(options.sites_path, std::move(problems));
     }
     if (!options.clip.empty()) diagram = voronoi::clip_diagram(diagram, io::parse_clip(options.clip));
-    // Each output is written straight into its temporary (the arc graph of 10^6 sites is 0.8 GB of
-    // text: never held in memory); then all are put in place together, or none.
+    // Each output is written straight into its temporary (a large arc graph is gigabytes of text:
+    // never held in memory); then all are put in place together, or none.
     io::StagedFiles outputs;
     outputs.stage(io::normalized_output_path(options.output_path),
                   [&diagram](std::ostream& out) { io::write_diagram_json(diagram, out); });

@@ -1,12 +1,11 @@
 // Storage for the large temporary arrays of face tracing and recognition (one entry per arc or
 // half-arc: tens of MB at 10^6 faces).
 //
-// Why: the first touch of every fresh 4 KiB page is a page fault, and on the virtual machines
-// covmap runs on a fault costs ~10 µs (measured: 0.35 s to zero-fill a new 128 MiB vector, 0.004 s
-// to overwrite it). Recognizing 10^6 faces touched ~1 GB of fresh memory: ~3 s of faults, more than
-// the computation. Blocks of at least kLargeBlock bytes are therefore aligned to 2 MiB and advised
-// as transparent huge pages (Linux, THP mode "madvise" or "always"): one fault per 2 MiB. Elsewhere,
-// or when the kernel declines, they are ordinary allocations.
+// Why: the first touch of every fresh 4 KiB page is a page fault, and on virtual machines faults
+// cost enough that a large recognition can spend more time in them than computing
+// (docs/PERFORMANCE.md). Blocks of at least kLargeBlock bytes are therefore aligned to 2 MiB and
+// advised as transparent huge pages (Linux, THP mode "madvise" or "always"): one fault per 2 MiB.
+// Elsewhere, or when the kernel declines, they are ordinary allocations.
 #pragma once
 
 #include <cstddef>

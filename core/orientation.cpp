@@ -66,8 +66,8 @@ int orientation(Point a, Point b, Point c) {
 
   // Exact: first scale every coordinate by one power of two so the largest magnitude is in
   // [0.5, 1): that changes no sign and no mantissa, and keeps every product below 1, so none
-  // overflows (coordinates near 1e308 once gave NaN here) and products of coordinates of similar
-  // size do not underflow (a square of side 1e-162 once looked collinear). Then expand the
+  // overflows (coordinates near 1e308 would give NaN) and products of coordinates of similar
+  // size do not underflow (a square of side 1e-162 would look collinear). Then expand the
   // determinant into six products of coordinates (no rounded differences) and sum their exact
   // two-double representations.
   int exponent = 0;

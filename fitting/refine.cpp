@@ -47,7 +47,7 @@ ceres::Solver::Options solver_options(const RefineOptions& options) {
   solver.max_num_iterations = options.max_iterations;
   // One thread, whatever options.threads: Ceres' evaluator hands residual blocks to its threads
   // dynamically and adds each thread's partial cost and gradient in turn, so with more threads the
-  // sums, hence the accepted steps and the result, depend on scheduling (issue 12). The covariance
+  // sums, hence the accepted steps and the result, would depend on scheduling. The covariance
   // (covariance.cpp) keeps the threads: it computes each block independently.
   solver.num_threads = 1;
   solver.function_tolerance = options.function_tolerance;

@@ -1,12 +1,11 @@
 // Why. Ceres' SPARSE_NORMAL_CHOLESKY factors JᵀJ with CHOLMOD's supernodal Cholesky. Debian's
 // CHOLMOD (SuiteSparse 5) clears its workspace and zeroes each supernode inside OpenMP parallel
 // loops whose thread count is compiled in (CHOLMOD_OMP_NUM_THREADS, 4), so OMP_NUM_THREADS does
-// not reach them: every factorization forked and joined four threads per large enough supernode,
-// on a machine with two cores that the audit's own threads already use (the local re-solves
-// factor on both). On the 10⁴-cell audit that was ~2·10⁶ futex calls and ~14 % of the process's
-// CPU samples in the OpenMP runtime, for loops that only write zeros and copy. Setting the
-// runtime's maximum of active parallel levels to 0 makes each region a team of one, but the
-// runtime still builds and ends a team per region (~2·10⁶ futex wakes, 10 % of the samples).
+// not reach them: every factorization forks and joins four threads per large enough supernode,
+// on cores that the audit's own threads already use (the local re-solves factor on several), and
+// a large audit spends a sizeable share of its CPU in the OpenMP runtime for loops that only write
+// zeros and copy. Setting the runtime's maximum of active parallel levels to 0 makes each region a
+// team of one, but the runtime still builds and ends a team per region, at nearly the same cost.
 //
 // How. A team of one is always a legal OpenMP execution (a runtime may give any region fewer
 // threads than it asks for), so this file defines GOMP_parallel, the entry point GCC's OpenMP
@@ -15,8 +14,8 @@
 // any team), so each loop runs whole. The definition is linked into every executable that refines
 // and exported to the shared libraries it loads, so CHOLMOD's calls bind to it rather than to
 // libgomp's (the dynamic linker searches the executable first, as for malloc). No number changes:
-// CHOLMOD's regions are element-wise loops without reductions, and the 10⁴-cell audit's
-// report.json is identical byte for byte. CHOLMOD is the only library in covmap's processes that
+// CHOLMOD's regions are element-wise loops without reductions, so an audit's report.json is the
+// same byte for byte. CHOLMOD is the only library in covmap's processes that
 // calls GOMP_parallel (checked with `nm -D` over `ldd build/cli/covmap`); a library that did would
 // run its regions on one thread too, with the same results, only without the parallel speed-up.
 // tests/fitting/serial_factorization_test.cpp checks that the process binds to this definition.

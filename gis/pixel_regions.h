@@ -1,4 +1,4 @@
-// The regions of a best-server raster as staircase polygons along the pixel edges (issue 14).
+// The regions of a best-server raster as staircase polygons along the pixel edges.
 // covmap traces the pixel boundaries itself rather than asking GDAL to polygonize: the staircases
 // are what map cleaning expects. Pure algorithm: no GDAL, no file I/O, no other covmap library.
 //

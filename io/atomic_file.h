@@ -11,7 +11,7 @@
 //   temporary folder beside it which is then renamed to `folder` in one step.
 // - write_files_into_directory: write_files_atomically for files in one (possibly new) folder.
 // - StagedFiles / StagedFolder: the same two guarantees for outputs too large to hold in memory
-//   (a 3·10⁴-cell audit's reports are 0.3 GB): each file is written through a stream straight into
+//   (a large audit's reports are hundreds of MB): each file is written through a stream straight into
 //   its temporary as soon as it is ready, and commit() puts them all in place as above. Destroyed
 //   without commit() (an exception while rendering), they remove every temporary. stage() may be
 //   called from several threads at once.

@@ -1,4 +1,4 @@
-// The second pass of the coverage-map reader (internal to io/; issue 16): each usable feature's
+// The second pass of the coverage-map reader (internal to io/): each usable feature's
 // polygons projected into the map's plane and validated there (io/coverage_map_rings.h), on all
 // cores.
 //

@@ -1,4 +1,4 @@
-// The first pass of the coverage-map reader (internal to io/; issue 16): every feature of the file
+// The first pass of the coverage-map reader (internal to io/): every feature of the file
 // as written, before anything is projected or validated as geometry (io/coverage_map.h has the
 // contract of the whole reader).
 //

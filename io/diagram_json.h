@@ -44,7 +44,7 @@ void write_diagram_json(const Diagram& diagram, std::ostream& out);
 // The same text as a string, for callers that need it whole (`covmap diagram` streams into its
 // atomic write's temporary instead). Its capacity is reserved once from an upper bound on the
 // length, in huge pages where the system has them, so a large graph costs no reallocation and few
-// page faults: growing a string by doubling cost more than formatting it (issue 16).
+// page faults: growing a string by doubling would cost more than formatting it.
 // Throws as write_diagram_json.
 std::string diagram_json_text(const Diagram& diagram);
 

@@ -1,5 +1,5 @@
 // write_diagram_json (io/diagram_json.h): the arc graph written token by token through JsonOut,
-// with no JSON document in memory (issue 16), in pieces of a few hundred elements rendered on the
+// with no JSON document in memory, in pieces of a few hundred elements rendered on the
 // machine's cores and written in order (io/ordered_pieces.h). The layout is the one documented in
 // FORMATS.md: one element per line, so a diff shows which arc changed.
 #include <algorithm>
@@ -290,7 +290,7 @@ std::string diagram_json_text(const Diagram& d) {
   std::string text;
   text.reserve(detail::diagram_json_size_bound(d));
   // In huge pages where the system has them: a fresh 4 KiB page costs a fault (core/large_buffer.h),
-  // and faulting in the 78 MB of a 10^5-site graph page by page took longer than formatting it.
+  // and faulting in a large graph's text page by page would take longer than formatting it.
   advise_huge_pages(text.data(), text.capacity());
   detail::render_diagram_json(d, {}, [&text](std::string_view piece) { text.append(piece); });
   return text;

@@ -1,5 +1,5 @@
 // The fast paths of the covmap.sites/1 and covmap.arcgraph/1 readers, and the reference readers
-// they fall back on (internal to io/; issue 16).
+// they fall back on (internal to io/).
 //
 // parse_sites and parse_diagram_json first try the fast path: one pass over the text with
 // JsonScan, filling the result directly, holding every rule the reference reader holds. It

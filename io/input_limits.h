@@ -24,8 +24,8 @@ inline constexpr std::size_t kMaxMapVertices = 50'000'000;
 
 // Sites of a site file, reported sensors of a sensors file, and nodes plus arcs of an arc graph.
 // The engine builds the diagram of 10^6 sites in well under a minute. Every reported sensor gets
-// a row in each of the audit's reports: 10^5 of them took 15 s and 1.1 GB (the reports' JSON held
-// in memory) and wrote 180 MB, so twice that is the limit; an audit itself takes at most 10^5
+// a row in each of the audit's reports, whose time and memory grow with them (docs/RELIABILITY.md
+// has the cost at 10^5), so twice that is the limit; an audit itself takes at most 10^5
 // sensors in the map (audit/tolerances.h).
 inline constexpr std::size_t kMaxSites = 2'000'000;
 inline constexpr std::size_t kMaxReportedSensors = 200'000;

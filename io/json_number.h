@@ -1,5 +1,5 @@
 // covmap::io JSON number tokens: a finite double as the shortest JSON text that reads back to the
-// same bits (issue 16; used by every covmap.arcgraph/1 and covmap.sites/1 writer).
+// same bits (used by every covmap.arcgraph/1 and covmap.sites/1 writer).
 //
 // Contract:
 //   - The value must be finite (JSON has no NaN or infinity); callers check first and name the

@@ -1,6 +1,6 @@
 // A buffered writer of JSON tokens onto an std::ostream or the end of a std::string (internal to
 // io/): the arc graph and sites writers emit their fixed layouts through it, without building a
-// JSON document (issue 16).
+// JSON document, whose memory and time would dwarf the writing.
 //
 // Contract: tokens are appended to a fixed buffer that goes to the target in large writes; nothing
 // is validated beyond what each method says (the caller writes the punctuation with raw() and is

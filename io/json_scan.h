@@ -1,5 +1,4 @@
-// A strict, allocation-light scanner for the fast paths of the JSON readers (internal to io/;
-// issue 16).
+// A strict, allocation-light scanner for the fast paths of the JSON readers (internal to io/).
 //
 // The fast readers (io/fast_readers.h) pull the fixed layouts of covmap.sites/1 and
 // covmap.arcgraph/1 straight out of the text, with no JSON document in between. They handle a

@@ -1,6 +1,6 @@
-// A long text rendered in pieces on several threads and handed on in order (internal to io/;
-// issue 16: the arc graph of 10^5 sites is 78 MB of text, whose formatting on one core took a tenth
-// of the engine's time).
+// A long text rendered in pieces on several threads and handed on in order (internal to io/): the
+// arc graph of a large diagram is tens of MB of text, whose formatting on one core would be a
+// sizeable share of the engine's time.
 //
 // Contract:
 //   - render(j, text) appends piece j to `text` (cleared before each call, its capacity kept); it

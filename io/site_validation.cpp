@@ -42,10 +42,9 @@ namespace {
 std::string reference(const SiteDraft& other) { return "site " + quote_id(other.site.id) + " (" + other.origin + ")"; }
 
 // The first key of each value, in a flat open-addressing table (linear probing, at most half
-// full), with no allocation per key. Issue 16: the std::unordered_map it replaces for ids allocated
-// a node per site and, at 10^6 sites, took a cache miss for the bucket, the node and its cached
-// hash on every probe (56 MB of them scattered over fresh 4 KiB pages), then freed a million nodes:
-// half of reading 10^6 sites, against a tenth at 10^5, where all of it fitted in the cache.
+// full), with no allocation per key: a node-based map (std::unordered_map) allocates a node per
+// key and takes a cache miss for the bucket, the node and its cached hash on every probe once the
+// nodes outgrow the cache, which on large inputs dominates reading the sites.
 // Each slot holds the upper half of a key's hash and its index + 1 (0: empty), so a probe only
 // looks at the key itself when the halves agree. Keys are inserted in increasing index order, so
 // the index kept for a value is that of its first key.

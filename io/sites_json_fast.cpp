@@ -48,8 +48,8 @@ Site scan_site(JsonScan& scan) {
 }  // namespace
 
 SiteTable scan_sites(JsonScan& scan) {
-  // Straight into the table, with no SiteDraft in between (issue 16: at 10^6 sites the drafts were
-  // 150 MB of fresh pages written once and copied out again). Room for as many sites as the rest of
+  // Straight into the table, with no SiteDraft in between: on large inputs the drafts would be
+  // many MB of fresh pages written once and copied out again. Room for as many sites as the rest of
   // the text could hold, so that a million sites are not moved again and again as the vectors grow;
   // the pages of unused room are never touched.
   constexpr std::size_t kShortestSiteBytes = 30;  // {"id":1,"x":0,"y":0,"weight":1},

@@ -52,8 +52,8 @@ std::string read_text_file(const std::filesystem::path& path) {
   if (!in) {
     throw InputError(path.string(), 0, "", std::string("cannot open file: ") + std::strerror(errno));
   }
-  // A regular file is read in one go into a string of its size (issue 16: streaming it through an
-  // ostringstream cost a second for 80 MB, and up to twice the file in memory while it grew).
+  // A regular file is read in one go into a string of its size: streaming it through an
+  // ostringstream is slow on large files and holds up to twice the file in memory while it grows.
   // Anything else (a pipe, a file that changes size) goes through the stream.
   if (const auto size = std::filesystem::file_size(path, ec); !ec && std::filesystem::is_regular_file(path, ec)) {
     // In huge pages where the system has them: page by page, the first touch of a fresh 4 KiB page

@@ -112,8 +112,8 @@ bool same_circle(const mobius::GeneralizedCircle& a, const mobius::GeneralizedCi
   // A circle larger than the graph (nearly equal weights: radii ~1e12 over an extent of 100) is
   // compared where the graph is, at three points of a spread over the graph's scale: its centre
   // and radius are only good to ulps of the radius, and judging them against `relative` of the
-  // radius took distinct circles for one (issue 11: a face of 30 nearly equal weights became a
-  // one-parameter family and was rejected).
+  // radius would take distinct circles for one (a face of 30 nearly equal weights would become a
+  // one-parameter family and be rejected).
   const Point middle = t.extent.centre();
   const mobius::Complex p0 = mobius::nearest_point(a, {middle.x, middle.y});
   const mobius::Complex normal = a.A * p0 + a.B;

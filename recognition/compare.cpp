@@ -72,8 +72,8 @@ double distance_to_arc(const voronoi::ArcPathView& p, Point q) {
 // "Is q within tol of the graph?" for many points: the arcs' paths computed once, and their boxes
 // in a uniform grid over the central nodes (boxes reaching beyond it land in the border cells, which
 // the clamped query reaches too). Arcs whose box covers many cells (far, huge circles; unbounded
-// lines) are kept apart and always tested. Without the grid the check filtered each difference
-// against every arc: 26 differences of a 10^5-site diagram took 9 s.
+// lines) are kept apart and always tested. Without the grid the check would filter each difference
+// against every arc, seconds for a few differences of a large diagram.
 class ArcProximity {
  public:
   explicit ArcProximity(const Diagram& d) {

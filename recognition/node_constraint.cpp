@@ -32,7 +32,7 @@ std::optional<Constraint> node_constraint(const TracedGraph& t, int f, int h_out
   // The half-arcs of the walk around v, and the neighbourhood's size: the median reach of the arcs
   // at v to their other ends. Not the first arc's: a node of degree four split by a perturbation of
   // 1e-15 has a tiny arc, and in a frame that small the sites sit 1e13 units out, where a solution
-  // circle of ordinary size read as its tangent line (issue 11: grids moved by 1e-15 rejected). Not
+  // circle of ordinary size reads as its tangent line (grids moved by 1e-15 would be rejected). Not
   // the longest: an arc of nearly equal weights may run 1e6 out, and the lines the engine writes
   // for such flat circles make the composition an involution only to ~L/r, which in so large a
   // frame exceeded the tolerance (weights equal to 1e-9: a solution circle read as two points).
@@ -56,7 +56,7 @@ std::optional<Constraint> node_constraint(const TracedGraph& t, int f, int h_out
   // No more than the node's distance from the graph (where the sites are) plus the graph's scale:
   // an arc of nearly equal weights may run from a node inside the graph to one 1e10 out, and in a
   // frame that large the graph sits within 1e-8 of the origin, where the matrix tolerance falls to
-  // rounding and a solution circle reads as two points (issue 11).
+  // rounding and a solution circle reads as two points.
   const double reach = scale + t.extent.distance_to({at.real(), at.imag()});
   // Arcs shorter than kNodeFrameFloor of the graph (the rest of a node split by rounding: a grid
   // in decimal coordinates splits a point of five sites into three nodes an ulp apart) say

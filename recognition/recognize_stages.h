@@ -253,7 +253,7 @@ void solve_positions(const TracedGraph& t, const SolveOrder& order, LargeVector<
 
 // The log-weights of all assigned faces by weighted least squares over every arc between two of
 // them (each arc states log(w_right / w_left) from its two sites' positions), started from the
-// ratios integrated along the breadth-first tree from the (refined) sites: errors no longer
+// ratios integrated along the breadth-first tree from the (refined) sites, so that errors do not
 // accumulate along the tree.
 void solve_weights(const TracedGraph& t, const SolveOrder& order, LargeVector<FaceSite>& site);
 

@@ -123,8 +123,8 @@ void join_far_orphans(const TracedGraph& t, const LargeVector<Keyed>& by_x, cons
       const bool weights_agree = std::abs(weight[f] - weight[p.face]) <= t.relative * s * std::max(weight[f], weight[p.face]);
       // And the twin's face must hold the orphan's site, as the face of a site's own region does:
       // two distinct sites of one weight 2e-3 of the extent apart, each face stated only far out
-      // (exactly collinear sites), were joined when the orphan test misread a face near nodes 1e15
-      // out.
+      // (exactly collinear sites), would be joined if the orphan test misread a face near nodes
+      // 1e15 out.
       if (d2 <= reach * reach && weights_agree && (d2 < best_d2 || (d2 == best_d2 && f < best)) &&
           face_contains(t.g, f, {p.x, p.y}))
         best = f, best_d2 = d2;

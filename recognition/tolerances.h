@@ -43,16 +43,16 @@ inline constexpr double kMatrixCeiling = 1e-2;
 // The weight solve (weight_solve.cpp): an arc's statement of log(w_r / w_l) weighs
 // (|c - s_l|² + |c - s_r|²) over the graph's mean site spacing squared, between 1 and kMaxArcWeight
 // (lines, and huge circles of nearly equal weights, are the most accurate; a larger spread would
-// only slow the conjugate gradients, and dropping the floor of 1 made the solution worse: 8e-12
-// instead of 4e-12 at 10^5 sites).
+// only slow the conjugate gradients, and without the floor of 1 short arcs count for too little
+// and the solution is worse).
 inline constexpr double kMaxArcWeight = 1e4;
 // The weight and position solves' conjugate gradients stop when the preconditioned residual has
 // shrunk by kSolveReduction (the position solve's start is within ~1e-10 of the answer, so this is
 // well below rounding), or below its own rounding (weights), or after kSolveIterations passes over
-// the arcs — a safety net that neither reaches at 10^6 faces: the position solve's mirror relations
-// fix every site (no null space) and take 27-35 Jacobi iterations there; the weight solve's
-// Laplacian, preconditioned by multigrid, takes 1-7 from a good start and 69 from one spoilt by a
-// wrong arc (Jacobi capped at 100 with weights 4e-7 off, weight_solve.cpp).
+// the arcs — a safety net that neither reaches even on the largest graphs: the position solve's
+// mirror relations fix every site (no null space) and converge fast under Jacobi; the weight
+// solve's Laplacian, preconditioned by multigrid, stays well below it even from a start spoilt by
+// a wrong arc (weight_solve.cpp).
 inline constexpr double kSolveReduction = 1e-8;
 inline constexpr int kSolveIterations = 100;
 // The weight solve's multigrid (laplacian_multigrid.h) coarsens until at most kCoarsestUnknowns

@@ -2,19 +2,17 @@
 // arc. Each arc with sites s_l, s_r on its two sides states their weight ratio (Lemma 1:
 // w_l / w_r = |c - s_l| / r = r / |c - s_r|, equal weights for a line); breadth-first propagation
 // uses only the arcs of one spanning tree, so its weights carry the sum of the rounding along the
-// tree path (~√depth crossings, 4e-11 relative at 10^4 sites, 2.5e-8 at 10^6). Here every arc
+// tree path (~√depth crossings, growing with the graph). Here every arc
 // counts: minimise Σ ω_a (u_r - u_l - d_a)² over u = log w, a graph-Laplacian system, started from
 // the ratios integrated along the tree again from the refined sites and solved by conjugate
 // gradients preconditioned with aggregation multigrid (laplacian_multigrid.h).
 //
 // Why multigrid: the Laplacian's condition grows like the number of faces, and Jacobi-preconditioned
-// conjugate gradients need O(√n) iterations. Where the start is good that does not show (the
-// residual reaches its rounding in ~40 iterations at 10^6 faces), but one wrong statement — an arc
-// the engine drew as a line between sites whose weights differ by 5e-7, in the 10^6-site diagram of
-// weights in [0.1, 1.1] — shifts the whole subtree behind it, and Jacobi stopped at the cap of 100
-// iterations with weights 3.8e-7 off across the graph. Multigrid-preconditioned, the same system
-// reaches its rounding in ~70 iterations and the solution a sparse direct factorisation gives
-// (Eigen's SimplicialLDLT took 19 s and 18 million factor entries there).
+// conjugate gradients need O(√n) iterations. Where the start is good that does not show, but one
+// wrong statement (an arc the engine drew as a line between sites of slightly different weights)
+// shifts the whole subtree behind it, and Jacobi stops at its iteration cap with weights off across
+// the graph. Multigrid-preconditioned, the same system reaches its rounding and the solution a
+// sparse direct factorisation gives, at a fraction of the factorisation's time and memory.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -47,9 +45,8 @@ struct ArcSystem {
 // error σ: its variance is ~σ² / |c - s|². Weighting each by the inverse of its variance, the
 // statement's variance is σ² / (|c - s_l|² + |c - s_r|²) and its weight in the least squares
 // (|c - s_l|² + |c - s_r|²) over the graph's mean site spacing squared, between 1 and kMaxArcWeight.
-// (The even average of both forms, as before, let the short distance of a light site enclosed by a
-// heavy one dominate: 5e-11 relative weight error at 10^5 sites with weights in [0.1, 1.1] where the
-// least squares of these statements gives 7e-12.)
+// (An even average of both forms would let the short distance of a light site enclosed by a heavy
+// one dominate, with several times the weight error.)
 std::pair<double, double> arc_ratio(const Arc& arc, const std::vector<Node>& nodes, const mobius::ArcBisector& b,
                                     mobius::Complex sl, mobius::Complex sr, double spacing) {
   if (b.line) {

@@ -32,9 +32,9 @@ Positions positions_for(const AuditReportContext& c) {
   return {own_crs ? nullptr : c.map.frame.get(), c.render.full_precision};
 }
 
-// Coordinates at the precision the data carry (issue 14): 1e-8 degrees (about a millimetre) or a
-// millimetre in metres, unless full precision was asked for. A 17-digit coordinate only lengthens
-// the file (a 166 KB map gave a 2.4 MB diagram).
+// Coordinates at the precision the data carry: 1e-8 degrees (about a millimetre) or a millimetre
+// in metres, unless full precision was asked for. A 17-digit coordinate only lengthens the file,
+// by many times the map's own size.
 // Steps per unit. Dividing the rounded count by the power of ten (not multiplying by its inverse)
 // gives the double nearest the decimal, which the shortest round-trip form writes as that decimal.
 constexpr double kDegreeSteps = 1e8;
@@ -64,8 +64,8 @@ json vertex_position(Point p, const Positions& at) {
   return pair(g.lon, g.lat, true, at.full_precision);
 }
 
-// The diagram layer is written as text, feature by feature (issue 16): a DOM of its ~10⁶ vertices
-// took 2.4 s and most of the audit's report memory at 10⁴ cells. Same JSON as the DOM's, numbers in
+// The diagram layer is written as text, feature by feature: a DOM of its vertices would cost
+// seconds and most of the report's memory on large maps. Same JSON as the DOM's, numbers in
 // the shortest round-trip form (io/json_number.h); a non-finite coordinate is null, as nlohmann
 // writes it.
 void append_coordinate(std::string& s, double v) {

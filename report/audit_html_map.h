@@ -7,7 +7,7 @@
 // y down. Rings and polylines are rounded to it, consecutive repeats dropped, simplified
 // (Douglas-Peucker, html_simplify_px) and written as flat integer arrays [x0, y0, dx1, dy1, ...]
 // (the first point absolute, then steps), so the page's size follows what can be seen rather than
-// the map's vertex count: a 2·10⁶-vertex raster map of 10⁴ cells costs ~0.5 MB. Pieces more than
+// the map's vertex count, and a large raster map stays a small page. Pieces more than
 // kFarAway views away from the map, or through infinity (only unclipped diagrams have them), are
 // left out whole; the sensor table still lists every sensor.
 #pragma once

@@ -6,7 +6,7 @@
 //   sensors.geojson  write_sensors_geojson  reconstructed sensors (Points), for GIS
 //   shifts.geojson   write_shifts_geojson   reported → reconstructed positions (LineStrings): a file
 //                                           of its own, as formats like the Shapefile take one
-//                                           geometry type per layer (issue 14)
+//                                           geometry type per layer
 //   diagram.geojson  write_diagram_geojson  the recomputed diagram, one (Multi)Polygon per sensor
 //   report.html      write_audit_html       one self-contained page for people
 //
@@ -154,7 +154,7 @@ std::string_view verdict_words(audit::SensorVerdict verdict);
 // judged), 0 reported but not in the map".
 std::string verdict_counts_text(const AuditVerdictCounts& counts);
 
-// The order in which sensors need a planner's attention (issue 13), worst first: indices into
+// The order in which sensors need a planner's attention, worst first: indices into
 // `sensors`. By verdict: inconsistent, model misfit, reported but not in the map, in the map but
 // not reported, undetermined, consistent; within a verdict by χ² (largest first, none last), then
 // by position error (largest first, only where it was measured), then by id. report.html's list
@@ -166,7 +166,7 @@ bool needs_attention(audit::SensorVerdict verdict);
 // "the cell it would serve", "the model fit around it"; empty for VerdictBasis::kNone.
 std::string_view basis_words(audit::VerdictBasis basis);
 
-// The model fit (issue 12) in one sentence for people; empty when it was not measured. When the
+// The model fit in one sentence for people; empty when it was not measured. When the
 // map does not follow the model it starts "The map does not follow the path-loss model", and every
 // report puts it first.
 std::string model_fit_text(const audit::AuditResult& result);

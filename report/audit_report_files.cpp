@@ -30,7 +30,7 @@ using Writer = void (*)(const AuditReportContext&, std::ostream&);
 std::string rendered(Writer write, const AuditReportContext& context) {
   std::ostringstream out;
   write(context, out);
-  return std::move(out).str();  // the buffer itself, not a copy (58 MB for a 10⁴-cell diagram)
+  return std::move(out).str();  // the buffer itself, not a copy (a large diagram is tens of MB)
 }
 
 }  // namespace
@@ -69,9 +69,9 @@ void write_audit_reports(const AuditReportContext& context, GisFormat format, io
   AuditReportContext layer_context = context;
   layer_context.render.crs_coordinates = context.render.crs_coordinates || format == GisFormat::kGeoPackage;
   if (format == GisFormat::kGeoJson) {
-    // Every file reads only the finished result. The diagram layer is by far the largest (58 MB at
-    // 10⁴ cells), the HTML page next (its map drawn from the cells and diagrams): each is written
-    // on a thread of its own while the rest are (measured at 10⁴ cells: 0.8, 0.7 and 0.5 s of CPU).
+    // Every file reads only the finished result. The diagram layer is by far the largest, the HTML
+    // page next (its map drawn from the cells and diagrams): each takes about as long as all the
+    // rest, so each is written on a thread of its own while the rest are.
     std::future<void> diagram = std::async(std::launch::async, [&] {
       streamed("diagram.geojson", write_diagram_geojson, layer_context);
     });

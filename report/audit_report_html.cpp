@@ -292,7 +292,7 @@ void fit_and_thresholds(std::ostream& out, const AuditReportContext& c) {
 }
 
 // The wall-clock times on one line of their own: the only part of the page that differs between
-// runs of the same command (issue 12).
+// runs of the same command (the audit is deterministic otherwise).
 void run_timings(std::ostream& out, const audit::AuditResult& r) {
   out << "<p class=\"meta\" id=\"run-timings\">Time: " << fixed_number(r.seconds, 2) << " s";
   const char* separator = " (";

@@ -154,7 +154,7 @@ json summary_json(const AuditVerdictCounts& counts) {
   return j;
 }
 
-// The reception limit (issue 12), null when the map has no range edges.
+// The reception limit, null when the map has no range edges.
 json reception_json(const std::optional<audit::ReceptionLimit>& limit) {
   if (!limit) return nullptr;
   return {{"range_m", number_or_null(limit->range_m)},
@@ -163,7 +163,7 @@ json reception_json(const std::optional<audit::ReceptionLimit>& limit) {
           {"sensors", limit->sensors}};
 }
 
-// How well the multiplicative model explains the map (issue 12), null when not measured.
+// How well the multiplicative model explains the map, null when not measured.
 json model_fit_json(const audit::ModelFit& fit) {
   if (!fit.known) return nullptr;
   return {{"ratio", number_or_null(fit.ratio)},
@@ -173,7 +173,7 @@ json model_fit_json(const audit::ModelFit& fit) {
           {"misfit_area_share", number_or_null(fit.misfit_area_share)}};
 }
 
-// Wall-clock times, the one member that differs between runs of the same input (issue 12).
+// Wall-clock times, the one member that differs between runs of the same input.
 json timings_json(const audit::AuditResult& r) {
   json stages = json::array();
   for (const audit::StageTiming& t : r.timings) stages.push_back({{"stage", t.stage}, {"seconds", number_or_null(t.seconds)}});

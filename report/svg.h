@@ -15,9 +15,8 @@
 //
 // Width: options.width_px if set. Otherwise chosen from the data so that the median distance from
 // a site to its nearest neighbour is kSpacingPx (12) pixels, clamped to kMinWidthPx..kMaxWidthPx
-// (800..4000); measured on uniformly random sites in a square: 800 px up to ~750 sites, 1545 px at
-// 3 000, 4000 px from ~18 000 (svg_layout.h has the constants and the sampling). The height follows
-// the view's aspect ratio.
+// (800..4000), so small site sets get the minimum and very large ones the maximum (svg_layout.h
+// has the constants and the sampling). The height follows the view's aspect ratio.
 //
 // Labels: a site is labelled with its name, or its id when it has none. Sites are taken heaviest
 // first (heavier sites own larger regions; ties in input order), and each label is put at the first

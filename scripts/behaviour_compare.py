@@ -17,7 +17,7 @@ EXPLAINED = [
      "the service's audit options are judged by the job library's one validator, in the command "
      "line's words (\"must be a positive number (got '-1')\" where the service alone said \"must be > 0\")."),
     (r"(^|/)truth\.json$", r'^\s*"description": "transverse Mercator',
-     "covmap-make-map projects with io's LocalProjection now (issue 9: one transverse Mercator); "
+     "covmap-make-map projects with io's LocalProjection (one transverse Mercator in covmap); "
      "its description prints the centre with four decimals (7.4000°E) where the generator's own "
      "copy printed six significant digits (7.4°E). The projection itself is the same."),
 ]

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Fuzzes the parsers of io/ with libFuzzer (the targets are tests/fuzz/*.cpp; issue 10).
+# Fuzzes the parsers of io/, which read untrusted input, with libFuzzer (the targets are
+# tests/fuzz/*.cpp).
 #
 #   bash scripts/fuzz.sh [SECONDS] [TARGET...]       fuzz each TARGET (default: all) for SECONDS
 #                                                    (default 60), one after the other

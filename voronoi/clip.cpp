@@ -58,7 +58,7 @@ struct Boundary {
 };
 
 // The diagonal of the polygon's bounding box stands for its diameter (it is between the diameter
-// and √2 times it): O(m) where the pairwise diameter took O(m²), 5 s for 30 000 vertices.
+// and √2 times it): O(m) where the pairwise diameter takes O(m²), seconds on large polygons.
 double snap_distance(const std::vector<Point>& polygon) {
   Box box;
   for (const Point& p : polygon) box.add(p.x, p.y);

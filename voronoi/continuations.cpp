@@ -82,9 +82,9 @@ int parallel_lines_side(const Diagram& d, int x, int y) {
 // (two lines, or two equal circles) the directions decide, compared by the sign of their cross
 // product (the pseudo-angles round away the difference near their wrap). One order per node, from
 // which every continuation there is read, makes the continuations a permutation of the half-arcs
-// however many departures are tied: choosing pairwise with a tolerance is not transitive (issue
-// 11: nearly parallel lines meeting far away, departures 4e-16 apart at equal curvature, gave two
-// half-arcs the same successor and lost their faces).
+// however many departures are tied: choosing pairwise with a tolerance is not transitive (nearly
+// parallel lines meeting far away, departures 4e-16 apart at equal curvature, would give two
+// half-arcs the same successor and lose their faces).
 void counter_clockwise(const Diagram& d, const TracingGeometry& geometry, std::span<const int> out,
                        std::vector<int>& order) {
   order.assign(out.begin(), out.end());

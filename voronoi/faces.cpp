@@ -18,8 +18,7 @@ void whole_plane_faces(Diagram& d, FaceAssembly& fa) {
 
 // Orphans: every face of a site but the one containing the site itself. Faces created for holes
 // only (the unbounded component of a site without lines) have no outer cycle. Each site's faces are
-// decided by that site alone, so the sites are shared among the workers (0.1–0.3 s at 10^6 sites on
-// one core).
+// decided by that site alone, so the sites are shared among the workers.
 void mark_orphans(Diagram& d, const FaceAssembly& fa) {
   const LargeVector<char>& has_outer = fa.has_outer;
   const std::vector<int>& sites = fa.faces_of_site.sites();

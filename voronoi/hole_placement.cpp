@@ -19,7 +19,7 @@ constexpr double kOffCentre = 0.38196601125010515;  // 1/φ²
 // Paths for the containment tests of holes the ray cannot place (every hole when tracing by
 // sites): computed on first use and kept, since one large face's outer cycle is tested against
 // many holes. A map, not an array over all arcs: only the arcs of the candidate faces are ever
-// asked for (an array cost ~0.3 GB of fresh memory at 10^6 faces).
+// asked for (an array would be a large block of fresh memory on large diagrams).
 class PathCache {
  public:
   explicit PathCache(const Diagram& d) : d_(d) {}
@@ -38,8 +38,8 @@ class PathCache {
 // called only when some hole needs a containment test: most graphs have none). Without it, tracing
 // by geometry (one label for all faces) would test every hole against every face. Tracing by sites, a hole
 // only goes into a face of its own site, so only those faces get a box (the others are left out
-// of the grid, which keeps its cells and the candidates' order): at 10^6 faces the boxes of all
-// the arcs cost ~1 s, the holes' own sites' a few percent of that.
+// of the grid, which keeps its cells and the candidates' order): the holes' own sites' boxes are a
+// small fraction of the cost of the boxes of all the arcs.
 class FaceGrid {
  public:
   FaceGrid(const Diagram& d, bool by_sites, const CycleSet& cs, const FaceAssembly& fa)

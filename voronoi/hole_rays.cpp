@@ -87,7 +87,7 @@ class ArcRays {
   // be off — kRayTie of the size of the numbers x is computed from (its own, the ray's height, the
   // circle's radius or the line's anchor). Local, not the nodes' extent: nearly collinear sites put
   // nodes 1e10 out, and a tie window of 1e-12 of that skipped an arc 0.03 from a hole of an
-  // extent of 1, placing the hole in the wrong face (issue 11).
+  // extent of 1, placing the hole in the wrong face.
   struct Crossing {
     double x, ty, uncertainty;
     bool at_end = false;  // at one of the arc's end nodes, or along the ray: the ray cannot tell

@@ -1,4 +1,4 @@
-// Sensors reported but absent from the map are judged by prediction (issue 12): put among the
+// Sensors reported but absent from the map are judged by prediction: put among the
 // refined sensors at their reported position and power, would they serve part of the map? Oracle:
 // the generator's truth — a sensor dominated by a strong neighbour really has no bin, so its
 // correct report must agree with the map; a sensor whose cell is cut out of the map really serves

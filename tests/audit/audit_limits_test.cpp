@@ -1,5 +1,5 @@
-// An audit too large to finish in reasonable time is refused at once (issue 10: 10⁶ tiny features
-// once ran for minutes in silence).
+// An audit too large to finish in reasonable time is refused at once, not left to run for minutes
+// in silence (10⁶ tiny features).
 #include <gtest/gtest.h>
 
 #include <stdexcept>

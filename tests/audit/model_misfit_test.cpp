@@ -1,4 +1,4 @@
-// Model fit (issue 12): maps drawn by other propagation models (tools/mapgen/propagation_model.h)
+// Model fit: maps drawn by other propagation models (tools/mapgen/propagation_model.h)
 // with correctly reported sensors. Oracle: the generator's truth — every report is right (no gross
 // errors), so any "inconsistent" is a sensor wrongly blamed, and the map was not drawn by the
 // multiplicative model, so the audit must say so. The multiplicative map with gross errors is the

@@ -1,4 +1,4 @@
-// Reception limits (issue 12): maps whose coverage ends where every sensor's reach R·w ends. The
+// Reception limits: maps whose coverage ends where every sensor's reach R·w ends. The
 // oracle is the generator's truth: the true sensors, their weights and the reach R it drew the map
 // with (tools/mapgen, max_range_m). Asserted: cleaning finds the range edges (circles about the
 // true sensors with radius R·w) and only where coverage ends at the reach, never along the
@@ -133,8 +133,8 @@ TEST(ReceptionLimit, AuditEstimatesTheReachAndJudgesIsolatedSensors) {
 TEST(ReceptionLimit, TownsWithAReachFollowTheModel) {
   // Real town layout (58 towns of the canton of Bern, population weights) with a reach that leaves
   // discs, cut cells and chords: the model drew it, so nothing is a model misfit. Regression: a
-  // range edge once took a chord of its circle (a long straight edge between two of its points)
-  // for part of the edge, and two sensors came out model_misfit with ratios 9 and 13.
+  // chord of a range edge's circle (a long straight edge between two of its points) is not part of
+  // the edge; taken for one, it makes sensors come out model_misfit.
   const auto towns = mapgen::read_lonlat_sites_csv(std::string(COVMAP_SOURCE_DIR) + "/datasets/maps/bern_towns.csv");
   mapgen::CoverageMapOptions o = base_options(7);
   o.frame = mapgen::OutputFrame::kLonLat;

@@ -1,4 +1,4 @@
-// report.html's optional basemap (issue 13): with `covmap audit --basemap URL` the page loads
+// report.html's optional basemap: with `covmap audit --basemap URL` the page loads
 // nothing until the reader switches the basemap on; then it asks for the slippy-map tiles that
 // cover what is in view (the tiles holding every sensor of the whole-map view, computed here from
 // report.json's lon/lat with the tile formulas) and draws them under the cells.

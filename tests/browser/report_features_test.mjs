@@ -1,4 +1,4 @@
-// report.html's interactions in headless Chromium (issue 13): filtering and searching the table,
+// report.html's interactions in headless Chromium: filtering and searching the table,
 // the default worst-first order, a row click centring the map on the sensor and outlining its cell,
 // hover details, lon/lat under the cursor, the scale bar, the legend, and the size of what is put
 // on the page. The oracle is always report.json (or sensors.geojson) of the same audit, never the

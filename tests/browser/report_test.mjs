@@ -9,20 +9,20 @@
 // verdicts listed in report.json and inside the first screen, the map (MAP_SELECTOR) mostly inside the first screen. Screenshots of the first screen and of the
 // whole page at each width go to the artefact directory, kept for people to look at.
 //
-// EXPECTED_TO_FAIL_UNTIL_REDESIGN lists the checks today's page fails (issue 13); they are
+// EXPECTED_TO_FAIL_UNTIL_REDESIGN lists the checks the page fails until its redesign; they are
 // reported XFAIL, and as an error once they pass, so the list can only shrink.
 import { openPage, screenshot } from './lib/browser.mjs';
 import { expect } from './lib/checks.mjs';
 import { runAuditedPageTest } from './lib/main.mjs';
 
-// A laptop and a desktop screen, as issue 13 asks the page to be read at.
+// A laptop and a desktop screen, the widths the page must read well at.
 const WIDTHS = [1280, 1920];
 const FIRST_SCREEN_HEIGHT = 900;
 // The share of the map's height that must lie inside the first screen for the map to count as
 // part of it: most of the map, not its top edge.
 const MAP_MIN_SHARE_IN_FIRST_SCREEN = 0.5;
-// The map's element: the SVG #map of the page before issue 13's redesign, the #map-view that holds
-// the canvas after it.
+// The map's element: the SVG #map of the page before its redesign, the #map-view that holds the
+// canvas after it.
 const MAP_SELECTOR = '#map-view, svg#map';
 const MAP = 'bern';
 // The member names of report.json's summary that are totals, not verdicts (docs/FORMATS.md).

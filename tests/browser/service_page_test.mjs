@@ -1,4 +1,4 @@
-// `covmap serve`'s web page (issue 15) in headless Chromium, against a real server on a free
+// `covmap serve`'s web page in headless Chromium, against a real server on a free
 // loopback port: upload the Bern map with its sensors, watch the job finish, open its reports, see a
 // bad map refused with the server's message, delete the job.
 //

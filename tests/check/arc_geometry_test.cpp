@@ -14,7 +14,8 @@ using testing::circle_arc;
 using testing::line_arc;
 
 TEST(ArcGeometry, HugeCircleMeetsSmallCircleOnBoth) {
-  // NUMERICS.md: radius ~7e4 against ~0.3. Both intersection points must be on both circles.
+  // Radius ~7e4 against ~0.3 (docs/NUMERICS.md, 'Circle–circle intersection'). Both intersection
+  // points must be on both circles.
   const std::vector<Node> none;
   const ArcPath big =
       make_arc_path(circle_arc(kNone, kNone, Circle{70000.1, 0.2, 70000}, true, 0, 1), none);

@@ -60,7 +60,8 @@ inline Diagram two_weighted_sites() {
 
 // (b') Weights equal to 14 digits: s0 (0,0) weight 1, s1 (0.7,0.3) weight 1 + 1.3e-14. The bisector
 // is a circle of radius ~3e13 passing between the sites with s0 inside, centre and radius from
-// NUMERICS.md's closed form (a correction added to s0). Its numbers are only known to ~1e-2.
+// the closed form (docs/NUMERICS.md, 'Apollonius centre': a correction added to s0). Its numbers
+// are only known to ~1e-2.
 inline Diagram nearly_equal_weights() {
   const double wj = 1.0 + 1.3e-14, dx = 0.7, dy = 0.3;
   const double k = 1.0 / ((1.0 - wj) * (1.0 + wj));

@@ -7,9 +7,9 @@
 namespace covmap::check::testing {
 namespace {
 
-// The bound is the release build's. Under AddressSanitizer (scripts/sanitize.sh) the checker is ~5x
-// slower (measured on two cores: 1.8-2.4 s release, 11 s sanitized alone, 36 s sanitized among the
-// whole suite with other work on the machine), so there it gets four times as long.
+// The bound is the release build's. Under AddressSanitizer (scripts/sanitize.sh) the checker is
+// several times slower, more so among the whole suite on a loaded machine, so there it gets four
+// times as long.
 #if defined(__SANITIZE_ADDRESS__)
 constexpr double kSecondsBound = 120.0;
 #else

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# covmap audit on several maps (issue 15, "Batch"), against independent oracles:
+# covmap audit on several maps (a batch), against independent oracles:
 #  - each map of a batch gets the report.json of its single-map audit (the same sensors with the
 #    same verdicts, and every member the same but those that name the files and the run);
 #  - summary.csv and summary.json hold, per map, the counts recounted from that map's report.json

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # covmap audit writes the same report bytes whatever the refinement's thread count, run after run
-# (issue 12: thread scheduling changed the numbers, e.g. Hausdorff 200 m against 1 970 m). The
+# (a solve whose sums depend on thread scheduling can change the numbers by far more than
+# rounding). The
 # bundled Bern map is audited with --threads 1, 2 (twice) and 4, each into its own folder, and the
 # four files are compared byte for byte with the first run's. Only what describes the run itself
 # may differ, and it sits apart: report.json's "command_line" (it names --threads and the folder)

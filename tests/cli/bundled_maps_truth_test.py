@@ -9,7 +9,7 @@ table is printed either way.
 
 Each map is audited as a user would (its sensors.geojson, --alpha from the generator, --planar for a
 planar map) and the verdicts in report.json are compared with what the generator really did
-(truth.json, datasets/maps/README.md). The targets are issue 12's, stated in docs/ACCURACY.md; none
+(truth.json, datasets/maps/README.md). The targets are those of docs/ACCURACY.md; none
 is adjusted to what the audit achieves:
 
   precision  >= 0.95  of the sensors judged "inconsistent", the share that truly has a gross error
@@ -24,11 +24,11 @@ is adjusted to what the audit achieves:
 
 "Can reveal", defined from the truth alone (independent of the audit):
   - the cell is resolved: it has at least MIN_CELL_BINS = 100 bins, i.e. it is about 10 bins
-    across, which is the issue's condition for its targets (bins <= 1/10 of the local sensor
+    across, which is docs/ACCURACY.md's condition for its targets (bins <= 1/10 of the local sensor
     spacing) applied to this sensor's own cell; and
   - the error is large against what the raster and the ordinary report noise blur: a position
     offset of at least GROSS_MULTIPLE = 5 bin sizes, or a power offset of at least GROSS_MULTIPLE
-    times 1 dB (the reported powers' own noise is 1 dB; the issue asks reconstructions to within
+    times 1 dB (the reported powers' own noise is 1 dB; the targets ask reconstructions to within
     0.5 bin and 0.5 dB RMS, so 5 is ten of those).
 A sensor with a gross error the map cannot reveal is not required to be flagged; if it is flagged,
 it still counts as a true positive for precision (it does have a gross error).

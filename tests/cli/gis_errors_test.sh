@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Inputs that parse but cannot mean what they say, and GIS inputs covmap cannot use (issue 14):
+# Inputs that parse but cannot mean what they say, and GIS inputs covmap cannot use:
 # each ends with exit 2, a message naming the file and the problem (and what to do), and nothing
 # written — the output folder is never created.
 # Usage: gis_errors_test.sh path/to/covmap path/to/datasets

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """covmap audit on the bundled Bern map converted by GDAL's own tools into the formats and CRSs
-planners export (issue 14), against the audit of the GeoJSON original.
+planners export, against the audit of the GeoJSON original.
 
 Usage: gis_formats_test.py path/to/covmap path/to/datasets WORKDIR
 

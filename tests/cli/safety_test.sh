@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The CLI's promises on hostile use (issue 10): outputs never destroy what the user did not ask to
+# The CLI's promises on hostile use: outputs never destroy what the user did not ask to
 # replace, multi-file outputs are all or nothing, the exit-code contract holds, hostile inputs end
 # quickly with exit 2 and a message naming the problem, interrupted runs leave nothing behind.
 # Usage: safety_test.sh path/to/covmap path/to/covmap-make-map

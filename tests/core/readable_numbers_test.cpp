@@ -1,5 +1,5 @@
-// Numbers for people: fixed notation, a precision that suits the size (issue 10: progress printed
-// "(9.2005e-05 s)" and reports "position off by 2.51e+03 m").
+// Numbers for people: fixed notation, a precision that suits the size (never "(9.2005e-05 s)" or
+// "position off by 2.51e+03 m").
 #include "core/readable_numbers.h"
 
 #include <gtest/gtest.h>

@@ -106,9 +106,9 @@ namespace covmap {
 namespace {
 
 // Far from two equal-weight sites the bisector offset is, to first order, the distance to their
-// perpendicular bisector, a closed form. The gradient used to be the difference of two unit vectors that agree
-// to |b - a| / |p|: at 1e15 it lost every digit or came out 0 ("inf off"), and every exact
-// collinear diagram (nodes 1e15 out) failed the checker.
+// perpendicular bisector, a closed form. The gradient as the difference of two unit vectors that
+// agree to |b - a| / |p| would lose every digit at 1e15 or come out 0 ("inf off"), and every exact
+// collinear diagram (nodes 1e15 out) would fail the checker.
 TEST(BisectorOffset, FarFromEqualWeightSitesIsTheDistanceToTheirBisector) {
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(-1.0, 1.0);

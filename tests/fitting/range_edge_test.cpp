@@ -1,4 +1,4 @@
-// Range edges in refine_sites (issue 12): a sample with site_b = kNone lies on the circle of radius
+// Range edges in refine_sites: a sample with site_b = kNone lies on the circle of radius
 // R·w about its site, one R for the map. Oracles: the true sites and R the samples were drawn from
 // (closed forms: range circles about the sites, the Apollonius circle of two weighted sites).
 #include <gtest/gtest.h>

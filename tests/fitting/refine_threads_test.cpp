@@ -1,6 +1,6 @@
-// Issue 12: the refinement gave different numbers with one and with several threads (Ceres adds its
-// threads' partial costs and gradients in an order that depends on scheduling). The result must be
-// the same, bit for bit, whatever RefineOptions::threads, run after run.
+// The refinement's result must be the same, bit for bit, whatever RefineOptions::threads, run
+// after run: Ceres adds its threads' partial costs and gradients in an order that depends on
+// scheduling, so the solve itself must not use them (fitting/refine.cpp).
 #include <gtest/gtest.h>
 
 #include <random>

@@ -366,7 +366,7 @@ TEST(CoverageMapErrors, ForeignCrsNeedsPlanar) {
   EXPECT_EQ(parse(map, planar()).cells.size(), 1u);
 }
 
-// Issue 14: a CRS-aware caller (gis/, through PROJ) resolves the declaration; the positions are
+// A CRS-aware caller (gis/, through PROJ) resolves the declaration; the positions are
 // then that CRS's metres, used as they are, and the map carries the CRS's frame.
 TEST(CoverageMapCrs, DeclaredCrsIsResolvedIntoTheMapsFrame) {
   Json map = collection({good()});

@@ -1,4 +1,4 @@
-// CSV delimiters (issue 14: "a semicolon-separated CSV gets a misleading message"): the readers
+// CSV delimiters (a semicolon-separated CSV must not get a misleading message): the readers
 // take comma, semicolon, tab and '|' files, and decimal commas with any delimiter but the comma.
 // The oracle is the same table written with commas and points.
 #include <gtest/gtest.h>

@@ -179,7 +179,7 @@ TEST(DiagramJson, WritingNonFiniteThrows) {
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("nodes[1].y"), std::string::npos);
   }
-  // The writer streams element by element (issue 16), yet refuses before its first byte: a
+  // The writer streams element by element, yet refuses before its first byte: a
   // non-finite number late in the file leaves the stream empty. Each member is named by its path.
   for (const auto& [spoil, path] : std::vector<std::pair<std::function<void(Diagram&)>, std::string>>{
            {[](Diagram& g) { g.sites.back().weight = INFINITY; }, "sites[" },

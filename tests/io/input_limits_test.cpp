@@ -1,4 +1,4 @@
-// Bounded input (issue 10): nesting, planar coordinates and counts beyond io/input_limits.h are
+// Bounded input: nesting, planar coordinates and counts beyond io/input_limits.h are
 // refused with an InputError naming the limit, before any work that grows with them.
 #include "io/input_limits.h"
 

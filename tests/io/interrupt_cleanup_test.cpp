@@ -1,4 +1,4 @@
-// Interrupted runs clean up after themselves (issue 10): each test forks a child that stands in
+// Interrupted runs clean up after themselves: each test forks a child that stands in
 // for a covmap run, interrupts it with a real signal and inspects what is left on disk.
 #include "io/interrupt_cleanup.h"
 

@@ -1,4 +1,4 @@
-// Outputs never destroy what the user did not ask to replace (issue 10): the rules of
+// Outputs never destroy what the user did not ask to replace: the rules of
 // io/output_plan.h, each on the file system as a user would meet it.
 #include "io/output_plan.h"
 

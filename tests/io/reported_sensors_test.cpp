@@ -190,7 +190,7 @@ TEST(ReportedSensorsCsv, HeaderProblems) {
   EXPECT_EQ(csv_error("id,x,y,weight\n", planar_map()).message(), "no sensors");
 }
 
-// Issue 14: vendor exports give projected x/y and lon/lat for each sensor. The pair the map is in
+// Vendor exports give projected x/y and lon/lat for each sensor. The pair the map is in
 // is used (the oracle: the projection of the lon/lat, or the x/y as written), and a note says so.
 TEST(ReportedSensorsCsv, BothPairsGivenThePairOfTheMapIsUsed) {
   const std::string text = "id;x;y;lon;lat;weight\na;1000,5;-200;8,1;47,1;1\nb;30;40;7,9;46,95;2\n";
@@ -222,7 +222,7 @@ TEST(ReportedSensorsCsv, BothPairsGivenThePairOfTheMapIsUsed) {
   EXPECT_EQ(notes[0], "sensors.json: 1 sensor gives both x/y and lon/lat; used lon/lat, as no CRS is declared for x/y (--sensor-crs)");
 }
 
-// Issue 14: x/y in a declared CRS (--sensor-crs) go through WGS84 into the map's plane; without a
+// x/y in a declared CRS (--sensor-crs) go through WGS84 into the map's plane; without a
 // declared CRS they are the map's own plane (projected map), refused against a lon/lat map.
 TEST(ReportedSensorsCrs, XyInADeclaredCrsArePlacedThroughWgs84) {
   const auto sensor_crs = std::make_shared<ProjectedForTest>(LocalProjection::about(7.0, 46.0));

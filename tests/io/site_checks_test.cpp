@@ -1,8 +1,8 @@
 // The whole-list checks of the site readers (io/site_validation.h) against brute-force oracles, and
 // the sites fast path on a list large enough that its tables are far past any small-size case:
 // read back bit for bit as written and as the reference reader reads it, and repeats found however
-// far apart they are (issue 16: the id check moved from std::unordered_map to a flat table, the
-// fast path from drafts to the table itself).
+// far apart they are (the id check's flat table, io/site_validation.cpp, and the fast path that
+// fills the table itself, io/sites_json_fast.cpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -83,8 +83,9 @@ TEST(FeasibleRegion, AgreesWithAGridOracleOnRandomDisks) {
       for (const Disk& d : disks) m = std::min(m, depth(d, fr.representative));
       EXPECT_GT(m, 0.0) << "trial " << trial << ": the representative is outside a disk";
       EXPECT_NEAR(m, fr.margin, 1e-9) << "trial " << trial;
-      // The deepest point (issue 11: a free root's representative at the deepest point of its
-      // region): no grid point is deeper by more than the grid's resolution; and never far below.
+      // The deepest point (recognition puts a free root's representative at the deepest point of
+      // its region): no grid point is deeper by more than the grid's resolution; and never far
+      // below.
       EXPECT_GT(m, 0.05 * oracle) << "trial " << trial;
       near_deepest += m >= oracle - 2 * spacing;
     } else {

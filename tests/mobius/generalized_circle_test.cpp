@@ -1,7 +1,7 @@
 // Generalized circles read from their forms: distance, nearest point and intersections of circles
 // of radius up to 1e14 near the origin, against points constructed to lie on them (closed forms).
-// Issue 11: reading a centre and radius off a circle of radius R loses R·ε, ~1e-4 at R = 1e12, where
-// recognition needs 1e-5 of an extent of 100 (nearly equal weights).
+// Why from the forms: reading a centre and radius off a circle of radius R loses R·ε, ~1e-4 at
+// R = 1e12, where recognition needs 1e-5 of an extent of 100 (nearly equal weights).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,6 +1,6 @@
-// Möbius machinery against closed forms: the Apollonius circle of two weighted sites (NUMERICS.md
-// formula, computed here independently), direct point-by-point evaluation of compositions, and the
-// defining property of a fixed set.
+// Möbius machinery against closed forms: the Apollonius circle of two weighted sites (the formula
+// of docs/NUMERICS.md, 'Apollonius centre', computed here independently), direct point-by-point
+// evaluation of compositions, and the defining property of a fixed set.
 #include <gtest/gtest.h>
 
 #include <cmath>

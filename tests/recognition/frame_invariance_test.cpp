@@ -58,11 +58,10 @@ double coordinate_rounding(double offset, double scale) {
   return 16 * std::numeric_limits<double>::epsilon() * std::abs(offset) / scale;
 }
 
-// The issue: 300 sites near 1e7 came back with position error 1e-7 and weight error 1.4e-5, and
-// "voronoi: no" with 822 differences, while the same graph at the origin gave 5e-12 and "yes".
-// (Sites spread over 1e3 near 1e7 reproduce it: 1.3e-7, 1.9e-5 and no "yes" in five seeds before
-// the graph frame. A unit extent at 1e7 is not used: the engine's diagram of it fails the
-// independent checker.)
+// Recognition works in the graph's own frame: without it, 300 sites near 1e7 come back with
+// position error ~1e-7 and weight error ~1e-5, and "voronoi: no" with hundreds of differences,
+// while the same graph at the origin gives 5e-12 and "yes". Sites spread over 1e3 near 1e7 show
+// it. (A unit extent at 1e7 is not used: the engine's diagram of it fails the independent checker.)
 TEST(FrameInvariance, TranslatedRotatedAndScaledCopiesGiveTheSameAnswer) {
   const Similarity copies[] = {
       {1.0, 0.0, 0.0, 0.0},     {1e3, 0.0, 1e7, 1e7},   {1e-3, 0.0, 0.0, 0.0}, {1e7, 0.0, 0.0, 0.0},
@@ -119,9 +118,10 @@ TEST(NearDegenerate, FamiliesPerturbedSlightlyAreRecovered) {
 
 // Grids with weights 1 and 2 (nodes of degree up to nine, tangencies) and collinear sites, exact and
 // perturbed: every diagram the independent checker accepts is a bisector graph and the MWVD of its
-// reconstruction. Before: a grid's parallel bisectors met 1e15 out and mirrors through that node
-// were 0.1 off; split nodes put the sites 1e13 units out in their frame; collinear faces whose only
-// near nodes were one mirror pair took far nodes' solution circles for candidates.
+// reconstruction. The hard parts: a grid's parallel bisectors meet 1e15 out, where mirrors through
+// that node lose their digits; split nodes put the sites 1e13 units out in their frame; collinear
+// faces whose only near nodes are one mirror pair must not take far nodes' solution circles for
+// candidates.
 TEST(NearDegenerate, GridsAndCollinearSitesAreTheMwvdOfTheirReconstruction) {
   const Perturbation perturbations[] = {{}, {true, 0.0}, {false, 1e-15}, {false, 1e-12}, {false, 1e-9}};
   int valid = 0;
@@ -133,9 +133,9 @@ TEST(NearDegenerate, GridsAndCollinearSitesAreTheMwvdOfTheirReconstruction) {
         ++valid;
         const std::string what = testing::to_string(family) + " perturbed " + p.name() + " seed " + std::to_string(seed);
         ASSERT_TRUE(rt.r.bisector_graph) << what << ": " << rt.r.reason;
-        // Grid seed 5 reconstructs sites an ulp off the integers; the engine used to refuse to draw
-        // them (a short arc between nodes that other mends merged read with one angle at both
-        // ends), and the MWVD check answered "unknown".
+        // Grid seed 5 reconstructs sites an ulp off the integers; the engine must draw them (a short
+        // arc between nodes that other mends merged, read with one angle at both ends, would make
+        // it refuse), or the MWVD check answers "unknown".
         EXPECT_EQ(rt.r.voronoi, MwvdAnswer::kYes) << what << ": " << rt.r.voronoi_differences.size() << " differences; " << rt.r.reason;
         if (family == RecognitionFamily::kGrid && rt.r.unique) {
           EXPECT_LE(rt.error.position, 1e-12) << what;
@@ -145,12 +145,11 @@ TEST(NearDegenerate, GridsAndCollinearSitesAreTheMwvdOfTheirReconstruction) {
   EXPECT_GE(valid, 30);
 }
 
-// Nearly collinear sites put nodes 10^4..10^13 extents out. Tracing faces by geometry used to leave
-// arcs' sides open there, and an accepted reconstruction was wrong (40 sites, 1e-9, seed 2: sites
-// 0.66 of their extent off, a weight 0.61 off). Now every arc is traced and verified, and a unique
-// answer is as close to the drawing sites as the graph determines them: across the line only to
-// the conditioning of the mirror relations (measured up to 2.3e-8 in position, 3e-10 in weight
-// at 40 sites; docs/RECOGNITION.md, "What the graph determines").
+// Nearly collinear sites put nodes 10^4..10^13 extents out, where tracing faces by geometry can
+// leave arcs' sides open and let a wrong reconstruction be accepted (40 sites, 1e-9, seed 2). Every
+// arc must be traced and verified, and a unique answer as close to the drawing sites as the graph
+// determines them: across the line only to the conditioning of the mirror relations
+// (docs/RECOGNITION.md, "What the graph determines").
 TEST(NearDegenerate, CollinearSitesComeBackToTheirConditioning) {
   const Perturbation perturbations[] = {{}, {true, 0.0}, {false, 1e-15}, {false, 1e-12}, {false, 1e-9}};
   int compared = 0;

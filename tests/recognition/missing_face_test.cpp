@@ -164,8 +164,8 @@ void expect_missing_faces_found(int digits) {
         }
       }
       EXPECT_EQ(r.voronoi, MwvdAnswer::kNo) << "trial " << trial;
-      // The missing face is named (FaceOnlyInB), and every difference lies in it or on its boundary
-      // (they once were 1–60 % of the graph's extent away).
+      // The missing face is named (FaceOnlyInB), and every difference lies in it or on its boundary,
+      // not elsewhere in the graph.
       const double extent = diameter(instance->f);
       int named = 0;
       for (const Difference& diff : r.voronoi_differences) {

@@ -56,12 +56,11 @@ TEST(MwvdCheck, IntegerWeightGridsAreMwvds) {
   EXPECT_EQ(checked, 60);
 }
 
-// Grid seeds 723 and 3180: the reconstructed sites lie an ulp off the integers and the engine
-// refused to draw them (EngineFailure: its self-check rejects its own diagram; 723 until the
-// tracing changes of issue 11, 3180 since). The exception escaped recognize() from the
-// MWVD check; without the recomputed diagram a missing face cannot be ruled out, and the answer
-// must not be "no" without evidence: "unknown", with the reason — or "yes" once the engine draws
-// such sites.
+// Grid seeds 723 and 3180: the reconstructed sites lie an ulp off the integers, sites the engine
+// may refuse to draw (EngineFailure: its self-check rejects its own diagram). Such an exception
+// must not escape recognize() from the MWVD check; without the recomputed diagram a missing face
+// cannot be ruled out, and the answer must not be "no" without evidence: "unknown", with the
+// reason — or "yes" when the engine draws such sites.
 TEST(MwvdCheck, SitesTheEngineRefusesToDrawAreNotAnsweredNo) {
   for (int seed : {723, 3180}) {
     const auto sites = voronoi::testing::make_sites(voronoi::testing::Family::Grid, 25, seed);

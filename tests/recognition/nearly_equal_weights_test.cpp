@@ -1,4 +1,4 @@
-// Issue 11, recognition of exact diagrams whose sites are nearly degenerate, as round trips
+// Recognition of exact diagrams whose sites are nearly degenerate, as round trips
 // sites → engine → arc graph → recognize (oracles: the independent checker accepts the engine's
 // diagram; the generating sites).
 // - Weights equal up to 1e-12 relative make every bisector a circle of radius ~1e12 over an extent
@@ -80,9 +80,8 @@ TEST(NearlyEqualWeights, FarOrphanFacesAreNotReconstructedAsTwinSites) {
 // Weights equal to one in a billion: the engine writes the bisectors' huge circles (radii ~1e10)
 // as lines where they are flat at the rounding of doubles, and at a node of two such lines and a
 // circle the composition around it is an involution only to ~1e-7 of the node's frame. In a frame
-// as large as the node's longest arc (issue 11's fix for split nodes) that exceeded the tolerance
-// and a solution circle was read as two points: "no common point" (exactness probe, equal weights
-// at 1e-9). The frame is now the node's median arc.
+// as large as the node's longest arc that exceeds the tolerance and a solution circle reads as two
+// points: "no common point". So the frame is the node's median arc.
 TEST(NearlyEqualWeights, WeightsEqualToOneInABillionAreTheMwvdOfTheirReconstruction) {
   int round_trips = 0;
   for (std::uint64_t seed = 1; seed <= 60; ++seed) {

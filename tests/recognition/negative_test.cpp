@@ -3,8 +3,8 @@
 // geometrically consistent — every arc ends on its own circle — so only the bisector conditions
 // can reject them. The element named must be at the defect, which the generating data tells: the
 // moved node and the other ends of its bent arcs, or the two ends of the removed arc. (The first
-// failing arc in arc order, named before, was a median 0.2 and up to 15 side lengths of the sites'
-// square away: a site propagated through the defect is wrong everywhere beyond it.)
+// failing arc in arc order can be far from the defect: a site propagated through the defect is
+// wrong everywhere beyond it.)
 #include <gtest/gtest.h>
 
 #include <cmath>

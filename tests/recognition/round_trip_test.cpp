@@ -214,7 +214,7 @@ TEST(RoundTrip, GridSitesWithHighDegreeNodesAreRecovered) {
   EXPECT_GT(recognised, 40);
   // Known limit (docs/RECOGNITION.md): a few exactly degenerate grids are redrawn from the
   // reconstructed sites (exact only to ~1e-15) with a circle looping through a tangency node that
-  // the comparison does not yet identify with the input's. At most 4 of the 60 seeds today.
+  // the comparison does not identify with the input's: at most 4 of the 60 seeds are allowed it.
   EXPECT_GE(voronoi_yes, recognised - 4);
   EXPECT_GT(high_degree, 10) << "the family should produce nodes of degree > 3";
 }

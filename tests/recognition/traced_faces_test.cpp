@@ -48,8 +48,8 @@ TEST(TracedFaces, RecognitionFamiliesTraceAsTheirLabels) {
 
 // Exact grids of 300 sites at k/25 with weights 1 and 2: five sites weighted-equidistant from one
 // point but for the rounding of their decimal coordinates put nodes an ulp apart, with a segment
-// between them whose rounded nodes ran against its direction; the engine now drops it
-// (readable_arcs.h) — before, geometry merged three faces there (seed 2).
+// between them whose rounded nodes run against its direction; the engine drops it
+// (readable_arcs.h), else tracing by geometry merges three faces there (seed 2).
 TEST(TracedFaces, ExactGridsOfThreeHundredTraceAsTheirLabels) {
   for (int seed = 1; seed <= 5; ++seed) expect_traced_as_labelled(RecognitionFamily::kGrid, 300, "0", seed);
 }

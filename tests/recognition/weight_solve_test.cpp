@@ -51,9 +51,9 @@ void expect_one_in_a_trillion(double low) {
 }
 
 // Weights in [0.1, 1.1]: light sites enclosed by a heavy neighbour's region in a small circle,
-// whose distance from the circle's centre is ~1 % of the sites' spacing. The even average of both
-// forms of Lemma 1 let that short distance dominate the arc's statement of the weight ratio:
-// 4.1e-12 relative weight error here (5e-11 at 10^5 sites).
+// whose distance from the circle's centre is ~1 % of the sites' spacing. An even average of both
+// forms of Lemma 1 would let that short distance dominate the arc's statement of the weight ratio
+// and miss one in a trillion (recognition/weight_solve.cpp weights the two forms instead).
 TEST(WeightSolve, LightSitesInsideHeavyRegionsKeepTheirWeightsToOneInATrillion) { expect_one_in_a_trillion(0.1); }
 
 TEST(WeightSolve, WeightsBetweenOneAndTwoToOneInATrillion) { expect_one_in_a_trillion(1.0); }

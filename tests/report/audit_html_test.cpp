@@ -113,7 +113,7 @@ TEST(AuditHtml, SelfContainedWellFormedPage) {
   EXPECT_TRUE(page_data(html)["basemap"].is_null());
 }
 
-// Issue 13: the first screen is the answer. In the page's order: the verdict counts, the map, the
+// The first screen is the answer. In the page's order: the verdict counts, the map, the
 // list of sensors needing attention; the table after them, the details last and folded.
 TEST(AuditHtml, AnswerFirstDetailsFolded) {
   const AuditFixture f = audit_fixture(true);
@@ -169,7 +169,7 @@ TEST(AuditHtml, EverySensorInTheDataWorstFirst) {
   }
 }
 
-// Issue 13: a sensor's name, when the input gives one, is shown beside its id in the list and in
+// A sensor's name, when the input gives one, is shown beside its id in the list and in
 // the data the map's labels, hover and search use.
 TEST(AuditHtml, NamesBesideIds) {
   AuditFixture f = audit_fixture(false);
@@ -202,9 +202,9 @@ TEST(AuditHtml, SummaryCountsVerdicts) {
   EXPECT_NE(html.find("97.50 %"), std::string::npos);  // refined mean IoU 0.975
 }
 
-// Issue 12: the page called undetermined sensors "other verdict" and left them out of the legend.
-// Every verdict has a card with its count (zero included); the legend names exactly the verdicts
-// drawn on the map (issue 13), and the cards add up to the sensors.
+// No "other verdict": undetermined sensors are named and in the legend like every verdict. Every
+// verdict has a card with its count (zero included); the legend names exactly the verdicts drawn
+// on the map, and the cards add up to the sensors.
 TEST(AuditHtml, EveryVerdictNamedCountedAndTheLegendMatchesTheMap) {
   const AuditFixture f = testing::audit_fixture_with_undetermined(true);
   const std::string html = html_of(context_of(f));
@@ -479,7 +479,7 @@ TEST(AuditHtmlText, EscapingAndUtf8Repair) {
   EXPECT_EQ(detail::html_escape(std::string("a\0b\x01\tc\n", 7)), "a" + fffd + "b" + fffd + "\tc\n");
   EXPECT_EQ(detail::human_number(std::numeric_limits<double>::quiet_NaN()), "\xE2\x80\x93");
   EXPECT_EQ(detail::human_number(12.345), "12.3");
-  // Issue 13: numbers for people in fixed notation ("2.51e+03 m" was on the page).
+  // Numbers for people in fixed notation (never "2.51e+03 m").
   EXPECT_EQ(detail::human_number(2510.4), "2510");
   EXPECT_EQ(detail::human_number(-0.012345), "-0.0123");
   EXPECT_EQ(detail::human_number(0.0), "0");
@@ -490,7 +490,7 @@ TEST(AuditHtmlText, EscapingAndUtf8Repair) {
 }
 
 TEST(AuditHtml, AMisfitMapSaysSoFirstAndNamesItsReach) {
-  // Issue 12: when the map does not follow the model, the page says so before any verdict; the
+  // When the map does not follow the model, the page says so before any verdict; the
   // reception limit is stated with its numbers. The fixture's values are the oracle.
   AuditFixture f = audit_fixture(false);
   f.result.model_fit.known = true;

@@ -184,8 +184,6 @@ TEST(AuditJson, SensorsCarryReconstructionReportAndComparison) {
   EXPECT_EQ(e["reported"]["x"], 50.0);
 }
 
-// Issue 12: the summary dropped undetermined sensors (counted them as "other"), so its verdict
-// counts did not add up. Every verdict of the enumeration is a member, counted here by hand.
 TEST(AuditJson, NamesAreWrittenAsGivenAndNullWhenEmpty) {
   AuditFixture f = audit_fixture(false);
   ASSERT_TRUE(f.result.sensors[0].reported.has_value());
@@ -209,6 +207,8 @@ TEST(AuditJson, NamesAreWrittenAsGivenAndNullWhenEmpty) {
   }
 }
 
+// The summary counts every verdict, undetermined sensors included (not lumped as "other"), so its
+// verdict counts add up. Every verdict of the enumeration is a member, counted here by hand.
 TEST(AuditJson, SummaryCountsEveryVerdictAndAddsUp) {
   const AuditFixture f = testing::audit_fixture_with_undetermined(true);
   const json s = audit_json(context_of(f))["summary"];
@@ -229,7 +229,7 @@ TEST(AuditJson, SummaryCountsEveryVerdictAndAddsUp) {
   EXPECT_EQ(s["reported"], 5);
 }
 
-// Issue 12: an undetermined sensor's χ² was written as 0.0; it was never computed, so null, in
+// An undetermined sensor's χ² is never computed, so it is null, not 0.0, in
 // report.json and sensors.geojson alike, while the other numbers of its comparison are written.
 TEST(AuditJson, ChiSquareOfAnUndeterminedSensorIsNull) {
   const AuditFixture f = testing::audit_fixture_with_undetermined(true);
@@ -429,7 +429,7 @@ TEST(AuditShiftsGeoJson, ShiftLinesRunFromReportedToReconstructed) {
     EXPECT_EQ(xy[1][1].get<double>(), s.position.y);
     EXPECT_EQ(line["properties"]["verdict"], audit::to_string(s.verdict));
   }
-  // Issue 14: sensors.geojson holds one geometry type (Points), so every GIS format takes it.
+  // sensors.geojson holds one geometry type (Points), so every GIS format takes it.
   for (const json& feature : sensors_geojson(context_of(f))["features"])
     EXPECT_TRUE(feature["geometry"].is_null() || feature["geometry"]["type"] == "Point") << feature.dump();
 }
@@ -661,7 +661,7 @@ TEST(AuditDiagramGeoJson, UnboundedFacesAreCountedNotWritten) {
 namespace covmap::report {
 namespace {
 
-// Issue 14: coordinates at the precision the data carry: each is the double nearest a multiple of
+// Coordinates at the precision the data carry: each is the double nearest a multiple of
 // 1e-8 degrees or of a millimetre, within half a step of the full-precision coordinate. (Written
 // by nlohmann's Grisu2, a few such doubles come out with 16 digits instead of their shortest form;
 // the file still shrinks by half: checked below.)

@@ -151,7 +151,8 @@ inline AuditFixture audit_fixture(bool geographic, const std::string& a_id = "a"
 }
 
 // The fixture plus sensor 'u': in the map and reported, but undetermined, so never judged by the
-// χ² test (chi2 unset) — the sensor the reports used to count as "other" with χ² = 0 (issue 12).
+// χ² test (chi2 unset): the reports must count it as undetermined, never as "other" with
+// χ² = 0.
 inline AuditFixture audit_fixture_with_undetermined(bool geographic) {
   AuditFixture f = audit_fixture(geographic);
   audit::SensorAudit u;

@@ -10,7 +10,7 @@
 namespace covmap::service {
 namespace {
 
-// The names of the API (issue 15), written out here rather than taken from the code.
+// The names of the API (docs/openapi.json), written out here rather than taken from the code.
 const std::vector<std::pair<JobStatus, std::string>> kExpectedNames = {
     {JobStatus::kQueued, "queued"},
     {JobStatus::kRunning, "running"},

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""`covmap serve` driven over real HTTP (issue 15): a server on a free loopback port, Python's own
+"""`covmap serve` driven over real HTTP: a server on a free loopback port, Python's own
 HTTP client, the bundled maps.
 
 Usage: service_test.py path/to/covmap path/to/datasets WORKDIR [part]
@@ -58,8 +58,8 @@ class Server:
         self.base = f"http://{match.group(1)}"
         self.first_line = line
 
-    # The waits are generous: a stop kills the running audits and closes the store, well under a
-    # second on a quiet machine, but one past 30 s was seen with benchmarks running beside the suite.
+    # The waits are generous: a stop kills the running audits and closes the store, quick on a quiet
+    # machine but far slower on a loaded one.
     def stop(self):
         self.proc.send_signal(signal.SIGTERM)
         self.proc.wait(timeout=120)
@@ -354,7 +354,7 @@ def part_limits(covmap, datasets, work):
               f"limits: a failed job's report answered {status}")
         _, _, light = submit(server, bern / "map.geojson", None, {"alpha": 3.5})
         job = wait_done(server, light["id"])
-        # Bern alone takes about 0.4 s of CPU: within the limit.
+        # Bern alone takes well under the CPU limit.
         check(job["status"] == "done", f"limits: the next job ended {job['status']} {job.get('error')}")
         print(f"  limits: over the limit -> {json.dumps(wait_done(server, heavy['id'])['error'])[:160]}")
     finally:
@@ -403,7 +403,7 @@ def part_restart(covmap, datasets, work):
     deadline = time.time() + 60
     while time.time() < deadline and get_json(server, f"/v1/audits/{long_job['id']}")[1]["status"] != "running":
         time.sleep(0.05)
-    # Into the audit (it takes about 6 s here), not past it.
+    # Into the audit (it takes several seconds), not past it.
     time.sleep(0.5)
     check(get_json(server, f"/v1/audits/{long_job['id']}")[1]["status"] == "running", "restart: the long job is not running")
     server.kill()

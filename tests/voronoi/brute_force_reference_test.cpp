@@ -87,7 +87,8 @@ Bisector make_bisector(const Site& a, const Site& b) {
     bis.d = perp(delta);
     bis.u = bis.d * (1 / norm(bis.d));
   } else {
-    // NUMERICS.md: a correction added to s_i, difference of squares factored.
+    // A correction added to s_i, difference of squares factored (docs/NUMERICS.md,
+    // 'Apollonius centre').
     const R diff2 = (wi - wj) * (wi + wj);
     bis.c = si + delta * (wi * wi / diff2);
     bis.r = wi * wj * norm(delta) / std::fabs(diff2);

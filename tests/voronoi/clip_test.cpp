@@ -99,7 +99,7 @@ TEST(Clip, PolygonInsideOneRegionIsOneFrameFace) {
 }
 
 // Clipping's work is (arcs + nodes) × polygon vertices: a product beyond kMaxClipWork is refused
-// before any work (issue 10: a 10^6-vertex polygon would have run for hours), one just below it
+// before any work (a 10^6-vertex polygon would run for hours), one just below it
 // is not refused by the check.
 TEST(Clip, WorkBeyondTheLimitIsRefusedAtOnce) {
   const Diagram d = build_diagram(testing::make_sites(testing::Family::UniformWeights, 2000, 3));

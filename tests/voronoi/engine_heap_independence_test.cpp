@@ -3,8 +3,8 @@
 // The property is tested by building once in a fresh state and again with the heap rearranged
 // (allocations of the engine's own block sizes held and released around the second build), on
 // the inputs whose lifted sites are coplanar — all weights equal, and w² affine in position — for
-// which the planar extractor once took each edge from the face CGAL's edge iterator picked by
-// comparing addresses (the 30×30 equal-weight grid changed order when a 14 KB array was freed
+// which the planar extractor must not take each edge from the face CGAL's edge iterator picks by
+// comparing addresses (then the 30×30 equal-weight grid changes order when a small array is freed
 // before the triangulation).
 #include <gtest/gtest.h>
 

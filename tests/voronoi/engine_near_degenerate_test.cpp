@@ -1,9 +1,9 @@
 // The engine on nearly degenerate input, against the independent checker (check/). Exactly
 // degenerate sets (collinear, cocircular, grid, equal weights) are perturbed by one ulp and by
 // 1e-15, 1e-12 and 1e-9 relative, at coordinates up to 1e7: every decision the doubles imply must
-// be taken exactly and every node placed on its curves. Before the engine constructed nodes from
-// the sites alone (engine/triple_node.h), 20 sites on y = x/2 moved by an ulp gave arc ends up to
-// 800 units off their own curves (issue 11).
+// be taken exactly and every node placed on its curves. The engine constructs nodes from the
+// sites alone (engine/triple_node.h): nodes built otherwise put arc ends of 20 sites on y = x/2
+// moved by an ulp up to 800 units off their own curves.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,6 +1,6 @@
-// The extremes of issue 11: every input is either refused with InvalidSites naming the sites and
-// the limit (before any work), or built into a diagram the independent checker accepts. Before,
-// each of these gave a diagram the checker rejected (or NaN nodes), with success.
+// The extremes of the engine's input range: every input is either refused with InvalidSites
+// naming the sites and the limit (before any work), or built into a diagram the independent
+// checker accepts, never a wrong diagram (or NaN nodes) reported as a success.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -145,7 +145,7 @@ TEST(EngineRange, TouchingDisksOfAPerturbedGridAreNoCrossing) {
     expect_checker_accepts(perturbed_grid(seed), ("grid seed " + std::to_string(seed)).c_str());
 }
 
-// Regression (issue 11): sites 12, 18, 24, 30 of grid seed 369 lie on one row with weights
+// Regression: sites 12, 18, 24, 30 of grid seed 369 lie on one row with weights
 // 3, 1, 1, 3, so the disk of 18 against 12 lies inside its disk against 30, internally tangent at
 // the point where 24's disks, the line of 18|24 and the line of 12|30 touch too: their lifted
 // sites are coplanar and co-circular, and every facet of them has the same power line. Its two

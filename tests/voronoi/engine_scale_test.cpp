@@ -1,7 +1,7 @@
 // The MWVD is scale invariant: scaling the positions scales the diagram, and scaling the weights
-// changes nothing. The engine must be too, on every magnitude a double can hold. Before the
-// engine scaled its input by powers of two, sites 1e9 apart gave a diagram the checker rejected
-// and sites 1e15 apart gave infinite nodes (issue 10, "inputs of 1e308").
+// changes nothing. The engine must be too, on every magnitude a double can hold, up to inputs of
+// 1e308: it scales its input by powers of two, without which sites 1e9 apart give a diagram the
+// checker rejects and sites 1e15 apart give infinite nodes.
 #include <gtest/gtest.h>
 
 #include <cmath>

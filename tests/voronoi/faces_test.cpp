@@ -201,9 +201,9 @@ TEST_P(FacesByGeometry, MatchLabelledFaces) {
   }
 }
 
-// Issue 11: near-degenerate sites (a grid perturbed by 1e-9 relative) split each node of degree four
-// into two nodes ~1e-9 apart joined by a tiny arc; tracing by geometry left arc sides open there and
-// lost faces. Every near-degenerate family and perturbation must trace as the labels do.
+// Near-degenerate sites (a grid perturbed by 1e-9 relative) split each node of degree four into
+// two nodes ~1e-9 apart joined by a tiny arc, where tracing by geometry can leave arc sides open
+// and lose faces. Every near-degenerate family and perturbation must trace as the labels do.
 TEST(FacesByGeometry, NearDegenerateSplitNodesMatchLabelledFaces) {
   using testing::NearBase;
   using testing::Perturbation;

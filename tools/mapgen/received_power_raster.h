@@ -15,9 +15,9 @@
 // and sensors whose upper bound is below the best lower bound (or the sensitivity) by more than
 // tolerance::kPruneSlackDb are dropped: they cannot own a bin of the block. Bins are evaluated one
 // by one only over the survivors of small blocks; a block with one survivor and no sensitivity is
-// filled at once. About O(bins · c + n log bins), c the survivors per small block (a few): 10^6
-// bins and 10^4 sensors take 0.2–0.3 s for the path-loss models and ~6 s with shadowing (16 sines
-// and cosines per bound and per evaluation), against hours by brute force.
+// filled at once. About O(bins · c + n log bins), c the survivors per small block (a few), against
+// hours by brute force on large maps; shadowing costs far more per bin (16 sines and cosines per
+// bound and per evaluation).
 // Throws std::invalid_argument for an empty grid or a non-positive bin.
 #pragma once
 

@@ -68,7 +68,7 @@ void straighten_arc(Arc& a, const Diagram& d, double extent) {
     a.curve = Line{p.x, p.y, q.x - p.x, q.y - p.y};
 }
 
-// Each arc on its own: on all cores (0.09 s of 3·10^6 arcs on one).
+// Each arc on its own: on all cores.
 void straighten_flat_arcs(Diagram& d) {
   const double extent = site_extent(d.sites);
   parallel_chunks(d.arcs.size(), worker_count(d.arcs.size()), [&](std::size_t begin, std::size_t end, int) {
@@ -81,8 +81,9 @@ void straighten_flat_arcs(Diagram& d) {
 // bit of a double's mantissa, and the diagram of scaled sites is the scaled diagram (positions
 // scale it, weights only enter as ratios), so every exact decision is the one the input asked
 // for. What the scaling buys is range: the lifted coordinates and the double constructions stay
-// far from overflow (sites at 1e15 gave infinite nodes) and from the magnitudes at which the
-// engine's internal thresholds were chosen (sites at 1e9 gave a wrong diagram). A site whose
+// far from overflow (unscaled, sites at 1e15 give infinite nodes) and from the magnitudes at
+// which the engine's internal thresholds were chosen (unscaled, sites at 1e9 give a wrong
+// diagram). A site whose
 // scaled value would leave the normal range of doubles (coordinates or weights spanning more
 // than ~600 orders of magnitude) is refused: it cannot be scaled exactly.
 struct Scaling {
@@ -181,7 +182,7 @@ std::vector<RawWeightedPoint> scaled_points(std::span<const Site> input, const S
 void scale_back(Diagram& d, const Scaling& scaling) {
   const PowerOfTwo scale(scaling.position_exponent);
   const auto up = [&scale](double& v) { v = scale(v); };
-  // Every value on its own: on all cores (0.06 s at 10^6 sites on one).
+  // Every value on its own: on all cores.
   parallel_chunks(d.nodes.size(), worker_count(d.nodes.size()), [&](std::size_t begin, std::size_t end, int) {
     for (std::size_t k = begin; k < end; ++k) {
       up(d.nodes[k].x);
@@ -231,7 +232,7 @@ bool finite_with_positive_weights(std::span<const Site> sites) {
 }
 
 // The validation of large inputs, run on a second thread beside the scaling and the triangulation
-// (~0.03 s at 10^5 sites, while the insertion keeps one core busy for ~0.45 s), with the
+// (a small fraction of the insertion's time, which keeps only one core busy), with the
 // triangulation's vertex arrays (flat_vertices) after it, and before it the memory the insertion
 // will take its blocks from faulted in (engine/cell_arena.h). Its verdict is taken before anything
 // else is reported, so a build throws the same InvalidSites as when it validated first.
@@ -242,8 +243,8 @@ class BesideTriangulation {
 
   // Starts the validation, and when `spatial` the prefault before it and flat_vertices(sites) after.
   // With `scale`, `sites` is first filled with the scaled copy of the input (scaled_sites), which
-  // the caller reads only after check(): a copy of every site's id and name, ~0.03 s at 10^5 sites
-  // (most of it the first touch of its pages), that the insertion need not wait for.
+  // the caller reads only after check(): a copy of every site's id and name (most of its cost the
+  // first touch of its pages), that the insertion need not wait for.
   void start(std::vector<Site>& sites, const Scaling* scale, bool spatial) {
     thread_ = std::thread([this, &sites, scale, spatial] {
       try {
@@ -330,8 +331,8 @@ Diagram engine::build_diagram_in_order(std::span<const Site> input, InsertionOrd
   {
     const bool spatial = lifted::span_space(points);  // exact: CGAL's dimension must agree
     // The triangulation's blocks come from fresh huge pages (engine/cell_arena.h), not from
-    // memory freed earlier in the process, so that memory is returned first: else it stayed
-    // resident beside them (a benchmark's repeated builds of 10^5 sites peaked 40 MiB higher).
+    // memory freed earlier in the process, so that memory is returned first: else it stays
+    // resident beside them and raises the peak memory of repeated builds.
     trim_heap();
     if (beside) helper.start(out.sites, sites_beside ? &scaling : nullptr, spatial);
     std::optional<SpatialTriangulation> rt_storage;
@@ -360,7 +361,7 @@ Diagram engine::build_diagram_in_order(std::span<const Site> input, InsertionOrd
       extract_linear(out.sites, rt, out);
   }
   if (flat) extract_spatial(out.sites, std::move(*flat), out, stats);
-  // The extractor's arrays (~0.6 GB at 10^6 sites) are released by now; core/large_buffer.h would
+  // The extractor's arrays (the build's largest) are released by now; core/large_buffer.h would
   // keep up to 1 GiB of them resident for reuse, but face tracing needs other sizes, and the cache
   // would hold the build's peak memory through its last stage.
   release_large_buffers();

@@ -47,7 +47,7 @@ Arena& arena() {
 
 // Chunks are mapped directly, not taken from malloc: glibc raises its mmap threshold to the size
 // of a mapped block once it is freed (up to 32 MiB), after which the engine's arrays of up to that
-// size came from its heap and stayed resident after being freed (+35 MiB of peak at 10^5 sites).
+// size would come from its heap and stay resident after being freed, raising the peak memory.
 void* map_chunk(std::size_t size) {
 #if defined(__linux__)
   // Mapped with a huge page to spare and trimmed to a 2 MiB-aligned start.

@@ -2,14 +2,12 @@
 // vertices (internal to the engine; regular_triangulation.h routes SpatialTriangulation's blocks
 // here).
 //
-// Why: inserting a site walks from cell to cell through the ~47 MB of cells of 10^5 sites (~0.5 GB
-// at 10^6) in no particular order, and the container grows by blocks of 16 more cells each time
-// (~300 blocks at 10^5, the largest ~0.3 MB), each from malloc: 4 KiB pages, faulted in one by one
-// on the inserting thread, and a TLB miss on most steps of the walk. Here the blocks are carved
-// from chunks of up to 32 MiB that are 2 MiB-aligned and advised as transparent huge pages (as
-// core/large_buffer.h does for the engine's arrays): ~2 % of the faults, and the walk's working
-// set within the TLB's reach. Measured at 10^5 uniform sites: CGAL's insertion 0.67 -> 0.51 s when
-// its blocks came from huge pages.
+// Why: inserting a site walks from cell to cell through tens of MB of cells in no particular
+// order, and the container grows by blocks of 16 more cells each time, each from malloc: 4 KiB
+// pages, faulted in one by one on the inserting thread, and a TLB miss on most steps of the walk.
+// Here the blocks are carved from chunks of up to 32 MiB that are 2 MiB-aligned and advised as
+// transparent huge pages (as core/large_buffer.h does for the engine's arrays): a small fraction
+// of the faults, and the walk's working set within the TLB's reach (docs/PERFORMANCE.md).
 //
 // Only where blocks lie changes, not which cells they hold or their order: the container hands
 // out its slots (free list first, then the next fresh slot) and iterates them (block after block)
@@ -29,8 +27,8 @@ void arena_deallocate(void* p, std::size_t bytes) noexcept;
 
 // Maps chunks for `bytes` more of blocks and touches every page of them, for the blocks allocated
 // next: build_diagram calls it on its second thread as the insertion starts, so that the inserting
-// thread finds its memory faulted in (zeroing ~50 MB of fresh pages took ~0.03 s of the insertion
-// at 10^5 sites). A chunk still being touched is not handed out; the allocator maps its own then.
+// thread finds its memory faulted in rather than zeroing fresh pages itself. A chunk still being
+// touched is not handed out; the allocator maps its own then.
 void arena_prefault(std::size_t bytes);
 
 // Unmaps the prefaulted chunks no block was carved from.

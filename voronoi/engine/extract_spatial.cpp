@@ -12,8 +12,8 @@
 // neighbour ids) and released: every later pass, the edge walks included, reads those arrays only.
 // Vertices are numbered by their sites' Morton (Z-order) rank, with their points stored in that
 // order, and cells are stored by the rank of their first vertex, so that neighbours and their
-// points are near in memory; CGAL's order scatters cells (at 10^5 sites 70 % of neighbours lay
-// more than 2048 cells apart) and the walks waited on memory. The cells' numbers and their vertex
+// points are near in memory; CGAL's order scatters cells (most neighbours lie far apart) and the
+// walks would wait on memory. The cells' numbers and their vertex
 // order are canonical (flat_triangulation.h): a function of the complex, not of the order CGAL
 // inserted the sites in. They decide everything here that orders the output or a construction:
 // which cell of a facet computes its pattern (the lower-numbered), how nodes are numbered (in cell
@@ -45,7 +45,7 @@ namespace {
 // Per cell: its power vertex (finite cells) or outward ray direction (infinite cells), the values
 // and error bounds of a Homog<Approx>. No member has an initializer, so allocating the array
 // touches no page: compute_cells writes every entry, on all cores (a fresh page costs a fault and
-// its zeroing; on one core, before the loop, that was ~4 % of a build at 10^5 sites).
+// its zeroing, which on one core before the loop would be a noticeable part of a build).
 struct CellData {
   double value[4];
   double error[4];
@@ -100,7 +100,7 @@ class SpatialExtractor {
   LargeVector<int> vertex_node_;    // node id of a zero vertex, by union-find root
   std::vector<std::pair<int, int>> zero_nodes_;  // (cell, node) of the finite zero-vertex cells, by cell
   // Large buffers, sized without being written: every entry is written as its node is placed, on
-  // all cores (as std::vectors they were zero-filled on one core first, through 4 KiB page faults).
+  // all cores (std::vectors would be zero-filled on one core first, through 4 KiB page faults).
   LargeVector<std::array<int, 3>> node_facet_;  // per root node: the sites of its facet
   LargeVector<AlongLine> node_root_;            // per root node: which root of its facet's line
   int workers_ = 1;
@@ -268,7 +268,7 @@ class SpatialExtractor {
       }
     });
     for (std::size_t f : fallbacks) stats_.exact_fallbacks += f;
-    // The approximate vertices (72 bytes a cell, ~0.45 GB at 10^6 sites) are not read again: their
+    // The approximate vertices (72 bytes a cell) are not read again: their
     // block goes back to the system rather than to core/large_buffer.h's cache, where it would stay
     // resident through the walks, the peak of the build. The node ids are allocated only now.
     LargeVector<CellData>().swap(data_);
@@ -519,8 +519,8 @@ class SpatialExtractor {
           }
       }
     });
-    // Nothing but the walks' output is read from here on: the triangulation's arrays (~0.65 GB at
-    // 10^6 sites) go back to the system before the arcs are gathered, the peak of the build.
+    // Nothing but the walks' output is read from here on: the triangulation's arrays go back to the
+    // system before the arcs are gathered, the peak of the build.
     for (WalkState& st : states) LargeVector<std::uint8_t>().swap(st.done);
     release_walk_input();
     gather_arcs(states);
@@ -539,11 +539,10 @@ class SpatialExtractor {
   }
 
   // Puts the workers' arcs into the diagram, worker after worker (walk_all_edges: that is their
-  // order): each worker's arcs copied on all cores into one fresh array (~0.2 GB at 10^6 sites),
-  // advised as huge pages before it is first touched, and its buffers returned to the system at
-  // once, so the arcs are held at most once plus one worker's share. Before, the arcs were
-  // appended worker by worker and permuted in place by swaps, all on one core through 4 KiB page
-  // faults: 1.5 s of a 30 s build of 10^6 sites.
+  // order): each worker's arcs copied on all cores into one fresh array, advised as huge pages
+  // before it is first touched, and its buffers returned to the system at once, so the arcs are
+  // held at most once plus one worker's share. Appending worker by worker and permuting in place
+  // by swaps would run on one core through 4 KiB page faults.
   void gather_arcs(std::vector<WalkState>& states) {
     const std::size_t start = out_.arcs.size();
     std::size_t total = start;

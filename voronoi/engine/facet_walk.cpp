@@ -18,7 +18,8 @@ Arc make_arc(int si, int sj, int from, int to, const RawPoint& pi, const RawPoin
     arc.curve = Line{0.5 * (xi + xj), 0.5 * (yi + yj), -(yj - yi), xj - xi};
     arc.ccw = true;
   } else {
-    // Centre as a correction to s_i with the difference of squares factored (NUMERICS.md).
+    // Centre as a correction to s_i with the difference of squares factored (docs/NUMERICS.md,
+    // 'Apollonius centre').
     const double k = wi * wi / ((wi - wj) * (wi + wj));
     const double r = wi * wj * std::hypot(xj - xi, yj - yi) / std::fabs((wi - wj) * (wi + wj));
     arc.curve = Circle{xi + k * (xj - xi), yi + k * (yj - yi), r};

@@ -97,7 +97,7 @@ int bucket_of(const FlatCell& c) {
 // neighbours' ids; `rt` is cleared afterwards. The one sequential pass numbers the cells (info());
 // then each cell is read once, in container order on all cores. The passes that number the cells
 // canonically read only this copy: they visit cells in another order, and reading CGAL's scattered
-// cells and vertices there (at 10^6 sites ~0.5 GB of them) waited on memory.
+// cells and vertices there would wait on memory.
 template <class Triangulation>
 LargeVector<FlatCell> cells_by_id(Triangulation& rt, const LargeVector<int>& rank) {
   const std::size_t n = rt.tds().number_of_cells();
@@ -182,8 +182,7 @@ FlatTriangulation flatten_triangulation(const std::vector<Site>& sites, FlatVert
     });
   }
   // The copy by id and the numbering go back to the system, not to core/large_buffer.h's cache,
-  // where they would stay resident under the extractor's smaller arrays (the copy alone: +46 MiB
-  // of peak at 10^6 sites).
+  // where they would stay resident under the extractor's smaller arrays and raise the peak.
   release_large_buffers();
   return flat;
 }

@@ -37,9 +37,9 @@ bool ends_within_rounding(const Arc& a, const std::vector<Node>& nodes, const st
 // to mend it. A segment is dropped when its rounded nodes do not follow its direction: five sites
 // of a grid equidistant from one point up to the rounding of their decimal coordinates have nodes
 // an ulp apart, a segment between them pointing backwards, and a face of site 8 some 1e-17 across
-// that no reader can trace (issue 11). The arc runs between two consecutive zeros, so if any zero of the walk lies farther
-// than rounding from its ends it is the tiny piece; only when all of them cluster there is the
-// point opposite probed.
+// that no reader can trace. The arc runs between two consecutive zeros, so if any zero of the walk
+// lies farther than rounding from its ends it is the tiny piece; only when all of them cluster
+// there is the point opposite probed.
 ArcMend arc_mend(const Arc& a, const std::vector<Node>& nodes, const std::vector<Site>& sites,
                  const std::vector<int>& zeros, const std::vector<RawPoint>& link, double extent);
 

@@ -9,10 +9,9 @@
 // quarter less memory to fault in and to walk through, the same triangulation in the same order
 // (the planar extractor reads cells in CGAL's container order, which the layout does not change;
 // tests/voronoi/spatial_triangulation_test.cpp compares the cells in every dimension). Coplanar
-// lifted sites (dimension ≤ 2: equal weights, w² affine in position, fewer than four sites) kept
-// CGAL's default cells while the planar extractor read CGAL's edge iterator, which picks the cell
-// reporting an edge by comparing cell addresses; it no longer does, and the lean cells gave the
-// same files there (equal weights and grids, 2·10^5 sites: the same time, 4 % less peak memory).
+// lifted sites (dimension ≤ 2: equal weights, w² affine in position, fewer than four sites) use
+// them too: the planar extractor does not take edges from CGAL's edge iterator, which picks the
+// cell reporting an edge by comparing cell addresses, so the cells' layout changes no output.
 //
 // RegularTriangulation, CGAL's default cells, is the reference the tests compare against.
 #pragma once
@@ -104,12 +103,12 @@ using SpatialTriangulation = CGAL::Regular_triangulation_3<LiftedTraits, Spatial
 //     (tests/voronoi/spatial_triangulation_test.cpp); the order the planar extractor (dimension
 //     2), which reads CGAL's order, is defined by.
 //   kHilbert2: the same sort on (x, y) only. Consecutive sites are then near in the plane whatever
-//     their weights, and each insertion starts nearer its conflict zone: at 10^6 uniform sites the
-//     insertion took less time (docs/PERFORMANCE.md, session 16). The spatial extractor's output
+//     their weights, and each insertion starts nearer its conflict zone, so insertion takes less
+//     time on large inputs (docs/PERFORMANCE.md). The spatial extractor's output
 //     does not depend on the order (flat_triangulation.h): build_diagram is free to choose it.
 //   kAsGiven: no sort, the input order (tests: a second, unrelated insertion order).
-// Where CGAL sorts a copy of the points, they are sorted here in place (CGAL's copy was 32 MB of
-// fresh 4 KiB pages at 10^6 sites).
+// Where CGAL sorts a copy of the points, they are sorted here in place: the copy would be tens of
+// MB of fresh pages on large inputs.
 enum class InsertionOrder { kSpatial3, kHilbert2, kAsGiven };
 
 namespace detail {

@@ -16,10 +16,10 @@ import { join, resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
 
 export const CHROMIUM = process.env.CHROMIUM || '/usr/bin/chromium';
-// Waits that bound a hung browser; far above what a healthy run takes (a page loads in < 2 s).
+// Waits that bound a hung browser; far above what a healthy run takes.
 export const LAUNCH_TIMEOUT_MS = 20000;
 export const LOAD_TIMEOUT_MS = 15000;
-// JPEG for long pages: a full-page PNG of a report takes 1.5 s more to encode, for no visible gain.
+// JPEG for long pages: a full-page PNG of a report takes much longer to encode, for no visible gain.
 export const JPEG_QUALITY = 80;
 // URL schemes a self-contained page may load from.
 const LOCAL_SCHEMES = ['file:', 'data:'];
