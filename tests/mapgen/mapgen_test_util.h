@@ -44,27 +44,6 @@ inline double signed_area(const std::vector<Point>& ring) {
   return 0.5 * twice;
 }
 
-// Even-odd crossing test; p must not lie on the ring (bin centres never lie on bin edges).
-inline bool inside_ring(const std::vector<Point>& ring, Point p) {
-  bool inside = false;
-  for (std::size_t k = 0; k + 1 < ring.size(); ++k) {
-    const Point a = ring[k], b = ring[k + 1];
-    if ((a.y > p.y) != (b.y > p.y)) {
-      const double x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
-      if (x > p.x) inside = !inside;
-    }
-  }
-  return inside;
-}
-
-// Inside the outer ring (rings[0]) and outside every hole.
-inline bool inside_polygon(const std::vector<std::vector<Point>>& rings, Point p) {
-  if (rings.empty() || !inside_ring(rings[0], p)) return false;
-  for (std::size_t h = 1; h < rings.size(); ++h)
-    if (inside_ring(rings[h], p)) return false;
-  return true;
-}
-
 // Per label (>= 0), the number of 4-connected components, by an independent flood fill.
 inline std::vector<int> components_per_label(const std::vector<int>& labels, int nx, int ny, int label_count) {
   std::vector<int> count(static_cast<std::size_t>(label_count), 0);
