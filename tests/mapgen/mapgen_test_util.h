@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/diagram.h"
+#include "tests/support/temp_dir.h"
 
 namespace covmap::mapgen::testing {
 
@@ -91,30 +92,7 @@ inline std::vector<Site> random_test_sites(int n, double size, double ratio, uns
   return sites;
 }
 
-class TempDir {
- public:
-  TempDir() {
-    std::random_device random;
-    path_ = std::filesystem::temp_directory_path() / ("covmap-mapgen-test-" + std::to_string(random()) + std::to_string(random()));
-    std::filesystem::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
-
-inline std::string read_text(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using covmap::testing::read_text;
+using covmap::testing::TempDir;
 
 }  // namespace covmap::mapgen::testing
