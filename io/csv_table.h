@@ -54,8 +54,9 @@ struct CsvRow {
 
 class CsvTable {
  public:
-  // Reads up to and including the header. `text` must outlive the table; `file` names it in
-  // messages; `example` is a header line for the message when there is none ("id,x,y,weight").
+  // Reads up to and including the header. `text` and `columns` must outlive the table; `file`
+  // names it in messages; `example` is a header line for the message when there is none
+  // ("id,x,y,weight").
   CsvTable(std::string_view text, std::string file, std::span<const CsvColumn> columns, std::string_view example);
 
   // Whether the header names column c.
