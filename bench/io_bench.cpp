@@ -35,13 +35,13 @@
 #include "bench/count_argument.h"
 #include "bench/isolated_run.h"
 #include "bench/site_distributions.h"
+#include "core/round_trip_numbers.h"
 #include "io/atomic_file.h"
 #include "io/coverage_map.h"
 #include "io/coverage_map_drafts.h"
 #include "io/reported_sensors.h"
 #include "io/diagram_json.h"
 #include "io/fast_readers.h"
-#include "io/json_number.h"
 #include "io/site_parsers.h"
 #include "io/sites_io.h"
 #include "io/text_util.h"
@@ -130,7 +130,7 @@ void write_sites_csv(const std::vector<covmap::Site>& sites, const fs::path& fil
     text += s.id;
     for (const double v : {s.x, s.y, s.weight}) {
       text += ',';
-      io::append_json_number(text, v);
+      covmap::append_json_number(text, v);
     }
     text += '\n';
   }

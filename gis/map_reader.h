@@ -19,6 +19,13 @@
 // kind kProjectedCrs), geographic ones are projected as lon/lat maps always were. Data without
 // any CRS need options.planar; options.planar with data that declare a CRS is refused.
 //
+// Guaranteed on success: what io/coverage_map.h guarantees of the map it returns (every input
+// ends in its reader), whatever the format. map.frame is the data's projected CRS (a PROJ frame)
+// when they have one, covmap's local projection for lon/lat data, and null for data without a CRS
+// with options.planar. A raster gives one cell per band value present (ascending), its polygons
+// the value's 4-connected pixel regions, its sensor (and name) the one the value names. `source`, when
+// given, says which reader took the file.
+//
 // Rejected with io::InputError naming the file (and layer) and what to do: a file no reader
 // takes; several layers without options.layer (the message lists them); a missing layer or band;
 // a raster band that is not of an integer type, or rotated/sheared pixels; values without a

@@ -42,7 +42,10 @@
 // --planar ("coordinates look planar (x=...); use --planar", or, with declared_geographic_crs,
 // "assign the CRS the coordinates are really in"); self-crossing rings; mixed crs declarations,
 // non-WGS84 ones that cannot be resolved (the resolver's reason, once), and --planar with one that
-// can. Consecutive repeated positions are dropped silently.
+// can. And what io/input_limits.h bounds (docs/RELIABILITY.md): a file over 1 GiB, JSON nested
+// more than 32 levels, more than 10^6 features or 5·10^7 vertices, a planar coordinate beyond
+// ±1e8 m; and more distinct sensors than options.max_sensors, refused before the geometry is
+// checked. Consecutive repeated positions are dropped silently.
 //
 // Cost: O(V log V) for V vertices, whatever the shape of the rings (crossings are found by a
 // sweep line, io/segment_sweep.h). When a polygon's rings cross at several places, the message

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/round_trip_numbers.h"
 #include "io/coverage_map_drafts.h"
 #include "io/coverage_map_rings.h"
 #include "io/input_error.h"
@@ -18,9 +19,9 @@ std::string quoted(const std::string& text) { return "\"" + text + "\""; }
 
 std::string pair_text(Point p) {
   std::string out(1, '(');  // appended, not "(" + ...: GCC 12 false -Wrestrict (PR 105651)
-  out += format_number(p.x);
+  out += round_trip_number(p.x);
   out += ", ";
-  out += format_number(p.y);
+  out += round_trip_number(p.y);
   out += ')';
   return out;
 }
@@ -114,7 +115,7 @@ void read_ring(const Json& positions, const std::string& name, bool planar, Feat
     }
     if (!planar && !range_reported && (std::abs(q.x) > 180.0 || std::abs(q.y) > 90.0)) {
       draft.problems.push_back(name + ", position " + std::to_string(i) + ": not a longitude/latitude; coordinates look planar (x=" +
-                               format_number(q.x) + ", y=" + format_number(q.y) + "); " + advice);
+                               round_trip_number(q.x) + ", y=" + round_trip_number(q.y) + "); " + advice);
       range_reported = true;
     }
     out.push_back(q);

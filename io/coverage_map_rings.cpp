@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 
+#include "core/round_trip_numbers.h"
 #include "io/coverage_map_crossings.h"
 #include "io/polygon_check.h"
 #include "io/text_util.h"
@@ -42,7 +43,7 @@ CleanRing clean(const RingInput& ring) {
 // "position 7 (8.01, 47.2)": the index and the coordinates as they are in the file.
 std::string position(const RingInput& ring, std::uint32_t index) {
   const Point p = ring.read[index];
-  return "position " + std::to_string(index) + " (" + format_number(p.x) + ", " + format_number(p.y) + ")";
+  return "position " + std::to_string(index) + " (" + round_trip_number(p.x) + ", " + round_trip_number(p.y) + ")";
 }
 
 // "the edge from position 3 (…) to position 4 (…)"; source maps the kept vertices to file positions.

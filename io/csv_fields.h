@@ -1,5 +1,5 @@
-// CSV lines for the io readers (internal to io/): the sites and the reported-sensors CSV readers
-// split their lines here, so both take the same files.
+// CSV lines (internal to io/): io/csv_table.h splits every CSV file's lines here, so the sites,
+// the reported sensors and the map generator's town lists take the same files.
 //
 // Delimiter: the one of comma, semicolon, tab and '|' that splits the header line into the most
 // fields (outside double quotes); a comma when none splits it. Spreadsheets in much of Europe

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "core/round_trip_numbers.h"
 #include "io/fast_readers.h"
 #include "io/input_error.h"
 #include "io/input_limits.h"
@@ -53,7 +54,7 @@ struct Reader {
     if (circle) {
       const std::string cat = at + ".circle";
       Circle c{number(*circle, cat, "cx"), number(*circle, cat, "cy"), number(*circle, cat, "r")};
-      if (!(c.r > 0)) throw FieldError(cat + ".r", "radius must be positive (got " + detail::format_number(c.r) + ")");
+      if (!(c.r > 0)) throw FieldError(cat + ".r", "radius must be positive (got " + round_trip_number(c.r) + ")");
       ccw = detail::boolean(detail::member(*circle, "ccw", cat), cat + ".ccw");
       return c;
     }

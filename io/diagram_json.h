@@ -12,8 +12,8 @@
 // null stands for kNone. Orientation conventions are those of core/diagram.h.
 //
 // Writing: every double is written in the shortest form that reads back to the same bits
-// (io/json_number.h: always with a fraction or an exponent, "10.0", "1e+16"), so write -> read
-// reproduces the Diagram exactly. A non-finite number cannot be written (JSON has
+// (core/round_trip_numbers.h: always with a fraction or an exponent, "10.0", "1e+16"), so
+// write -> read reproduces the Diagram exactly. A non-finite number cannot be written (JSON has
 // none) and makes write_diagram_json throw std::invalid_argument naming the JSON path.
 //
 // Reading: a one-pass reader takes well-formed files; anything else, and every error, goes to the

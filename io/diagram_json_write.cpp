@@ -13,7 +13,7 @@
 #include "io/diagram_json.h"
 #include "io/diagram_json_write.h"
 #include "io/json_fields.h"
-#include "io/json_number.h"
+#include "core/round_trip_numbers.h"
 #include "io/json_out.h"
 #include "io/ordered_pieces.h"
 #include "io/site_parsers.h"
@@ -30,7 +30,7 @@ using namespace std::string_view_literals;  // "..."sv: a literal's length witho
 void check(double v, const char* array, std::size_t i, const char* member) {
   if (std::isfinite(v)) return;
   throw std::invalid_argument("write_diagram_json: " + detail::element_path(array, i) + member + " is " +
-                              detail::format_number(v) + "; JSON cannot represent it");
+                              round_trip_number(v) + "; JSON cannot represent it");
 }
 
 // A string that is not UTF-8 would make the file invalid JSON (the readers refuse such ids, but a

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/round_trip_numbers.h"
 #include "io/input_error.h"
 #include "io/input_limits.h"
 #include "io/text_util.h"
@@ -134,7 +135,7 @@ double number(const Json& value, const std::string& path) {
 double finite_number(const Json& value, const std::string& path) {
   const double x = number(value, path);
   // JSON has no NaN or infinity, but a literal like 1e999 overflows to infinity when parsed.
-  if (!std::isfinite(x)) throw FieldError(path, "must be finite (got " + format_number(x) + ")");
+  if (!std::isfinite(x)) throw FieldError(path, "must be finite (got " + round_trip_number(x) + ")");
   return x;
 }
 

@@ -3,7 +3,7 @@
 #include <charconv>
 #include <cstring>
 
-#include "io/json_number.h"
+#include "core/round_trip_numbers.h"
 #include "io/text_util.h"
 
 namespace covmap::io::detail {

@@ -33,7 +33,7 @@ class JsonOut {
   void raw(const char (&literal)[N]) {
     raw(std::string_view(literal, N - 1));
   }
-  void number(double value);     // finite (see json_number.h); always a float token
+  void number(double value);     // finite (see core/round_trip_numbers.h); always a float token
   void integer(long long value);
   void index_or_null(int index);  // null for a negative index (kNone)
   void boolean(bool value);

@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "core/orientation.h"
+#include "core/round_trip_numbers.h"
 #include "io/segment_sweep.h"
 #include "io/text_util.h"
 
@@ -68,7 +69,7 @@ bool doubles_back(Point a, Point b, Point c) {
 }
 
 std::string vertex(std::span<const Point> ring, std::size_t i) {
-  return std::to_string(i) + " (" + detail::format_number(ring[i].x) + ", " + detail::format_number(ring[i].y) + ")";
+  return std::to_string(i) + " (" + round_trip_number(ring[i].x) + ", " + round_trip_number(ring[i].y) + ")";
 }
 
 std::string edge(std::span<const Point> ring, std::size_t i) {

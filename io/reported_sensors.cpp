@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/round_trip_numbers.h"
 #include "io/input_error.h"
 #include "io/input_limits.h"
 #include "io/reported_sensors_parsers.h"
@@ -14,7 +15,7 @@ namespace {
 
 void check_alpha(double alpha) {
   if (!std::isfinite(alpha) || !(alpha > 0)) {
-    throw std::invalid_argument("path-loss exponent alpha must be finite and > 0 (got " + detail::format_number(alpha) + ")");
+    throw std::invalid_argument("path-loss exponent alpha must be finite and > 0 (got " + round_trip_number(alpha) + ")");
   }
 }
 
@@ -70,7 +71,7 @@ double weight_from_power(double tx_power_dbm, double alpha) {
 double power_from_weight(double weight, double alpha) {
   check_alpha(alpha);
   if (!std::isfinite(weight) || !(weight > 0)) {
-    throw std::invalid_argument("weight must be finite and > 0 (got " + detail::format_number(weight) + ")");
+    throw std::invalid_argument("weight must be finite and > 0 (got " + round_trip_number(weight) + ")");
   }
   return 10.0 * alpha * std::log10(weight);
 }

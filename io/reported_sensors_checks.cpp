@@ -4,6 +4,7 @@
 #include <tuple>
 #include <unordered_map>
 
+#include "core/round_trip_numbers.h"
 #include "io/input_limits.h"
 #include "io/reported_sensors_parsers.h"
 #include "io/text_util.h"
@@ -16,15 +17,15 @@ namespace {
 std::string reference(const SensorDraft& d) { return "sensor " + quote_id(d.sensor.id) + " (" + d.sensor.origin + ")"; }
 
 void check_finite(double value, const char* name, SensorDraft& d) {
-  if (!std::isfinite(value)) d.problems.push_back(std::string(name) + " must be finite (got " + format_number(value) + ")");
+  if (!std::isfinite(value)) d.problems.push_back(std::string(name) + " must be finite (got " + round_trip_number(value) + ")");
 }
 
 void check_positive(const std::optional<double>& value, const char* name, SensorDraft& d) {
   if (!value) return;
   if (!std::isfinite(*value)) {
-    d.problems.push_back(std::string(name) + " must be finite (got " + format_number(*value) + ")");
+    d.problems.push_back(std::string(name) + " must be finite (got " + round_trip_number(*value) + ")");
   } else if (!(*value > 0)) {
-    d.problems.push_back(std::string(name) + " must be positive (got " + format_number(*value) + ")");
+    d.problems.push_back(std::string(name) + " must be positive (got " + round_trip_number(*value) + ")");
   }
 }
 
@@ -33,7 +34,7 @@ void check_values(SensorDraft& d) {
     check_finite(d.xy->x, "x", d);
     check_finite(d.xy->y, "y", d);
     if (std::abs(d.xy->x) > kMaxPlanarCoordinate || std::abs(d.xy->y) > kMaxPlanarCoordinate)
-      d.problems.push_back("position (" + format_number(d.xy->x) + ", " + format_number(d.xy->y) +
+      d.problems.push_back("position (" + round_trip_number(d.xy->x) + ", " + round_trip_number(d.xy->y) +
                            ") " + kBeyondPlanarLimit);
   }
   if (d.lon_lat) {
@@ -41,8 +42,8 @@ void check_values(SensorDraft& d) {
     check_finite(g.lon, "lon", d);
     check_finite(g.lat, "lat", d);
     if (std::isfinite(g.lon) && std::isfinite(g.lat) && (std::abs(g.lon) > 180.0 || std::abs(g.lat) > 90.0)) {
-      d.problems.push_back("not a longitude/latitude; coordinates look planar (x=" + format_number(g.lon) +
-                           ", y=" + format_number(g.lat) + "); use --planar with a planar map");
+      d.problems.push_back("not a longitude/latitude; coordinates look planar (x=" + round_trip_number(g.lon) +
+                           ", y=" + round_trip_number(g.lat) + "); use --planar with a planar map");
     }
   }
   check_positive(d.sensor.weight, "weight", d);
@@ -87,8 +88,8 @@ void check_unique_positions(std::vector<SensorDraft>& drafts) {
       continue;
     }
     const auto [kind, a, b] = key(order[k]);
-    drafts[order[k]].problems.push_back(std::string(kind == 0 ? "same position (" : "same lon/lat (") + format_number(a) +
-                                        ", " + format_number(b) + ") as " + reference(drafts[order[run_start]]));
+    drafts[order[k]].problems.push_back(std::string(kind == 0 ? "same position (" : "same lon/lat (") + round_trip_number(a) +
+                                        ", " + round_trip_number(b) + ") as " + reference(drafts[order[run_start]]));
   }
 }
 
@@ -168,8 +169,8 @@ std::vector<ReportedSensor> finish_sensors(std::vector<SensorDraft> drafts, cons
       if (std::isfinite(w) && w > 0) {
         s.weight = w;
       } else {
-        d.problems.push_back("tx_power_dbm " + format_number(*s.tx_power_dbm) + " with alpha " +
-                             format_number(*options.alpha) + " gives weight " + format_number(w) +
+        d.problems.push_back("tx_power_dbm " + round_trip_number(*s.tx_power_dbm) + " with alpha " +
+                             round_trip_number(*options.alpha) + " gives weight " + round_trip_number(w) +
                              ", which is not a usable weight");
       }
     }
@@ -180,7 +181,7 @@ std::vector<ReportedSensor> finish_sensors(std::vector<SensorDraft> drafts, cons
       s.lat = g.lat;
       s.position = options.frame->forward(g.lon, g.lat);
       if (!std::isfinite(s.position.x) || !std::isfinite(s.position.y))
-        d.problems.push_back("position (" + format_number(d.xy->x) + ", " + format_number(d.xy->y) + ") lies outside " +
+        d.problems.push_back("position (" + round_trip_number(d.xy->x) + ", " + round_trip_number(d.xy->y) + ") lies outside " +
                              xy_frame->description() + ": check the coordinates or --sensor-crs");
     } else if (d.xy) {
       s.position = *d.xy;

@@ -1,11 +1,9 @@
 // The CSV syntax for reported sensors: a header naming the columns, then one sensor per line.
-// Lines, delimiters, quoting and numbers follow the sites CSV (io/csv_fields.h); the columns differ.
-#include <algorithm>
+// Lines, delimiters, quoting and numbers as io/csv_table.h reads them; the columns differ.
 #include <array>
-#include <cctype>
-#include <charconv>
+#include <string>
 
-#include "io/csv_fields.h"
+#include "io/csv_table.h"
 #include "io/reported_sensors_parsers.h"
 #include "io/text_util.h"
 
@@ -13,47 +11,20 @@ namespace covmap::io::detail {
 namespace {
 
 enum Column : std::size_t { kId, kName, kX, kY, kLon, kLat, kWeight, kPower, kPositionSigma, kPowerSigma, kColumnCount };
-constexpr std::array<std::string_view, kColumnCount> kNames = {
-    "id", "name", "x", "y", "lon", "lat", "weight", "tx_power_dbm", "position_sigma_m", "power_sigma_db"};
-constexpr std::size_t kAbsent = static_cast<std::size_t>(-1);
+// All optional to the table; which combinations a file needs is checked by check_header.
+constexpr std::array<CsvColumn, kColumnCount> kColumns = {{{"id", false, {}},
+                                                           {"name", false, {}},
+                                                           {"x", false, {}},
+                                                           {"y", false, {}},
+                                                           {"lon", false, {}},
+                                                           {"lat", false, {}},
+                                                           {"weight", false, {}},
+                                                           {"tx_power_dbm", false, {}},
+                                                           {"position_sigma_m", false, {}},
+                                                           {"power_sigma_db", false, {}}}};
 
-// A number, or nullopt with `error` set. "inf" and "nan" parse, so the value checks can say
-// "must be finite" rather than "not a number".
-std::optional<double> to_number(std::string_view field, std::string_view name, std::string& error) {
-  std::string_view digits = field;
-  if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);  // from_chars rejects '+'
-  double value = 0.0;
-  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-  if (ec == std::errc::result_out_of_range) {
-    error = std::string(name) + " is out of the range of a double (got '" + std::string(field) + "')";
-    return std::nullopt;
-  }
-  if (digits.empty() || ec != std::errc() || end != digits.data() + digits.size()) {
-    error = std::string(name) + " is not a number (got '" + std::string(field) + "')";
-    return std::nullopt;
-  }
-  return value;
-}
-
-std::string lower(std::string_view text) {
-  std::string out(text);
-  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return out;
-}
-
-using ColumnIndex = std::array<std::size_t, kColumnCount>;
-
-ColumnIndex read_header(const std::vector<std::string>& fields, const std::string& file, int line) {
-  ColumnIndex at;
-  at.fill(kAbsent);
-  for (std::size_t f = 0; f < fields.size(); ++f) {
-    const auto it = std::find(kNames.begin(), kNames.end(), lower(fields[f]));
-    if (it == kNames.end()) continue;  // other columns are the user's business
-    const auto c = static_cast<std::size_t>(it - kNames.begin());
-    if (at[c] != kAbsent) throw InputError(file, line, "header", "repeated column '" + std::string(kNames[c]) + "'");
-    at[c] = f;
-  }
-  const auto has = [&](Column c) { return at[c] != kAbsent; };
+void check_header(const CsvTable& table) {
+  const auto has = [&](Column c) { return table.has(c); };
   std::string missing;
   if (!has(kId)) missing = "an id column";
   // Both pairs are allowed (vendor exports give both); the map decides which one is used
@@ -64,31 +35,26 @@ ColumnIndex read_header(const std::vector<std::string>& fields, const std::strin
   if (!planar && !geographic) missing += std::string(missing.empty() ? "" : ", ") + "x and y (or lon and lat) columns";
   if (!has(kWeight) && !has(kPower)) missing += std::string(missing.empty() ? "" : ", ") + "a weight or tx_power_dbm column";
   if (!missing.empty()) {
-    throw InputError(file, line, "header", "needs " + missing + " (for example: id,lon,lat,tx_power_dbm)");
+    throw InputError(table.file(), table.header_line(), "header", "needs " + missing + " (for example: id,lon,lat,tx_power_dbm)");
   }
-  return at;
 }
 
-SensorDraft read_row(const std::vector<std::string>& fields, const ColumnIndex& at, int line, CsvDelimiter delimiter) {
+SensorDraft read_row(const CsvTable& table, const CsvRow& row) {
   SensorDraft d;
-  d.line = line;
-  d.sensor.origin = "line " + std::to_string(line);
-  // The field of column c: nullptr when the file has no such column, or the row is too short.
-  const auto field = [&](Column c) -> const std::string* {
-    return at[c] != kAbsent && at[c] < fields.size() ? &fields[at[c]] : nullptr;
-  };
+  d.line = row.line;
+  d.sensor.origin = "line " + std::to_string(row.line);
   const auto required = [&](Column c) -> const std::string* {
-    const std::string* f = field(c);
-    if (!f) d.problems.push_back("missing " + std::string(kNames[c]) + " (the row has " + std::to_string(fields.size()) + " fields)");
-    else if (f->empty()) d.problems.push_back(std::string(kNames[c]) + " is empty");
+    const std::string* f = row.field(c);
+    if (!f) d.problems.push_back(row.missing(c));
+    else if (f->empty()) d.problems.push_back(std::string(kColumns[c].name) + " is empty");
     return f && !f->empty() ? f : nullptr;
   };
   // Optional fields: an empty one is "not given".
   const auto number = [&](Column c, bool is_required) -> std::optional<double> {
-    const std::string* f = is_required ? required(c) : field(c);
+    const std::string* f = is_required ? required(c) : row.field(c);
     if (!f || f->empty()) return std::nullopt;
     std::string error;
-    auto value = to_number(number_text(*f, delimiter), kNames[c], error);
+    auto value = row.number(c, error);
     if (!value) d.problems.push_back(error);
     return value;
   };
@@ -97,15 +63,15 @@ SensorDraft read_row(const std::vector<std::string>& fields, const ColumnIndex& 
     if (valid_utf8(*id)) d.sensor.id = *id;
     else d.problems.push_back("id is not valid UTF-8");
   }
-  if (const std::string* name = field(kName)) {  // optional; empty is "not given"
+  if (const std::string* name = row.field(kName)) {  // optional; empty is "not given"
     if (valid_utf8(*name)) d.sensor.name = *name;
     else d.problems.push_back("name is not valid UTF-8");
   }
-  if (at[kX] != kAbsent) {
+  if (table.has(kX)) {
     const auto x = number(kX, true), y = number(kY, true);
     if (x && y) d.xy = Point{*x, *y};
   }
-  if (at[kLon] != kAbsent) {
+  if (table.has(kLon)) {
     const auto lon = number(kLon, true), lat = number(kLat, true);
     if (lon && lat) d.lon_lat = LonLat{*lon, *lat};
   }
@@ -119,34 +85,20 @@ SensorDraft read_row(const std::vector<std::string>& fields, const ColumnIndex& 
 }  // namespace
 
 std::vector<SensorDraft> parse_sensors_csv(std::string_view text, const std::string& file) {
-  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // UTF-8 byte order mark
-  std::optional<ColumnIndex> columns;
+  CsvTable table(text, file, kColumns, "id,lon,lat,tx_power_dbm");
+  check_header(table);
   std::vector<SensorDraft> drafts;
-  CsvDelimiter delimiter = CsvDelimiter::kComma;
-  int line_number = 0;
-  for (std::size_t pos = 0; pos < text.size();) {
-    const std::size_t end = std::min(text.find('\n', pos), text.size());
-    const std::string_view line = trim(text.substr(pos, end - pos));
-    pos = end + 1;
-    ++line_number;
-    if (line.empty() || line.front() == '#') continue;
-    if (!columns) delimiter = detect_delimiter(line);
-    const CsvFields fields = split_csv_line(line, delimiter);
-    if (!columns) {
-      if (!fields.error.empty()) throw InputError(file, line_number, "header", fields.error);
-      columns = read_header(fields.values, file, line_number);
-      continue;
-    }
-    if (!fields.error.empty()) {
+  CsvRow row;
+  while (table.next(row)) {
+    if (!row.error.empty()) {
       SensorDraft& d = drafts.emplace_back();
-      d.line = line_number;
-      d.sensor.origin = "line " + std::to_string(line_number);
-      d.problems.push_back(fields.error);
+      d.line = row.line;
+      d.sensor.origin = "line " + std::to_string(row.line);
+      d.problems.push_back(row.error);
       continue;
     }
-    drafts.push_back(read_row(fields.values, *columns, line_number, delimiter));
+    drafts.push_back(read_row(table, row));
   }
-  if (!columns) throw InputError(file, 0, "", "no header line (expected a line like: id,lon,lat,tx_power_dbm)");
   return drafts;
 }
 

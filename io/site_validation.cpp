@@ -11,6 +11,7 @@
 #include <string_view>
 
 #include "core/large_buffer.h"
+#include "core/round_trip_numbers.h"
 #include "io/text_util.h"
 
 namespace covmap::io::detail {
@@ -27,12 +28,12 @@ bool site_values_valid(const Site& s) {
 
 void check_site_values(SiteDraft& draft) {
   const auto& s = draft.site;
-  if (!std::isfinite(s.x)) draft.problems.push_back("x must be finite (got " + format_number(s.x) + ")");
-  if (!std::isfinite(s.y)) draft.problems.push_back("y must be finite (got " + format_number(s.y) + ")");
+  if (!std::isfinite(s.x)) draft.problems.push_back("x must be finite (got " + round_trip_number(s.x) + ")");
+  if (!std::isfinite(s.y)) draft.problems.push_back("y must be finite (got " + round_trip_number(s.y) + ")");
   if (!std::isfinite(s.weight)) {
-    draft.problems.push_back("weight must be finite (got " + format_number(s.weight) + ")");
+    draft.problems.push_back("weight must be finite (got " + round_trip_number(s.weight) + ")");
   } else if (!(s.weight > 0)) {
-    draft.problems.push_back("weight must be positive (got " + format_number(s.weight) + ")");
+    draft.problems.push_back("weight must be positive (got " + round_trip_number(s.weight) + ")");
   }
 }
 
@@ -139,7 +140,7 @@ void check_unique_positions(std::vector<SiteDraft>& drafts) {
       drafts.size(), [&](std::size_t i) { return drafts[i].usable() ? &drafts[i].site : nullptr; },
       [&](std::size_t i, std::size_t first) {
         const auto& s = drafts[i].site;
-        drafts[i].problems.push_back("same position (" + format_number(s.x) + ", " + format_number(s.y) + ") as " +
+        drafts[i].problems.push_back("same position (" + round_trip_number(s.x) + ", " + round_trip_number(s.y) + ") as " +
                                      reference(drafts[first]));
       });
 }

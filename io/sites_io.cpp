@@ -58,7 +58,7 @@ void write_sites_json(const std::vector<Site>& sites, std::ostream& stream) {
       if (!detail::valid_json_text(*text)) throw std::invalid_argument("write_sites_json: site '" + s.id + "' has text that is not UTF-8");
     }
   }
-  // One site per line: readable, diffable, and still valid JSON; numbers as in json_number.h.
+  // One site per line: readable, diffable, and still valid JSON; numbers as in core/round_trip_numbers.h.
   detail::JsonOut out(stream);
   out.raw("{\"format\":\"covmap.sites/1\",\"sites\":[");
   for (std::size_t i = 0; i < sites.size(); ++i) {

@@ -1,8 +1,6 @@
 #include "io/text_util.h"
 
-#include <array>
 #include <cerrno>
-#include <charconv>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -14,13 +12,6 @@
 #include <nlohmann/json.hpp>
 
 namespace covmap::io::detail {
-
-std::string format_number(double value) {
-  // std::to_chars without a precision gives the shortest round-trip representation.
-  std::array<char, 32> buffer{};
-  const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-  return std::string(buffer.data(), result.ptr);
-}
 
 std::string quote_id(std::string_view id) {
   std::string out = "'";

@@ -8,9 +8,6 @@
 
 namespace covmap::io::detail {
 
-// Shortest text that reads back as the same double ("0.1", "-1", "1e+300", "nan", "inf").
-std::string format_number(double value);
-
 // A site id for messages: 'b'. Control characters are shown as \xNN so a message stays one line.
 std::string quote_id(std::string_view id);
 

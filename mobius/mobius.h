@@ -5,6 +5,19 @@
 // recognition code never distinguishes circles from lines (seed paper 5, §3.2 and §4.1). Matrices
 // are kept up to a complex factor; composition multiplies them. Points are Riemann-sphere points:
 // nullopt stands for ∞.
+//
+// Accepted: any coefficients. A transformation is invertible when ad - bc ≠ 0; that is the
+// caller's to ensure (inversion() of a real circle or of a line, and compositions of them, are):
+// a singular matrix is not detected and maps points to one point or to nothing meaningful.
+// inversion() takes a form with a real, non-zero radius (A ≠ 0 and |B|² > AC) or a line (A = 0,
+// B ≠ 0); a degenerate form gives a singular transformation.
+// Guaranteed: plain floating-point arithmetic, no tolerance and no normalization: the matrices
+// are not rescaled, so a long chain of compositions is the caller's to keep in range. apply(z)
+// sends ∞ to a/c and a point whose denominator c·z + d (z conjugated first for anti-Möbius maps)
+// is exactly zero to ∞ (nullopt). apply(circle) returns the image's form scaled by a positive real
+// factor, so the image of a circle's inside (the form's negative side) is the inside of the
+// image. after() and inverse() return matrices up to a complex factor.
+// Rejected: nothing; nothing throws. NaN or infinite coefficients propagate into the results.
 #pragma once
 
 #include <array>

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/extent.h"
+#include "core/point_in_polygon.h"
 #include "core/weighted_owner.h"
 #include "recognition/mwvd_check.h"
 #include "voronoi/arc_path.h"
@@ -149,12 +150,7 @@ Point point_of_face(const Diagram& d, const Face& face, const std::vector<vorono
   if (!face.bounded || ring.empty()) return longest;
   Point c{0, 0};
   for (const Point& q : ring) c.x += q.x / ring.size(), c.y += q.y / ring.size();
-  bool inside = false;
-  for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++)
-    if ((ring[i].y > c.y) != (ring[j].y > c.y) &&
-        c.x < (ring[j].x - ring[i].x) * (c.y - ring[i].y) / (ring[j].y - ring[i].y) + ring[i].x)
-      inside = !inside;
-  return inside ? c : longest;
+  return inside_ring(ring, c) ? c : longest;
 }
 
 }  // namespace

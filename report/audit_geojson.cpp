@@ -9,7 +9,7 @@
 #include "report/audit_geometry.h"
 #include "report/audit_json.h"
 #include "report/audit_report.h"
-#include "io/json_number.h"
+#include "core/round_trip_numbers.h"
 
 namespace covmap::report {
 namespace {
@@ -66,10 +66,10 @@ json vertex_position(Point p, const Positions& at) {
 
 // The diagram layer is written as text, feature by feature: a DOM of its vertices would cost
 // seconds and most of the report's memory on large maps. Same JSON as the DOM's, numbers in
-// the shortest round-trip form (io/json_number.h); a non-finite coordinate is null, as nlohmann
+// the shortest round-trip form (core/round_trip_numbers.h); a non-finite coordinate is null, as nlohmann
 // writes it.
 void append_coordinate(std::string& s, double v) {
-  if (std::isfinite(v)) io::append_json_number(s, v);
+  if (std::isfinite(v)) append_json_number(s, v);
   else s += "null";
 }
 

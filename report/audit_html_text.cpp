@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "io/text_util.h"
+#include "core/round_trip_numbers.h"
 
 namespace covmap::report::detail {
 namespace {
@@ -101,7 +101,7 @@ std::string fixed_number(double value, int decimals) {
 }
 
 std::string sort_key(const std::optional<double>& value) {
-  return value && std::isfinite(*value) ? io::detail::format_number(*value) : std::string();
+  return value && std::isfinite(*value) ? round_trip_number(*value) : std::string();
 }
 
 }  // namespace covmap::report::detail

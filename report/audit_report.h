@@ -1,4 +1,4 @@
-// covmap::io audit reports: the five files `covmap audit MAP -o OUTDIR/` writes from an
+// covmap::report audit reports: the five files `covmap audit MAP -o OUTDIR/` writes from an
 // AuditResult (audit/audit.h) and the map it audited (io/coverage_map.h). docs/FORMATS.md,
 // "Audit reports", documents every member and property.
 //

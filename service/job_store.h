@@ -8,6 +8,11 @@
 // requests) do not wait for a writer (a worker's progress), and busy_timeout lets other
 // connections' writes finish instead of failing at once (kJobStoreBusyTimeoutMs).
 //
+// Accepted: a database file whose folder exists and is writable: a missing or empty file (the
+// schema is created), or a covmap job store of this schema version. Jobs whose id is
+// is_valid_job_id, any status, progress in [0, 1], and texts of any bytes; ids to look up of any
+// text. Several JobStore objects and processes on one file.
+//
 // Guaranteed:
 // - Every method is one SQLite transaction: it happens completely or not at all. A process killed
 //   at any moment (SIGKILL, a crash) leaves a database that opens with every committed change and

@@ -6,22 +6,13 @@
 #include <string>
 
 #include "core/box.h"
+#include "core/point_in_polygon.h"
 #include "voronoi/arc_path.h"
 #include "voronoi/faces.h"
 #include "voronoi/tolerances.h"
 
 namespace covmap::voronoi {
 namespace {
-
-bool inside_polygon(const std::vector<Point>& poly, Point p) {
-  bool inside = false;
-  for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
-    if ((poly[i].y > p.y) != (poly[j].y > p.y) &&
-        p.x < (poly[j].x - poly[i].x) * (p.y - poly[i].y) / (poly[j].y - poly[i].y) + poly[i].x)
-      inside = !inside;
-  }
-  return inside;
-}
 
 // A point where an arc meets the boundary: its position along the boundary (edge + t), and the
 // sites on either side of the boundary just after it (counter-clockwise).
@@ -70,7 +61,7 @@ double snap_distance(const std::vector<Point>& polygon) {
 std::vector<int> copy_inside_nodes(const Diagram& d, const std::vector<Point>& polygon, Diagram& out) {
   std::vector<int> node_map(d.nodes.size(), kNone);
   for (std::size_t k = 0; k < d.nodes.size(); ++k)
-    if (inside_polygon(polygon, {d.nodes[k].x, d.nodes[k].y})) {
+    if (inside_ring(polygon, {d.nodes[k].x, d.nodes[k].y})) {
       node_map[k] = static_cast<int>(out.nodes.size());
       out.nodes.push_back(d.nodes[k]);
     }
@@ -107,7 +98,7 @@ void keep_if_inside(const Arc& arc, const ArcPathView& path, const std::vector<P
                     const std::vector<int>& node_map, Diagram& out) {
   const double mid = std::isfinite(path.s0) && std::isfinite(path.s1) ? 0.5 * (path.s0 + path.s1)
                      : std::isfinite(path.s0) ? path.s0 + 1 : std::isfinite(path.s1) ? path.s1 - 1 : 0;
-  if (!inside_polygon(polygon, path.at(mid))) return;
+  if (!inside_ring(polygon, path.at(mid))) return;
   Arc a = arc;
   a.from = arc.from == kNone ? kNone : node_map[arc.from];
   a.to = arc.to == kNone ? kNone : node_map[arc.to];
@@ -148,7 +139,7 @@ void keep_inside_pieces(const Arc& arc, const ArcPathView& path, const std::vect
     const double mid = std::isfinite(s0) && std::isfinite(s1) ? 0.5 * (s0 + s1)
                        : std::isfinite(s0)                    ? s0 + 1
                                                               : s1 - 1;
-    if (s1 - s0 <= 0 || !inside_polygon(boundary.polygon, path.at(mid))) continue;
+    if (s1 - s0 <= 0 || !inside_ring(boundary.polygon, path.at(mid))) continue;
     if (ends[k] == kNone || ends[k + 1] == kNone) continue;  // cannot happen inside a polygon
     Arc a = arc;
     a.from = ends[k];

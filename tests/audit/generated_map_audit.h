@@ -12,24 +12,11 @@
 #include "io/reported_sensors.h"
 #include "tools/mapgen/coverage_map_files.h"
 #include "tools/mapgen/coverage_map_generator.h"
+#include "tests/support/temp_dir.h"
 #include "tools/mapgen/site_layouts.h"
 
 namespace covmap::testing {
 
-namespace fs = std::filesystem;
-
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    std::random_device rd;
-    path = fs::temp_directory_path() / ("covmap-audit-test-" + std::to_string(rd()));
-    fs::create_directories(path);
-  }
-  ~TempDir() {
-    std::error_code ignored;
-    fs::remove_all(path, ignored);
-  }
-};
 
 struct AuditRun {
   mapgen::CoverageMap generated;
@@ -45,15 +32,15 @@ AuditRun generate_and_read(const mapgen::CoverageMapOptions& options, const Site
   AuditRun r;
   r.generated = mapgen::generate_coverage_map(sites, options);
   TempDir dir;
-  mapgen::write_coverage_map(r.generated, dir.path);
+  mapgen::write_coverage_map(r.generated, dir.path());
   io::CoverageMapOptions mo;
   mo.planar = options.frame == mapgen::OutputFrame::kPlanar;
-  r.map = io::read_coverage_map(dir.path / mapgen::kMapFileName, mo);
+  r.map = io::read_coverage_map(dir.path() / mapgen::kMapFileName, mo);
   io::ReportedSensorOptions so;
   so.alpha = alpha;
   so.planar = mo.planar;
   so.frame = r.map.frame ? &*r.map.frame : nullptr;
-  reported = io::read_reported_sensors(dir.path / mapgen::kSensorsFileName, so);
+  reported = io::read_reported_sensors(dir.path() / mapgen::kSensorsFileName, so);
   return r;
 }
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "audit/map_agreement.h"
+#include "core/point_in_polygon.h"
 
 namespace covmap::audit {
 namespace {
@@ -21,23 +22,6 @@ CoverageCell cell(std::vector<CellPolygon> polygons) {
   CoverageCell c;
   c.polygons = std::move(polygons);
   return c;
-}
-
-// Even–odd point in polygon by a horizontal ray, over all rings of all polygons of a cell.
-bool inside_even_odd(const Ring& ring, Point p) {
-  bool in = false;
-  for (std::size_t k = 0, m = ring.size() - 1; k < ring.size(); m = k++) {
-    const Point& a = ring[k];
-    const Point& b = ring[m];
-    if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y)) in = !in;
-  }
-  return in;
-}
-
-bool inside_polygon(const CellPolygon& poly, Point p) {
-  bool in = inside_even_odd(poly.outer, p);
-  for (const Ring& h : poly.holes) in = in != inside_even_odd(h, p);
-  return in;
 }
 
 // Brute force: every bin centre tested against every cell; a later cell overrides an earlier one.
@@ -102,15 +86,15 @@ TEST(MapAgreement, HolesOverlapsAndPiecesAsBruteForce) {
     for (int i = 0; i < g.nx; ++i) {
       const Point p{g.center_x(i), g.center_y(j)};
       const int l = r.labels[g.index(i, j)];
-      if (inside_even_odd(ring_with_hole.holes[0], p) && !inside_even_odd(plug.outer, p)) {
+      if (inside_ring(ring_with_hole.holes[0], p) && !inside_ring(plug.outer, p)) {
         ++in_hole;
         EXPECT_EQ(l, kNone);
       }
-      if (inside_even_odd(plug.outer, p)) {
+      if (inside_ring(plug.outer, p)) {
         ++plugged;
         EXPECT_EQ(l, 1);
       }
-      if (inside_even_odd(triangle.outer, p) && inside_even_odd(small.outer, p)) {
+      if (inside_ring(triangle.outer, p) && inside_ring(small.outer, p)) {
         ++overlap_to_later;
         EXPECT_EQ(l, 2);
       }

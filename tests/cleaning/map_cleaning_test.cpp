@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "cleaning/map_cleaning.h"
+#include "core/point_in_polygon.h"
 #include "voronoi/clip.h"
 #include "voronoi/engine.h"
 
@@ -90,12 +91,9 @@ long long twice_area(const std::vector<Corner>& ring) {
 
 // Even-odd containment of the point (x, y) (never on a grid line here: edge midpoints are).
 bool contains(const std::vector<Corner>& ring, double x, double y) {
-  bool inside = false;
-  for (std::size_t k = 0, l = ring.size() - 1; k < ring.size(); l = k++) {
-    const double xi = ring[k].i, yi = ring[k].j, xl = ring[l].i, yl = ring[l].j;
-    if ((yi > y) != (yl > y) && x < (xl - xi) * (y - yi) / (yl - yi) + xi) inside = !inside;
-  }
-  return inside;
+  std::vector<Point> points;
+  for (const Corner& c : ring) points.push_back({static_cast<double>(c.i), static_cast<double>(c.j)});
+  return inside_ring(points, {x, y});
 }
 
 // Every label's bins as polygons with holes: boundary edges with the label on their left, linked

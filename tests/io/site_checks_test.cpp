@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/round_trip_numbers.h"
 #include "diagram_samples.h"
 #include "io/fast_readers.h"
 #include "io/site_parsers.h"
@@ -149,8 +150,8 @@ TEST(SiteChecks, LargeListWithRepeatsFarApartMissesAndTheReferenceNamesEachPair)
   const auto e = input_error_from([&] { parse_sites(text, "s.json"); });
   ASSERT_EQ(e.problems.size(), 2u);
   EXPECT_EQ(format_problem(e.file, e.problems[0]),
-            "s.json: sites[60001] (site 'site-60001'): same position (" + detail::format_number(sites[31].x) + ", " +
-                detail::format_number(sites[31].y) + ") as site 'site-31' (sites[31])");
+            "s.json: sites[60001] (site 'site-60001'): same position (" + round_trip_number(sites[31].x) + ", " +
+                round_trip_number(sites[31].y) + ") as site 'site-31' (sites[31])");
   EXPECT_EQ(format_problem(e.file, e.problems[1]),
             "s.json: sites[99999] (site 'site-7'): duplicate id; first used by site 'site-7' (sites[7])");
 }

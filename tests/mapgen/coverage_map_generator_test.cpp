@@ -8,6 +8,7 @@
 #include <numeric>
 
 #include "tools/mapgen/coverage_map_json.h"
+#include "core/point_in_polygon.h"
 #include "io/polygon_check.h"
 #include "mapgen_test_util.h"
 
@@ -15,7 +16,6 @@ namespace covmap::mapgen {
 namespace {
 
 using testing::brute_force_owner;
-using testing::inside_polygon;
 using testing::random_test_sites;
 using testing::signed_area;
 
@@ -88,7 +88,7 @@ void check_exact_map(const CoverageMap& map) {
       int hits = 0, owner = kNone;
       for (const auto& f : map.features) {
         for (const auto& cell : f.cells) {
-          if (inside_polygon(cell.planar, centre)) {
+          if (inside_rings(cell.planar, centre)) {
             ++hits;
             owner = f.sensor;
           }

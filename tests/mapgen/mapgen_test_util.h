@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/diagram.h"
+#include "tests/support/temp_dir.h"
 
 namespace covmap::mapgen::testing {
 
@@ -42,27 +43,6 @@ inline double signed_area(const std::vector<Point>& ring) {
   double twice = 0.0;
   for (std::size_t k = 0; k + 1 < ring.size(); ++k) twice += ring[k].x * ring[k + 1].y - ring[k + 1].x * ring[k].y;
   return 0.5 * twice;
-}
-
-// Even-odd crossing test; p must not lie on the ring (bin centres never lie on bin edges).
-inline bool inside_ring(const std::vector<Point>& ring, Point p) {
-  bool inside = false;
-  for (std::size_t k = 0; k + 1 < ring.size(); ++k) {
-    const Point a = ring[k], b = ring[k + 1];
-    if ((a.y > p.y) != (b.y > p.y)) {
-      const double x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
-      if (x > p.x) inside = !inside;
-    }
-  }
-  return inside;
-}
-
-// Inside the outer ring (rings[0]) and outside every hole.
-inline bool inside_polygon(const std::vector<std::vector<Point>>& rings, Point p) {
-  if (rings.empty() || !inside_ring(rings[0], p)) return false;
-  for (std::size_t h = 1; h < rings.size(); ++h)
-    if (inside_ring(rings[h], p)) return false;
-  return true;
 }
 
 // Per label (>= 0), the number of 4-connected components, by an independent flood fill.
@@ -112,30 +92,7 @@ inline std::vector<Site> random_test_sites(int n, double size, double ratio, uns
   return sites;
 }
 
-class TempDir {
- public:
-  TempDir() {
-    std::random_device random;
-    path_ = std::filesystem::temp_directory_path() / ("covmap-mapgen-test-" + std::to_string(random()) + std::to_string(random()));
-    std::filesystem::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
-
-inline std::string read_text(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using covmap::testing::read_text;
+using covmap::testing::TempDir;
 
 }  // namespace covmap::mapgen::testing

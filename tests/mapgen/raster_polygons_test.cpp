@@ -4,6 +4,7 @@
 
 #include <random>
 
+#include "core/point_in_polygon.h"
 #include "io/polygon_check.h"
 #include "mapgen_test_util.h"
 
@@ -11,7 +12,6 @@ namespace covmap::mapgen {
 namespace {
 
 using testing::components_per_label;
-using testing::inside_polygon;
 using testing::signed_area;
 
 struct LabelRaster {
@@ -89,7 +89,7 @@ void check_polygons(const LabelRaster& r, bool simplify) {
       const Point centre{i + 0.5, j + 0.5};
       int hits = 0, hit_label = kNone;
       for (std::size_t p = 0; p < shapes.size(); ++p) {
-        if (inside_polygon(shapes[p], centre)) {
+        if (inside_rings(shapes[p], centre)) {
           ++hits;
           hit_label = polygons[p].label;
         }

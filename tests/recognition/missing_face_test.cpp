@@ -11,6 +11,7 @@
 #include <cmath>
 #include <random>
 
+#include "core/point_in_polygon.h"
 #include "recognition/recognize.h"
 #include "recognition_families.h"
 #include "voronoi/arc_path.h"
@@ -31,15 +32,6 @@ std::vector<Point> sampled_boundary(const Diagram& d, std::span<const HalfArc> c
     }
   }
   return poly;
-}
-
-bool inside(const std::vector<Point>& poly, Point q) {
-  bool in = false;
-  for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++)
-    if ((poly[i].y > q.y) != (poly[j].y > q.y) &&
-        q.x < (poly[j].x - poly[i].x) * (q.y - poly[i].y) / (poly[j].y - poly[i].y) + poly[i].x)
-      in = !in;
-  return in;
 }
 
 // Differences may lie this far outside the missing face's sampled boundary, relative to its extent:
@@ -65,7 +57,7 @@ double outside_region_of(const std::vector<Site>& sites, int k, Point p) {
 
 // 0 inside the sampled region, else the distance to its nearest sample point.
 double distance_to_region(const std::vector<Point>& poly, Point q) {
-  if (inside(poly, q)) return 0.0;
+  if (inside_ring(poly, q)) return 0.0;
   double best = INFINITY;
   for (const Point& p : poly) best = std::min(best, std::hypot(p.x - q.x, p.y - q.y));
   return best;
@@ -100,7 +92,7 @@ std::optional<Instance> without_face(const Diagram& d, const std::vector<Site>& 
   out.site = f.site;
   int centre = kNone;
   for (std::size_t v = 0; v < three.nodes.size(); ++v)
-    if (inside(out.f, {three.nodes[v].x, three.nodes[v].y})) centre = static_cast<int>(v);
+    if (inside_ring(out.f, {three.nodes[v].x, three.nodes[v].y})) centre = static_cast<int>(v);
   if (centre == kNone) return std::nullopt;
   Diagram g = d;
   g.sites.clear();

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <vector>
 
+#include "core/point_in_polygon.h"
 #include "report/svg_geometry.h"
 
 namespace covmap::report {
@@ -98,8 +99,8 @@ std::vector<std::string> face_paths(const std::string& svg) {
 }
 
 // Subpaths of M/L/Z path data as polygons (arc commands are not expected here).
-std::vector<std::vector<std::pair<double, double>>> polygons(const std::string& d) {
-  std::vector<std::vector<std::pair<double, double>>> out;
+std::vector<std::vector<Point>> polygons(const std::string& d) {
+  std::vector<std::vector<Point>> out;
   std::istringstream in(d);
   std::string command;
   while (in >> command) {
@@ -115,17 +116,7 @@ std::vector<std::vector<std::pair<double, double>>> polygons(const std::string& 
 }
 
 // Even-odd rule over all subpaths, as the SVG renders it.
-bool filled(const std::string& d, double px, double py) {
-  bool inside = false;
-  for (const auto& ring : polygons(d)) {
-    for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
-      const auto [xi, yi] = ring[i];
-      const auto [xj, yj] = ring[j];
-      if ((yi > py) != (yj > py) && px < (xj - xi) * (py - yi) / (yj - yi) + xi) inside = !inside;
-    }
-  }
-  return inside;
-}
+bool filled(const std::string& d, double px, double py) { return inside_rings(polygons(d), {px, py}); }
 
 // The path data printer puts a space after each command letter; polygons() relies on it.
 std::string spaced(std::string d) {

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <fstream>
-#include <random>
 
 #include "service/api_error.h"
 #include "service/audit_process.h"
@@ -13,23 +12,17 @@
 #include "service/audit_request.h"
 #include "service/http_server.h"
 #include "service/job_files.h"
+#include "tests/support/temp_dir.h"
 
 namespace covmap::service {
 namespace {
 
 using Json = nlohmann::json;
 
-std::filesystem::path fresh_dir() {
-  std::random_device random;
-  auto dir = std::filesystem::temp_directory_path() / ("covmap-service-test-" + std::to_string(random()));
-  std::filesystem::create_directories(dir);
-  return dir;
-}
-
 TEST(OpenApi, DocumentListsExactlyTheRoutesTheServerAdds) {
-  const auto dir = fresh_dir();
+  covmap::testing::TempDir dir;
   ServeOptions o;
-  o.data_dir = dir;
+  o.data_dir = dir.path();
   o.port = 0;
   o.workers = 1;
   std::vector<Route> served;
@@ -37,7 +30,6 @@ TEST(OpenApi, DocumentListsExactlyTheRoutesTheServerAdds) {
     HttpServer server(o);
     served = server.routes();
   }
-  std::filesystem::remove_all(dir);
   std::ifstream in(std::string(COVMAP_SOURCE_DIR) + "/docs/openapi.json");
   const Json doc = Json::parse(in);
   std::vector<Route> documented;

@@ -2,35 +2,19 @@
 #pragma once
 
 #include <gtest/gtest.h>
-#include <stdlib.h>
 
 #include <filesystem>
 #include <string>
 
 #include "service/job.h"
+#include "tests/support/temp_dir.h"
 
 namespace covmap::service::testing {
 
-// A new folder (mkdtemp) under the system temp dir, removed with its content at the end.
-class ScratchFolder {
+// A scratch folder (tests/support/temp_dir.h) holding a job database.
+class ScratchFolder : public covmap::testing::TempDir {
  public:
-  ScratchFolder() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "covmap-service-test-XXXXXX").string();
-    if (::mkdtemp(pattern.data()) == nullptr) ADD_FAILURE() << "mkdtemp failed for " << pattern;
-    path_ = pattern;
-  }
-  ~ScratchFolder() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-  ScratchFolder(const ScratchFolder&) = delete;
-  ScratchFolder& operator=(const ScratchFolder&) = delete;
-
-  std::filesystem::path database() const { return path_ / "jobs.sqlite"; }
-  const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
+  std::filesystem::path database() const { return path() / "jobs.sqlite"; }
 };
 
 // A queued job as the server submits it, created at `created_ms`.

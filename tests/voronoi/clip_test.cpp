@@ -8,6 +8,7 @@
 
 #include "site_families.h"
 #include "check/check.h"
+#include "core/point_in_polygon.h"
 #include "voronoi/clip.h"
 #include "voronoi/engine.h"
 #include "voronoi/faces.h"
@@ -17,15 +18,6 @@ namespace covmap::voronoi {
 namespace {
 
 using testing::Family;
-
-bool in_poly(const std::vector<Point>& poly, Point p) {
-  bool inside = false;
-  for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++)
-    if ((poly[i].y > p.y) != (poly[j].y > p.y) &&
-        p.x < (poly[j].x - poly[i].x) * (p.y - poly[i].y) / (poly[j].y - poly[i].y) + poly[i].x)
-      inside = !inside;
-  return inside;
-}
 
 const std::vector<Point> kRectangle = {{0.1, 0.15}, {0.85, 0.15}, {0.85, 0.9}, {0.1, 0.9}};
 // Non-convex (an L with a notch), counter-clockwise.
@@ -61,7 +53,7 @@ TEST_P(ClipChecked, CheckerAndOwnershipAgree) {
       std::uniform_real_distribution<double> u(0.0, 1.0);
       for (int q = 0; q < 100; ++q) {
         const Point p{u(rng), u(rng)};
-        if (!in_poly(*polygon, p)) continue;
+        if (!inside_ring(*polygon, p)) continue;
         int owner = 0;
         double best = 1e300;
         for (std::size_t s = 0; s < sites.size(); ++s) {

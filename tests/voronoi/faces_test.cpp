@@ -10,6 +10,7 @@
 #include <random>
 
 #include "canonical_faces.h"
+#include "core/point_in_polygon.h"
 #include "site_families.h"
 #include "voronoi/engine.h"
 #include "voronoi/faces.h"
@@ -87,16 +88,6 @@ std::vector<Point> flatten(const Diagram& d, std::span<const HalfArc> cycle, dou
   return poly;
 }
 
-bool in_polygon(const std::vector<Point>& poly, Point p) {
-  bool inside = false;
-  for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
-    if ((poly[i].y > p.y) != (poly[j].y > p.y) &&
-        p.x < (poly[j].x - poly[i].x) * (p.y - poly[i].y) / (poly[j].y - poly[i].y) + poly[i].x)
-      inside = !inside;
-  }
-  return inside;
-}
-
 // Face membership: inside the outer boundary (if any) and outside every hole. An unbounded face's
 // first boundary is outer when it runs through infinity; if its first cycle is closed and
 // clockwise it is a hole. The polygon's orientation tells them apart.
@@ -108,7 +99,7 @@ bool in_face(const Diagram& d, const Face& f, Point p, double far) {
     for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++)
       area += (poly[j].x * poly[i].y - poly[i].x * poly[j].y);
     const bool outer = area > 0;
-    const bool in = in_polygon(poly, p);
+    const bool in = inside_ring(poly, p);
     if (outer && !in) inside = false;
     if (!outer && in) inside = false;
   }

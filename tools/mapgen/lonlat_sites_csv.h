@@ -2,15 +2,15 @@
 //
 // Accepted: a header naming id, lon, lat and weight once each, in any order and any case (extra
 // columns such as population are ignored) and optionally name (the town's name, kept in
-// LonLatSite::name; empty when absent), then one sensor per line; fields separated by
-// commas and trimmed; blank lines and lines starting with # skipped. This is what
-// `node tools/mapgen/cities_sites.js --lonlat` writes. Quoted fields are not supported (the
-// script strips commas and quotes from names).
+// LonLatSite::name; empty when absent), then one sensor per line; lines, delimiters (comma,
+// semicolon, tab or '|'), quoting and decimal commas as io/csv_table.h reads every covmap CSV.
+// This is what `node tools/mapgen/cities_sites.js --lonlat` writes.
 // Guaranteed on success: at least one sensor; lon in [-180, 180], lat in (-90, 90), weight finite
 // and > 0; ids non-empty and unique; no two sensors at the same lon/lat. File order kept.
 // Rejected with covmap::io::InputError: unreadable file, missing or repeated header column (name
-// included), and per-line problems (missing or non-numeric field, value out of range, duplicate id
-// or position), all collected and reported together, each naming the line and the sensor id.
+// included), and per-line problems (a line that cannot be split, missing, empty or non-numeric
+// field, value out of range, duplicate id or position), all collected and reported together, each
+// naming the line and the sensor id.
 #pragma once
 
 #include <filesystem>

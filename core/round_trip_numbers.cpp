@@ -1,10 +1,18 @@
-#include "io/json_number.h"
+#include "core/round_trip_numbers.h"
 
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <stdexcept>
 
-namespace covmap::io {
+namespace covmap {
+
+std::string round_trip_number(double value) {
+  // std::to_chars without a precision gives the shortest round-trip representation.
+  std::array<char, 32> buffer{};
+  const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+  return std::string(buffer.data(), result.ptr);
+}
 
 char* write_json_number(double value, char* out) {
   if (!std::isfinite(value)) throw std::invalid_argument("write_json_number: JSON has no NaN or infinity");
@@ -26,4 +34,4 @@ void append_json_number(std::string& out, double value) {
   out.append(buffer, write_json_number(value, buffer));
 }
 
-}  // namespace covmap::io
+}  // namespace covmap

@@ -1,7 +1,7 @@
-// io/json_number.h: every token is a JSON float token that nlohmann and strtod (two readers
+// core/round_trip_numbers.h: every JSON token is a JSON float token that nlohmann and strtod (two readers
 // independent of std::to_chars) read back to the same bits, and it is as short as the shortest
 // round-trip text printf's %.Ng gives (the classic search over N).
-#include "io/json_number.h"
+#include "core/round_trip_numbers.h"
 
 #include <gtest/gtest.h>
 
@@ -16,7 +16,7 @@
 #include <regex>
 #include <stdexcept>
 
-namespace covmap::io {
+namespace covmap {
 namespace {
 
 bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
@@ -115,4 +115,4 @@ TEST(JsonNumber, NonFiniteIsAPreconditionViolation) {
 }
 
 }  // namespace
-}  // namespace covmap::io
+}  // namespace covmap
