@@ -6,7 +6,6 @@
 
 #include <filesystem>
 #include <fstream>
-#include <random>
 #include <set>
 
 #include "io/input_error.h"
@@ -15,6 +14,7 @@
 #include "tools/mapgen/coverage_map_files.h"
 #include "tools/mapgen/coverage_map_generator.h"
 #include "tools/mapgen/site_layouts.h"
+#include "tests/support/temp_dir.h"
 
 namespace covmap::job {
 namespace {
@@ -22,17 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
-struct Folder {
-  fs::path path;
-  Folder() {
-    path = fs::temp_directory_path() / ("covmap-job-test-" + std::to_string(std::random_device{}()));
-    fs::create_directories(path);
-  }
-  ~Folder() {
-    std::error_code ignored;
-    fs::remove_all(path, ignored);
-  }
-};
+using Folder = testing::TempDir;
 
 // A planar map of 12 sensors with gross errors, written as covmap-make-map writes it.
 mapgen::CoverageMap write_map(const fs::path& dir, mapgen::OutputFrame frame = mapgen::OutputFrame::kPlanar) {
@@ -70,20 +60,20 @@ Json read_json(const fs::path& file) {
 
 TEST(AuditJob, ResultAgreesWithTheReportsItWrote) {
   Folder dir;
-  write_map(dir.path);
+  write_map(dir.path());
   std::vector<std::string> said;
   AuditJobHooks hooks;
   hooks.progress = [&](const std::string& what) { said.push_back(what); };
-  const AuditedMap audited = run_audit_job(planar_request(dir.path), hooks);
+  const AuditedMap audited = run_audit_job(planar_request(dir.path()), hooks);
   // Every report of the format, and nothing else but covmap's marker.
   std::set<std::string> files;
-  for (const auto& e : fs::directory_iterator(dir.path / "out")) files.insert(e.path().filename().string());
+  for (const auto& e : fs::directory_iterator(dir.path() / "out")) files.insert(e.path().filename().string());
   for (const std::string& name : report::audit_report_file_names(report::GisFormat::kGeoJson))
     EXPECT_TRUE(files.count(name)) << name;
   // The counts returned are report.json's, and they account for every sensor of the truth file.
-  const Json report = read_json(dir.path / "out" / "report.json");
+  const Json report = read_json(dir.path() / "out" / "report.json");
   EXPECT_EQ(Json::parse(report::verdict_counts_json(audited.counts)), report["summary"]);
-  const Json truth = read_json(dir.path / mapgen::kTruthFileName);
+  const Json truth = read_json(dir.path() / mapgen::kTruthFileName);
   EXPECT_EQ(audited.counts.sensors, report["sensors"].size());
   EXPECT_GE(audited.counts.sensors, truth["sensors"].size());
   EXPECT_FALSE(said.empty());
@@ -108,27 +98,27 @@ AuditFailure failure_of(const AuditRequest& r) {
 
 TEST(AuditJob, FailuresAreTypedAndNameTheirInput) {
   Folder dir;
-  write_map(dir.path);
-  AuditRequest r = planar_request(dir.path);
+  write_map(dir.path());
+  AuditRequest r = planar_request(dir.path());
   // The validator speaks before anything is read or written.
   AuditRequest bad = r;
   bad.settings.alpha = 0;
-  bad.inputs.map = dir.path / "missing.geojson";
+  bad.inputs.map = dir.path() / "missing.geojson";
   AuditFailure f = failure_of(bad);
   EXPECT_EQ(f.kind, FailureKind::kBadInput);
   EXPECT_EQ(f.message, "alpha: must be a positive number (got '0')");
   EXPECT_FALSE(fs::exists(r.outputs.folder));
   // A map that is not there.
   bad = r;
-  bad.inputs.map = dir.path / "missing.geojson";
+  bad.inputs.map = dir.path() / "missing.geojson";
   f = failure_of(bad);
   EXPECT_EQ(f.kind, FailureKind::kBadInput);
   EXPECT_EQ(f.input, AuditInputKind::kMap);
   EXPECT_NE(f.message.find("missing.geojson"), std::string::npos);
   // Sensors that are not sensors.
-  std::ofstream(dir.path / "broken.csv") << "id,x,y,power\na,1,2,not-a-number\n";
+  std::ofstream(dir.path() / "broken.csv") << "id,x,y,power\na,1,2,not-a-number\n";
   bad = r;
-  bad.inputs.sensors = dir.path / "broken.csv";
+  bad.inputs.sensors = dir.path() / "broken.csv";
   f = failure_of(bad);
   EXPECT_EQ(f.kind, FailureKind::kBadInput);
   EXPECT_EQ(f.input, AuditInputKind::kSensors);
@@ -148,8 +138,8 @@ TEST(AuditJob, FailuresAreTypedAndNameTheirInput) {
 
 TEST(AuditJob, ImplausibleInputStopsTheJobUnlessForced) {
   Folder dir;
-  write_map(dir.path, mapgen::OutputFrame::kLonLat);
-  AuditRequest r = planar_request(dir.path);  // degrees read as metres: the map looks like lon/lat
+  write_map(dir.path(), mapgen::OutputFrame::kLonLat);
+  AuditRequest r = planar_request(dir.path());  // degrees read as metres: the map looks like lon/lat
   const AuditInputsRead in = read_audit_inputs(r);
   ASSERT_FALSE(in.implausible.empty());
   EXPECT_EQ(in.implausible.front().input, AuditInputKind::kMap);
