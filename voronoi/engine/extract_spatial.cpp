@@ -629,7 +629,9 @@ class SpatialExtractor {
       return st.link;
     };
     const std::size_t first = st.arcs.size();
-    emit_arcs(tokens, st.scratch, vertex_site_[vi], vertex_site_[vj], raw(vi), raw(vj), st.arcs, [&] {
+    const RawPoint pi = raw(vi), pj = raw(vj);
+    const WalkedFacet facet{.tokens = tokens, .si = vertex_site_[vi], .sj = vertex_site_[vj], .pi = pi, .pj = pj};
+    emit_arcs(facet, st.scratch, st.arcs, [&] {
       if (raw(vi).z() == raw(vj).z()) return false;  // U would show
       return circle_centre_in_facet(raw(vi), raw(vj), link());
     });
