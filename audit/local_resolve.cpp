@@ -414,11 +414,10 @@ void solve_in_waves(const RefinementSetup& setup, const MapCells& cells, const M
 
 }  // namespace
 
-void resolve_misplaced(const RefinementSetup& setup, const SiteEstimates& estimates, const MapCells& cells,
-                       const MapRaster& raster, const ReportedOf& reported_of, fitting::RefineResult& refined,
-                       std::vector<std::string>& messages) {
+Messages resolve_misplaced(const RefinementSetup& setup, const SiteEstimates& estimates, const MapCells& cells,
+                           const MapRaster& raster, const ReportedOf& reported_of, fitting::RefineResult& refined) {
   const std::size_t n = setup.n;
-  if (n < 2 || refined.sites.size() != n) return;
+  if (n < 2 || refined.sites.size() != n) return {};
   const Adjacency adj = adjacency(setup);
   std::vector<Site>& sites = refined.sites;
   std::vector<Suspicion> suspect(n, Suspicion::kNone);
@@ -429,9 +428,8 @@ void resolve_misplaced(const RefinementSetup& setup, const SiteEstimates& estima
   // (a 100-town map of terrain shadowing: 87 suspects, 39 s).
   const std::size_t suspects = n - static_cast<std::size_t>(std::count(suspect.begin(), suspect.end(), Suspicion::kNone));
   if (static_cast<double>(suspects) > tolerance::kLocalMaxSuspectShare * static_cast<double>(n)) {
-    messages.push_back(std::to_string(suspects) + " of " + std::to_string(n) +
-                       " sensors looked stuck in local minima: too many for local causes; not solved again locally");
-    return;
+    return {std::to_string(suspects) + " of " + std::to_string(n) +
+            " sensors looked stuck in local minima: too many for local causes; not solved again locally"};
   }
   int resolved = 0, moved = 0;
   std::vector<std::size_t> order;
@@ -455,12 +453,12 @@ void resolve_misplaced(const RefinementSetup& setup, const SiteEstimates& estima
     moved += which > 0;
   };
   solve_in_waves(setup, cells, raster, adj, refined, std::move(order), steps);
-  if (resolved)
-    messages.push_back(std::to_string(resolved) +
-                       " sensor(s) outside their own cell, with a weight far from their neighbours', merged with a "
-                       "neighbour, hosting an island or with a poorly fitted boundary were solved again with their "
-                       "neighbourhoods from several starts; " +
-                       std::to_string(moved) + " moved to a lower minimum");
+  if (!resolved) return {};
+  return {std::to_string(resolved) +
+          " sensor(s) outside their own cell, with a weight far from their neighbours', merged with a "
+          "neighbour, hosting an island or with a poorly fitted boundary were solved again with their "
+          "neighbourhoods from several starts; " +
+          std::to_string(moved) + " moved to a lower minimum"};
 }
 
 }  // namespace covmap::audit::stages
