@@ -244,13 +244,23 @@ bool better(const LocalResult& a, const LocalResult& b) {
   return a.cost < b.cost;
 }
 
+// Where the starts of a re-solve come from: the map's cells, the tolerant estimates, the reports.
+struct StartSources {
+  const SiteEstimates& estimates;
+  const MapCells& cells;
+  const MapRaster& raster;
+  const ReportedOf& reported_of;
+};
+
 // The candidate positions of sensor i: its cell's centroid, its tolerant estimate (inside its own
 // cell), its reported position; one within kLocalSameStartBins of the current site or of an earlier
 // candidate would repeat that start's descent and is left out.
-std::vector<Point> candidate_positions(const RefinementSetup& setup, const SiteEstimates& estimates,
-                                       const MapCells& cells, const MapRaster& raster, const ReportedOf& reported_of,
-                                       const Site& current, std::size_t i) {
-  std::vector<Point> all{cells.centroids[i]};
+std::vector<Point> candidate_positions(const RefinementSetup& setup, const StartSources& from, const Site& current,
+                                       std::size_t i) {
+  const SiteEstimates& estimates = from.estimates;
+  const MapRaster& raster = from.raster;
+  const ReportedOf& reported_of = from.reported_of;
+  std::vector<Point> all{from.cells.centroids[i]};
   const Site& e = estimates.sites[i];
   if (estimates.how[i] != EstimateSource::kCentroid && raster.label_at(e.x, e.y) == static_cast<int>(i))
     all.push_back({e.x, e.y});
@@ -267,15 +277,15 @@ std::vector<Point> candidate_positions(const RefinementSetup& setup, const SiteE
 // The starts of a neighbourhood (its sites in nb.sensors' order): the current solution; sensor i
 // (first) at each candidate position; every free sensor at its cell's centroid. At a new position a
 // sensor's weight is the one its boundaries imply (two sweeps over the free sensors for the last).
-std::vector<std::vector<Site>> local_starts(const RefinementSetup& setup, const SiteEstimates& estimates,
-                                            const MapCells& cells, const MapRaster& raster,
-                                            const ReportedOf& reported_of, const Adjacency& adj,
-                                            const std::vector<Site>& sites, const Neighbourhood& nb) {
+std::vector<std::vector<Site>> local_starts(const RefinementSetup& setup, const StartSources& from,
+                                            const Adjacency& adj, const std::vector<Site>& sites,
+                                            const Neighbourhood& nb) {
+  const MapCells& cells = from.cells;
   std::vector<Site> current;
   for (int j : nb.sensors) current.push_back(sites[j]);
   std::vector<std::vector<Site>> starts{current};
   const std::size_t i = static_cast<std::size_t>(nb.sensors[0]);
-  for (Point p : candidate_positions(setup, estimates, cells, raster, reported_of, sites[i], i)) {
+  for (Point p : candidate_positions(setup, from, sites[i], i)) {
     starts.push_back(current);
     starts.back()[0] = {sites[i].id, p.x, p.y, std::exp(boundary_log_weight(setup, sites, adj.samples[i], i, p))};
   }
@@ -437,9 +447,8 @@ Messages resolve_misplaced(const RefinementSetup& setup, const SiteEstimates& es
     if (suspect[i] != Suspicion::kNone) order.push_back(i);
   WaveSteps steps;
   steps.still_suspect = [&](std::size_t i) { return suspect[i] != Suspicion::kNone; };
-  steps.starts_of = [&](const Neighbourhood& nb) {
-    return local_starts(setup, estimates, cells, raster, reported_of, adj, sites, nb);
-  };
+  const StartSources from{.estimates = estimates, .cells = cells, .raster = raster, .reported_of = reported_of};
+  steps.starts_of = [&](const Neighbourhood& nb) { return local_starts(setup, from, adj, sites, nb); };
   steps.take = [&](std::size_t i, const Neighbourhood& nb, LocalResult& best, int which) {
     ++resolved;
     if (best.sites.empty() || !best.admissible) return;  // nothing better than a degenerate minimum

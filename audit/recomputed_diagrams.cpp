@@ -109,11 +109,19 @@ std::vector<Site> reported_sites(const MapCells& cells, const std::vector<Site>&
   return rs;
 }
 
-Recomputed recompute(const MapRaster& raster, const cleaning::CleanedMap& cleaned, const std::vector<Site>& sites,
-                     int count, std::optional<double> reach, const std::vector<Point>& frame, const Box& box,
-                     const char* what) {
-  Recomputed r = recomputed_diagram(sites, frame, box, what);
-  std::tie(r.agreement, r.iou) = agreement_of(raster, cleaned, sites, count, reach);
+// What both sides are drawn in and compared with: the map, its frame and the refinement's reach.
+struct Comparison {
+  const MapRaster& raster;
+  const cleaning::CleanedMap& cleaned;
+  const std::vector<Point>& frame;
+  const Box& box;
+  std::optional<double> reach;
+};
+
+// The side of `sites` (the first `count` of them compared by sensor), named `what` in messages.
+Recomputed recompute(const Comparison& with, const std::vector<Site>& sites, int count, const char* what) {
+  Recomputed r = recomputed_diagram(sites, with.frame, with.box, what);
+  std::tie(r.agreement, r.iou) = agreement_of(with.raster, with.cleaned, sites, count, with.reach);
   return r;
 }
 
@@ -132,15 +140,15 @@ void recomputed_diagrams(const VerificationInputs& in, AuditResult& out) {
   const std::vector<Site>& refined_sites = refined.sites;
   const std::vector<Site> rs =
       reported.empty() ? std::vector<Site>{} : reported_sites(cells, refined_sites, in.reported_of, reported, in.scale, options);
+  const Comparison with{.raster = raster, .cleaned = cleaned, .frame = frame, .box = box, .reach = refined.range};
   // The two sides are independent: the reported one on a second thread when there are threads to
   // spare. Each keeps its own messages, added in a fixed order.
   std::future<Recomputed> reported_side;
   if (!reported.empty())
     reported_side = std::async(options.threads > 1 ? std::launch::async : std::launch::deferred, recompute,
-                               std::cref(raster), std::cref(cleaned), std::cref(rs), static_cast<int>(rs.size()),
-                               refined.range, std::cref(frame), std::cref(box), "reported sensors");
+                               std::cref(with), std::cref(rs), static_cast<int>(rs.size()), "reported sensors");
   // The raster of the map (made before the refinement): its own bins where it has them, at most ~4·10⁶.
-  Recomputed mine = recompute(raster, cleaned, refined_sites, static_cast<int>(n), refined.range, frame, box, "refined sensors");
+  Recomputed mine = recompute(with, refined_sites, static_cast<int>(n), "refined sensors");
   out.refined_diagram = std::move(mine.diagram);
   out.refined_agreement = mine.agreement;
   append(out.messages, mine.messages);
