@@ -208,8 +208,9 @@ RefineResult refine_sites(std::span<const Site> initial, std::span<const Boundar
   if (!samples.empty()) summary.rms_residual = std::sqrt(sum_squares / samples.size());
 
   if (options.compute_covariance && !samples.empty()) {
-    detail::CovarianceOutcome covariance =
-        detail::site_covariance(blocks, &log_range, layout, samples, priors, loss.get(), r_sigma, options);
+    const detail::SolvedProblem solution{
+        .layout = layout, .samples = samples, .priors = priors, .loss = loss.get(), .residuals = r_sigma};
+    detail::CovarianceOutcome covariance = detail::site_covariance(blocks, &log_range, solution, options);
     result.range_sigma = covariance.log_range_sigma;  // of log R: relative, scaled below
     result.uncertainty = std::move(covariance.uncertainty);
     summary.noise_variance_factor = covariance.variance_factor;
