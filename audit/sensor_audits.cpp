@@ -234,9 +234,15 @@ std::vector<SensorAudit> sensor_audits(const VerificationInputs& in) {
   const MapCells& cells = in.cells;
   const AuditOptions& options = in.options;
   std::vector<SensorAudit> sensors;
-  const AuditContext context{in.cleaned, refined, setup,          in.scale,
-                             options,    in.raster, cells,        cell_windows(in.raster, setup.n),
-                             chi2_quantile_two_dof(options.inconsistency_chi2)};
+  const AuditContext context{.cleaned = in.cleaned,
+                             .refined = refined,
+                             .setup = setup,
+                             .scale = in.scale,
+                             .options = options,
+                             .raster = in.raster,
+                             .cells = cells,
+                             .windows = cell_windows(in.raster, setup.n),
+                             .chi2_two_dof = chi2_quantile_two_dof(options.inconsistency_chi2)};
   const std::size_t n = setup.n;
   const std::vector<fitting::LocalUncertainty> local =
       fitting::local_uncertainty(refined.sites, setup.samples, setup.options.loss_scale, refined.range);
