@@ -177,7 +177,8 @@ inline constexpr std::array<Termination, 8> kTerminations = {
     Termination::kNotRun,      Termination::kConvergence, Termination::kNoConvergence, Termination::kFailure,
     Termination::kUserSuccess, Termination::kUserFailure, Termination::kNoSamples,     Termination::kSettled};
 
-// Ceres' names and "NO_SAMPLES", "SETTLED"; "" for kNotRun, as a summary that never ran has always read.
+// Ceres' names, "NO_SAMPLES" and "SETTLED"; "" for kNotRun, so that a summary that never ran reads
+// as it always has in reports.
 std::string to_string(Termination termination);
 // Parses to_string's names (exactly); false, *termination untouched, for anything else.
 bool from_string(std::string_view name, Termination* termination);
