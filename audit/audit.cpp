@@ -124,7 +124,7 @@ AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSen
   apply_report_fit(setup.samples, cells.area, options, out.model_fit, out.sensors);
 
   // 6. Recompute the diagrams and compare them with the map on a raster.
-  recomputed_diagrams(verification, out);
+  append(out.messages, recomputed_diagrams(verification, out));
   timer.lap("recomputed diagrams and comparison");
   progress("done", 1.0);
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

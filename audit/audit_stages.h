@@ -168,8 +168,8 @@ std::vector<SensorAudit> sensor_audits(const VerificationInputs& in);
 
 // ---- Recomputed diagrams and agreement (recomputed_diagrams.cpp) ----
 
-// Sets out.refined_diagram, out.reported_diagram and their agreements with the map, each sensor's
-// iou_refined and iou_reported, and appends what went wrong drawing them to out.messages.
-void recomputed_diagrams(const VerificationInputs& in, AuditResult& out);
+// Sets out.refined_diagram, out.reported_diagram and their agreements with the map, and each
+// sensor's iou_refined and iou_reported; returns what went wrong drawing them.
+Messages recomputed_diagrams(const VerificationInputs& in, AuditResult& out);
 
 }  // namespace covmap::audit::stages

@@ -127,7 +127,7 @@ Recomputed recompute(const Comparison& with, const std::vector<Site>& sites, int
 
 }  // namespace
 
-void recomputed_diagrams(const VerificationInputs& in, AuditResult& out) {
+Messages recomputed_diagrams(const VerificationInputs& in, AuditResult& out) {
   const cleaning::CleanedMap& cleaned = in.cleaned;
   const MapCells& cells = in.cells;
   const MapRaster& raster = in.raster;
@@ -151,13 +151,13 @@ void recomputed_diagrams(const VerificationInputs& in, AuditResult& out) {
   Recomputed mine = recompute(with, refined_sites, static_cast<int>(n), "refined sensors");
   out.refined_diagram = std::move(mine.diagram);
   out.refined_agreement = mine.agreement;
-  append(out.messages, mine.messages);
+  Messages messages = std::move(mine.messages);
   for (std::size_t i = 0; i < n; ++i)
     if (std::isfinite(mine.iou[i])) out.sensors[i].iou_refined = mine.iou[i];
-  if (reported.empty()) return;
+  if (reported.empty()) return messages;
   Recomputed theirs = reported_side.get();
   out.reported_diagram = std::move(theirs.diagram);
-  append(out.messages, theirs.messages);
+  append(messages, theirs.messages);
   DiagramAgreement& d = theirs.agreement;
   // Names of appeared reported-only sensors.
   for (auto& name : d.appeared) {
@@ -167,6 +167,7 @@ void recomputed_diagrams(const VerificationInputs& in, AuditResult& out) {
   out.reported_agreement = d;
   for (std::size_t i = 0; i < n; ++i)
     if (std::isfinite(theirs.iou[i])) out.sensors[i].iou_reported = theirs.iou[i];
+  return messages;
 }
 
 }  // namespace covmap::audit::stages
