@@ -173,7 +173,7 @@ enum class Termination {
 };
 
 // Every Termination, in declaration order.
-inline constexpr std::array<Termination, 8> kTerminations = {
+inline constexpr std::array<Termination, 8> kAllTerminations = {
     Termination::kNotRun,      Termination::kConvergence, Termination::kNoConvergence, Termination::kFailure,
     Termination::kUserSuccess, Termination::kUserFailure, Termination::kNoSamples,     Termination::kSettled};
 

@@ -49,7 +49,7 @@ std::string to_string(Termination termination) {
 }
 
 bool from_string(std::string_view name, Termination* termination) {
-  for (Termination candidate : kTerminations) {
+  for (Termination candidate : kAllTerminations) {
     if (name == to_string(candidate)) {
       *termination = candidate;
       return true;

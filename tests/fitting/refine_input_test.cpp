@@ -96,13 +96,13 @@ TEST(RefineInput, NamesRoundTrip) {
 
 TEST(RefineInput, TerminationNamesRoundTrip) {
   std::set<std::string> names;
-  for (Termination termination : kTerminations) {
+  for (Termination termination : kAllTerminations) {
     Termination parsed = termination == Termination::kSettled ? Termination::kNotRun : Termination::kSettled;
     ASSERT_TRUE(from_string(to_string(termination), &parsed)) << to_string(termination);
     EXPECT_EQ(parsed, termination);
     names.insert(to_string(termination));
   }
-  EXPECT_EQ(names.size(), kTerminations.size());
+  EXPECT_EQ(names.size(), kAllTerminations.size());
   // Reports carry Ceres' own names.
   for (ceres::TerminationType type :
        {ceres::CONVERGENCE, ceres::NO_CONVERGENCE, ceres::FAILURE, ceres::USER_SUCCESS, ceres::USER_FAILURE}) {
