@@ -85,7 +85,8 @@ AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSen
   const SiteEstimates estimates = estimate_sites(cleaned, cells.centroids, options.threads);
   const ReportedOf reported_of = reported_in_map(reported, cells);
   const MapRaster raster = map_raster(map, cells, out.bin_size_m);
-  const std::vector<Site> start = starting_sites(estimates, cells, raster, reported_of, out.messages);
+  const StartingSites start = starting_sites(estimates, cells, raster, reported_of);
+  append(out.messages, start.messages);
 
   // 3. Refinement on boundary samples (one per bin along each shared boundary), from several starts.
   progress("refinement", 0.3);
@@ -100,9 +101,11 @@ AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSen
   out.boundary_samples = setup.samples.size();
   StageTimer timer(t0, out.timings);
   timer.lap("cleaning and starting values");
-  fitting::RefineResult refined = multi_start_refinement(setup, estimates, start, cells, raster, reported_of,
-                                                         out.messages, [&](const std::string& part) { timer.lap(part); });
-  check_range_edges(setup, refined, cells, options, out.cleaned, out.messages);
+  Refinement refinement = multi_start_refinement(setup, estimates, start.sites, cells, raster, reported_of,
+                                                 [&](const std::string& part) { timer.lap(part); });
+  append(out.messages, refinement.messages);
+  fitting::RefineResult& refined = refinement.refined;
+  append(out.messages, check_range_edges(setup, refined, cells, options, out.cleaned));
   out.boundary_samples = setup.samples.size();
   out.refinement_summary = refined.summary.brief();
   out.refinement_converged = refined.summary.converged;
@@ -111,14 +114,17 @@ AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSen
   // 4. Powers and the common factor of weights; 5. per sensor: reconstruction, uncertainty, verdict.
   const WeightScale scale = weight_scale(refined, reported_of, options);
   out.reception = reception_limit(out.cleaned, refined, setup.samples, scale, options);
-  out.sensors = sensor_audits(cleaned, cells, refined, setup, reported_of, reported, scale, options, raster);
+  const VerificationInputs verification{.cleaned = cleaned, .cells = cells, .raster = raster, .setup = setup,
+                                        .refined = refined, .reported_of = reported_of, .reported = reported,
+                                        .scale = scale, .options = options};
+  out.sensors = sensor_audits(verification);
   const ModelFitResult fit = model_fit(cleaned, setup.samples, refined.sample_residual, cells.area, out.bin_size_m, options);
   out.model_fit = fit.map;
   apply_model_fit(fit, options, out.sensors);
   apply_report_fit(setup.samples, cells.area, options, out.model_fit, out.sensors);
 
   // 6. Recompute the diagrams and compare them with the map on a raster.
-  recomputed_diagrams(cells, raster, refined, reported_of, reported, scale, options, out);
+  append(out.messages, recomputed_diagrams(verification, out));
   timer.lap("recomputed diagrams and comparison");
   progress("done", 1.0);
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

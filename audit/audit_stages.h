@@ -36,6 +36,11 @@ namespace covmap::audit::stages {
 
 double median(std::vector<double> v);
 
+// What a stage says for the report (AuditResult::messages), in the order it says it. Stages return
+// theirs; audit() appends them in stage order.
+using Messages = std::vector<std::string>;
+inline void append(Messages& to, const Messages& from) { to.insert(to.end(), from.begin(), from.end()); }
+
 // ---- Map cells (map_cells.cpp) ----
 
 // The map's cells per cleaned sensor.
@@ -71,8 +76,13 @@ ReportedOf reported_in_map(std::span<const ReportedSensor> reported, const MapCe
 
 // The tolerant estimates, each inside its own cell (else at the cell's centroid), and reported
 // positions where the estimate had nothing better than a centroid.
-std::vector<Site> starting_sites(const SiteEstimates& estimates, const MapCells& cells, const MapRaster& raster,
-                                 const ReportedOf& reported_of, std::vector<std::string>& messages);
+struct StartingSites {
+  std::vector<Site> sites;
+  Messages messages;  // the estimates moved, the reported positions taken
+};
+
+StartingSites starting_sites(const SiteEstimates& estimates, const MapCells& cells, const MapRaster& raster,
+                             const ReportedOf& reported_of);
 
 // ---- Refinement (two_phase_refinement.cpp, multi_start_refinement.cpp) ----
 
@@ -88,18 +98,22 @@ struct RefinementSetup {
 
 RefinementSetup refinement_setup(const cleaning::CleanedMap& cleaned, const Box& box, double bin_size_m, int threads);
 
+// A refinement and what it said: each phase's summary, a failure, restarts.
+struct Refinement {
+  fitting::RefineResult refined;
+  Messages messages;
+};
+
 // One two-phase refinement from `from` (the starting values kept, and said, when it cannot run).
-fitting::RefineResult refine_from(const RefinementSetup& setup, std::vector<Site> from,
-                                  const std::vector<Point>& centroids, std::vector<std::string>& messages);
+Refinement refine_from(const RefinementSetup& setup, std::vector<Site> from, const std::vector<Point>& centroids);
 
 // The refinement from several starts (on maps small enough), then the restarts of sensors that
 // escaped their cells, then the local re-solves (resolve_misplaced). `lap`, if set, hears the name
 // of each of these three parts as it ends (the audit's stage times).
-fitting::RefineResult multi_start_refinement(const RefinementSetup& setup, const SiteEstimates& estimates,
-                                             const std::vector<Site>& start, const MapCells& cells,
-                                             const MapRaster& raster, const ReportedOf& reported_of,
-                                             std::vector<std::string>& messages,
-                                             const std::function<void(const std::string& part)>& lap = {});
+Refinement multi_start_refinement(const RefinementSetup& setup, const SiteEstimates& estimates,
+                                  const std::vector<Site>& start, const MapCells& cells, const MapRaster& raster,
+                                  const ReportedOf& reported_of,
+                                  const std::function<void(const std::string& part)>& lap = {});
 
 // ---- Range edges the fit does not bear out (range_edge_check.cpp) ----
 
@@ -109,19 +123,19 @@ fitting::RefineResult multi_start_refinement(const RefinementSetup& setup, const
 // sensor toward the circle's centre, and the sensor's boundaries no longer fit. Where sensors with
 // a range edge have a model-fit ratio (model_fit.h) above kRangeEdgeMisfitRatio, the refinement is
 // tried again without their range edges; the trial is kept (setup.samples, refined and
-// cleaned.range_edges updated, said in messages) only if it then fits every one of them: a sensor
-// held in a bad minimum by something else keeps its true range edge.
-void check_range_edges(RefinementSetup& setup, fitting::RefineResult& refined, const MapCells& cells,
-                       const AuditOptions& options, cleaning::CleanedMap& cleaned, std::vector<std::string>& messages);
+// cleaned.range_edges updated, said in the messages returned) only if it then fits every one of
+// them: a sensor held in a bad minimum by something else keeps its true range edge.
+Messages check_range_edges(RefinementSetup& setup, fitting::RefineResult& refined, const MapCells& cells,
+                           const AuditOptions& options, cleaning::CleanedMap& cleaned);
 
 // Local re-solves (local_resolve.cpp): every sensor suspected of a local minimum (outside its own
 // cell, a weight far from its neighbours', a merged neighbour, an island cell it hosts, a poorly
 // fitted boundary) is solved again with its neighbourhood (the ring around it held) from several
 // starts; of the solutions that keep every site in its own cell, apart and with a plausible
-// weight, the lowest cost wins. Updates refined.sites only (not its summary or residuals).
-void resolve_misplaced(const RefinementSetup& setup, const SiteEstimates& estimates, const MapCells& cells,
-                       const MapRaster& raster, const ReportedOf& reported_of, fitting::RefineResult& refined,
-                       std::vector<std::string>& messages);
+// weight, the lowest cost wins. Updates refined.sites only (not its summary or residuals); returns
+// what it says of the re-solves.
+Messages resolve_misplaced(const RefinementSetup& setup, const SiteEstimates& estimates, const MapCells& cells,
+                           const MapRaster& raster, const ReportedOf& reported_of, fitting::RefineResult& refined);
 
 // ---- Verdicts per sensor (sensor_audits.cpp) ----
 
@@ -135,17 +149,27 @@ struct WeightScale {
 WeightScale weight_scale(const fitting::RefineResult& refined, const ReportedOf& reported_of,
                          const AuditOptions& options);
 
+// What the stages after the refinement read: the cleaned map, its cells and raster, the refinement
+// and the reports. Views of audit()'s own values.
+struct VerificationInputs {
+  const cleaning::CleanedMap& cleaned;
+  const MapCells& cells;
+  const MapRaster& raster;
+  const RefinementSetup& setup;
+  const fitting::RefineResult& refined;
+  const ReportedOf& reported_of;
+  std::span<const ReportedSensor> reported;
+  const WeightScale& scale;
+  const AuditOptions& options;
+};
+
 // Per map sensor its reconstruction and verdict, then the reported sensors absent from the map.
-std::vector<SensorAudit> sensor_audits(const cleaning::CleanedMap& cleaned, const MapCells& cells,
-                                       const fitting::RefineResult& refined, const RefinementSetup& setup,
-                                       const ReportedOf& reported_of, std::span<const ReportedSensor> reported,
-                                       const WeightScale& scale, const AuditOptions& options, const MapRaster& raster);
+std::vector<SensorAudit> sensor_audits(const VerificationInputs& in);
 
 // ---- Recomputed diagrams and agreement (recomputed_diagrams.cpp) ----
 
-// Sets out.refined_diagram, out.reported_diagram and their agreements with the map.
-void recomputed_diagrams(const MapCells& cells, const MapRaster& raster, const fitting::RefineResult& refined,
-                         const ReportedOf& reported_of, std::span<const ReportedSensor> reported,
-                         const WeightScale& scale, const AuditOptions& options, AuditResult& out);
+// Sets out.refined_diagram, out.reported_diagram and their agreements with the map, and each
+// sensor's iou_refined and iou_reported; returns what went wrong drawing them.
+Messages recomputed_diagrams(const VerificationInputs& in, AuditResult& out);
 
 }  // namespace covmap::audit::stages

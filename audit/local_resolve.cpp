@@ -216,13 +216,23 @@ bool better(const LocalResult& a, const LocalResult& b) {
   return a.cost < b.cost;
 }
 
+// Where the starts of a re-solve come from: the map's cells, the tolerant estimates, the reports.
+struct StartSources {
+  const SiteEstimates& estimates;
+  const MapCells& cells;
+  const MapRaster& raster;
+  const ReportedOf& reported_of;
+};
+
 // The candidate positions of sensor i: its cell's centroid, its tolerant estimate (inside its own
 // cell), its reported position; one within kLocalSameStartBins of the current site or of an earlier
 // candidate would repeat that start's descent and is left out.
-std::vector<Point> candidate_positions(const RefinementSetup& setup, const SiteEstimates& estimates,
-                                       const MapCells& cells, const MapRaster& raster, const ReportedOf& reported_of,
-                                       const Site& current, std::size_t i) {
-  std::vector<Point> all{cells.centroids[i]};
+std::vector<Point> candidate_positions(const RefinementSetup& setup, const StartSources& from, const Site& current,
+                                       std::size_t i) {
+  const SiteEstimates& estimates = from.estimates;
+  const MapRaster& raster = from.raster;
+  const ReportedOf& reported_of = from.reported_of;
+  std::vector<Point> all{from.cells.centroids[i]};
   const Site& e = estimates.sites[i];
   if (estimates.how[i] != EstimateSource::kCentroid && raster.label_at(e.x, e.y) == static_cast<int>(i))
     all.push_back({e.x, e.y});
@@ -239,15 +249,15 @@ std::vector<Point> candidate_positions(const RefinementSetup& setup, const SiteE
 // The starts of a neighbourhood (its sites in nb.sensors' order): the current solution; sensor i
 // (first) at each candidate position; every free sensor at its cell's centroid. At a new position a
 // sensor's weight is the one its boundaries imply (two sweeps over the free sensors for the last).
-std::vector<std::vector<Site>> local_starts(const RefinementSetup& setup, const SiteEstimates& estimates,
-                                            const MapCells& cells, const MapRaster& raster,
-                                            const ReportedOf& reported_of, const Adjacency& adj,
-                                            const std::vector<Site>& sites, const Neighbourhood& nb) {
+std::vector<std::vector<Site>> local_starts(const RefinementSetup& setup, const StartSources& from,
+                                            const Adjacency& adj, const std::vector<Site>& sites,
+                                            const Neighbourhood& nb) {
+  const MapCells& cells = from.cells;
   std::vector<Site> current;
   for (int j : nb.sensors) current.push_back(sites[j]);
   std::vector<std::vector<Site>> starts{current};
   const std::size_t i = static_cast<std::size_t>(nb.sensors[0]);
-  for (Point p : candidate_positions(setup, estimates, cells, raster, reported_of, sites[i], i)) {
+  for (Point p : candidate_positions(setup, from, sites[i], i)) {
     starts.push_back(current);
     starts.back()[0] = {sites[i].id, p.x, p.y, std::exp(boundary_log_weight(setup, sites, adj.samples[i], i, p))};
   }
@@ -385,11 +395,10 @@ void solve_in_waves(const RefinementSetup& setup, const MapCells& cells, const M
 
 }  // namespace
 
-void resolve_misplaced(const RefinementSetup& setup, const SiteEstimates& estimates, const MapCells& cells,
-                       const MapRaster& raster, const ReportedOf& reported_of, fitting::RefineResult& refined,
-                       std::vector<std::string>& messages) {
+Messages resolve_misplaced(const RefinementSetup& setup, const SiteEstimates& estimates, const MapCells& cells,
+                           const MapRaster& raster, const ReportedOf& reported_of, fitting::RefineResult& refined) {
   const std::size_t n = setup.n;
-  if (n < 2 || refined.sites.size() != n) return;
+  if (n < 2 || refined.sites.size() != n) return {};
   const Adjacency adj = adjacency(setup);
   std::vector<Site>& sites = refined.sites;
   std::vector<Suspicion> suspect(n, Suspicion::kNone);
@@ -400,9 +409,8 @@ void resolve_misplaced(const RefinementSetup& setup, const SiteEstimates& estima
   // at great cost.
   const std::size_t suspects = n - static_cast<std::size_t>(std::count(suspect.begin(), suspect.end(), Suspicion::kNone));
   if (static_cast<double>(suspects) > tolerance::kLocalMaxSuspectShare * static_cast<double>(n)) {
-    messages.push_back(std::to_string(suspects) + " of " + std::to_string(n) +
-                       " sensors looked stuck in local minima: too many for local causes; not solved again locally");
-    return;
+    return {std::to_string(suspects) + " of " + std::to_string(n) +
+            " sensors looked stuck in local minima: too many for local causes; not solved again locally"};
   }
   int resolved = 0, moved = 0;
   std::vector<std::size_t> order;
@@ -410,9 +418,8 @@ void resolve_misplaced(const RefinementSetup& setup, const SiteEstimates& estima
     if (suspect[i] != Suspicion::kNone) order.push_back(i);
   WaveSteps steps;
   steps.still_suspect = [&](std::size_t i) { return suspect[i] != Suspicion::kNone; };
-  steps.starts_of = [&](const Neighbourhood& nb) {
-    return local_starts(setup, estimates, cells, raster, reported_of, adj, sites, nb);
-  };
+  const StartSources from{.estimates = estimates, .cells = cells, .raster = raster, .reported_of = reported_of};
+  steps.starts_of = [&](const Neighbourhood& nb) { return local_starts(setup, from, adj, sites, nb); };
   steps.take = [&](std::size_t i, const Neighbourhood& nb, LocalResult& best, int which) {
     ++resolved;
     if (best.sites.empty() || !best.admissible) return;  // nothing better than a degenerate minimum
@@ -427,12 +434,12 @@ void resolve_misplaced(const RefinementSetup& setup, const SiteEstimates& estima
     moved += which > 0;
   };
   solve_in_waves(setup, cells, raster, adj, refined, std::move(order), steps);
-  if (resolved)
-    messages.push_back(std::to_string(resolved) +
-                       " sensor(s) outside their own cell, with a weight far from their neighbours', merged with a "
-                       "neighbour, hosting an island or with a poorly fitted boundary were solved again with their "
-                       "neighbourhoods from several starts; " +
-                       std::to_string(moved) + " moved to a lower minimum");
+  if (!resolved) return {};
+  return {std::to_string(resolved) +
+          " sensor(s) outside their own cell, with a weight far from their neighbours', merged with a "
+          "neighbour, hosting an island or with a poorly fitted boundary were solved again with their "
+          "neighbourhoods from several starts; " +
+          std::to_string(moved) + " moved to a lower minimum"};
 }
 
 }  // namespace covmap::audit::stages

@@ -16,8 +16,9 @@ namespace {
 // distorts the cells around it): it restarts from its cell's centroid with its neighbours'
 // typical weight, and the refinement runs again (kRestartRounds times; a restart can free a
 // neighbour that the escaped sensor held off, but another round costs a whole refinement).
-void restart_escaped(const RefinementSetup& setup, const MapCells& cells, const MapRaster& raster,
-                     fitting::RefineResult& refined, std::vector<std::string>& messages) {
+Messages restart_escaped(const RefinementSetup& setup, const MapCells& cells, const MapRaster& raster,
+                         fitting::RefineResult& refined) {
+  Messages messages;
   const std::size_t n = setup.n;
   const std::vector<Point>& centroids = cells.centroids;
   for (int round = 0; round < tolerance::kRestartRounds; ++round) {
@@ -44,20 +45,21 @@ void restart_escaped(const RefinementSetup& setup, const MapCells& cells, const 
       if (!neighbour_logw[i].empty()) repaired[i].weight = std::exp(median(neighbour_logw[i]));
     }
     if (escaped == 0) break;
-    fitting::RefineResult again = refine_from(setup, repaired, centroids, messages);
+    Refinement again = refine_from(setup, repaired, centroids);
+    append(messages, again.messages);
     messages.push_back(std::to_string(escaped) + " sensor(s) ended outside their own cell (or with a weight far from their neighbours') and were refined again from their cell's centroid");
-    if (!std::isfinite(again.summary.final_cost)) break;
-    refined = std::move(again);
+    if (!std::isfinite(again.refined.summary.final_cost)) break;
+    refined = std::move(again.refined);
   }
+  return messages;
 }
 
 }  // namespace
 
-fitting::RefineResult multi_start_refinement(const RefinementSetup& setup, const SiteEstimates& estimates,
-                                             const std::vector<Site>& start, const MapCells& cells,
-                                             const MapRaster& raster, const ReportedOf& reported_of,
-                                             std::vector<std::string>& messages,
-                                             const std::function<void(const std::string& part)>& lap) {
+Refinement multi_start_refinement(const RefinementSetup& setup, const SiteEstimates& estimates,
+                                  const std::vector<Site>& start, const MapCells& cells, const MapRaster& raster,
+                                  const ReportedOf& reported_of,
+                                  const std::function<void(const std::string& part)>& lap) {
   const auto lapped = [&lap](const std::string& part) {
     if (lap) lap(part);
   };
@@ -85,29 +87,32 @@ fitting::RefineResult multi_start_refinement(const RefinementSetup& setup, const
     starts.push_back(std::move(alt));
   }
   // The starts are independent refinements: on the refinement's threads, compared in start order.
-  std::vector<fitting::RefineResult> solved(starts.size());
-  std::vector<std::vector<std::string>> said(starts.size());
+  std::vector<Refinement> solved(starts.size());
   parallel_items(starts.size(), setup.options.threads,
-                 [&](std::size_t k) { solved[k] = refine_from(setup, starts[k], centroids, said[k]); });
-  fitting::RefineResult refined = std::move(solved[0]);
+                 [&](std::size_t k) { solved[k] = refine_from(setup, starts[k], centroids); });
+  Refinement out;
+  Messages& messages = out.messages;
+  fitting::RefineResult& refined = out.refined;
+  refined = std::move(solved[0].refined);
   for (std::size_t k = 0; k < starts.size(); ++k) {
-    messages.insert(messages.end(), said[k].begin(), said[k].end());
-    if (k == 0 || !(solved[k].summary.final_cost < refined.summary.final_cost)) continue;
+    append(messages, solved[k].messages);
+    const fitting::RefineResult& candidate = solved[k].refined;
+    if (k == 0 || !(candidate.summary.final_cost < refined.summary.final_cost)) continue;
     if (k == from_reported)
       messages.push_back("refinement: the start from the reported sensors reached a lower cost (" +
-                         std::to_string(solved[k].summary.final_cost) + " < " + std::to_string(refined.summary.final_cost) + ")");
-    refined = std::move(solved[k]);
+                         std::to_string(candidate.summary.final_cost) + " < " + std::to_string(refined.summary.final_cost) + ")");
+    refined = std::move(solved[k].refined);
   }
   lapped(multi_start ? "refinement (several starts)" : "refinement");
-  restart_escaped(setup, cells, raster, refined, messages);
+  append(messages, restart_escaped(setup, cells, raster, refined));
   lapped("refinement: restarts of escaped sensors");
-  resolve_misplaced(setup, estimates, cells, raster, reported_of, refined, messages);
+  append(messages, resolve_misplaced(setup, estimates, cells, raster, reported_of, refined));
   lapped("refinement: local re-solves");
   // The re-solves moved sites: the residuals the model fit and the range-edge check read must be
   // those of the sites returned.
   if (refined.sample_residual.size() == setup.samples.size())
     refined.sample_residual = fitting::sample_residuals(refined.sites, setup.samples, refined.range);
-  return refined;
+  return out;
 }
 
 }  // namespace covmap::audit::stages

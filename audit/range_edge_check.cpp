@@ -24,14 +24,14 @@ std::vector<char> unfitted(const std::vector<fitting::BoundarySample>& samples, 
 
 }  // namespace
 
-void check_range_edges(RefinementSetup& setup, fitting::RefineResult& refined, const MapCells& cells,
-                       const AuditOptions& options, cleaning::CleanedMap& cleaned, std::vector<std::string>& messages) {
-  if (!refined.range || cleaned.range_edges.empty()) return;
+Messages check_range_edges(RefinementSetup& setup, fitting::RefineResult& refined, const MapCells& cells,
+                           const AuditOptions& options, cleaning::CleanedMap& cleaned) {
+  if (!refined.range || cleaned.range_edges.empty()) return {};
   const std::vector<char> before = unfitted(setup.samples, refined, cells.area, setup.bin_size_m, options, cleaned);
   std::vector<int> suspects;
   for (const cleaning::RangeEdge& e : cleaned.range_edges)
     if (!before.empty() && before[static_cast<std::size_t>(e.sensor)]) suspects.push_back(e.sensor);
-  if (suspects.empty()) return;
+  if (suspects.empty()) return {};
   std::vector<char> drop(setup.n, 0);
   for (int i : suspects) drop[static_cast<std::size_t>(i)] = 1;
   // Without the suspects' edges, refined again; kept only if the fit is better everywhere: fewer
@@ -41,10 +41,9 @@ void check_range_edges(RefinementSetup& setup, fitting::RefineResult& refined, c
   std::vector<cleaning::RangeEdge> kept;
   for (const cleaning::RangeEdge& e : cleaned.range_edges)
     if (!drop[e.sensor]) kept.push_back(e);
-  std::vector<std::string> trial_messages;
-  fitting::RefineResult again = refine_from(without, refined.sites, cells.centroids, trial_messages);
+  Refinement again = refine_from(without, refined.sites, cells.centroids);
   std::swap(cleaned.range_edges, kept);
-  const std::vector<char> after = unfitted(without.samples, again, cells.area, setup.bin_size_m, options, cleaned);
+  const std::vector<char> after = unfitted(without.samples, again.refined, cells.area, setup.bin_size_m, options, cleaned);
   bool better = !after.empty();
   std::size_t count_before = 0, count_after = 0;
   for (std::size_t i = 0; better && i < after.size(); ++i) {
@@ -53,16 +52,17 @@ void check_range_edges(RefinementSetup& setup, fitting::RefineResult& refined, c
   }
   if (!better || count_after >= count_before) {  // the edges were not the trouble: they stand
     std::swap(cleaned.range_edges, kept);
-    return;
+    return {};
   }
   cleaned.report.range_edges = cleaned.range_edges.size();
   setup = std::move(without);
-  refined = std::move(again);
-  messages.insert(messages.end(), trial_messages.begin(), trial_messages.end());
+  refined = std::move(again.refined);
+  Messages messages = std::move(again.messages);
   messages.push_back(std::to_string(suspects.size()) +
                      " sensor(s) had an outside boundary shaped like a reach that the fitted sensors do not bear out "
                      "(e.g. the edge of a hole where a cell is missing); it is treated as the map's frame, and the "
                      "sensors refined again without it fit their boundaries");
+  return messages;
 }
 
 }  // namespace covmap::audit::stages

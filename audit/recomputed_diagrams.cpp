@@ -45,20 +45,30 @@ std::vector<Point> longest_frame_walk(const Diagram& g, const Box& box) {
   return {{box.xmin, box.ymin}, {box.xmax, box.ymin}, {box.xmax, box.ymax}, {box.xmin, box.ymax}};
 }
 
-Diagram recomputed_diagram(const std::vector<Site>& sites, const std::vector<Point>& frame,
-                                    const Box& box, std::vector<std::string>& messages, const char* what) {
+// One side of the comparison: the diagram of `sites` and its agreement with the map.
+struct Recomputed {
+  Diagram diagram;
+  DiagramAgreement agreement;
+  std::vector<double> iou;
+  Messages messages;
+};
+
+// The diagram of `sites` clipped to the frame (to the box when that fails), and what went wrong.
+Recomputed recomputed_diagram(const std::vector<Site>& sites, const std::vector<Point>& frame, const Box& box,
+                              const char* what) {
+  Recomputed r;
   try {
     const Diagram d = voronoi::build_diagram(sites);
     try {
-      return voronoi::clip_diagram(d, frame);
+      r.diagram = voronoi::clip_diagram(d, frame);
     } catch (const std::exception& e) {
-      messages.push_back(std::string(what) + ": clipping to the map's frame failed (" + e.what() + "); clipped to its bounding box");
-      return voronoi::clip_diagram(d, {{box.xmin, box.ymin}, {box.xmax, box.ymin}, {box.xmax, box.ymax}, {box.xmin, box.ymax}});
+      r.messages.push_back(std::string(what) + ": clipping to the map's frame failed (" + e.what() + "); clipped to its bounding box");
+      r.diagram = voronoi::clip_diagram(d, {{box.xmin, box.ymin}, {box.xmax, box.ymin}, {box.xmax, box.ymax}, {box.xmin, box.ymax}});
     }
   } catch (const std::exception& e) {
-    messages.push_back(std::string(what) + ": no diagram (" + e.what() + ")");
-    return {};
+    r.messages.push_back(std::string(what) + ": no diagram (" + e.what() + ")");
   }
+  return r;
 }
 
 // Agreement of the diagram of `sites` with the map, and per sensor its intersection over union.
@@ -99,53 +109,55 @@ std::vector<Site> reported_sites(const MapCells& cells, const std::vector<Site>&
   return rs;
 }
 
-// One side of the comparison: the diagram of `sites` and its agreement with the map.
-struct Recomputed {
-  Diagram diagram;
-  DiagramAgreement agreement;
-  std::vector<double> iou;
-  std::vector<std::string> messages;
+// What both sides are drawn in and compared with: the map, its frame and the refinement's reach.
+struct Comparison {
+  const MapRaster& raster;
+  const cleaning::CleanedMap& cleaned;
+  const std::vector<Point>& frame;
+  const Box& box;
+  std::optional<double> reach;
 };
 
-Recomputed recompute(const MapRaster& raster, const cleaning::CleanedMap& cleaned, const std::vector<Site>& sites,
-                     int count, std::optional<double> reach, const std::vector<Point>& frame, const Box& box,
-                     const char* what) {
-  Recomputed r;
-  r.diagram = recomputed_diagram(sites, frame, box, r.messages, what);
-  std::tie(r.agreement, r.iou) = agreement_of(raster, cleaned, sites, count, reach);
+// The side of `sites` (the first `count` of them compared by sensor), named `what` in messages.
+Recomputed recompute(const Comparison& with, const std::vector<Site>& sites, int count, const char* what) {
+  Recomputed r = recomputed_diagram(sites, with.frame, with.box, what);
+  std::tie(r.agreement, r.iou) = agreement_of(with.raster, with.cleaned, sites, count, with.reach);
   return r;
 }
 
 }  // namespace
 
-void recomputed_diagrams(const MapCells& cells, const MapRaster& raster, const fitting::RefineResult& refined,
-                         const ReportedOf& reported_of, std::span<const ReportedSensor> reported,
-                         const WeightScale& scale, const AuditOptions& options, AuditResult& out) {
-  const cleaning::CleanedMap& cleaned = out.cleaned;
+Messages recomputed_diagrams(const VerificationInputs& in, AuditResult& out) {
+  const cleaning::CleanedMap& cleaned = in.cleaned;
+  const MapCells& cells = in.cells;
+  const MapRaster& raster = in.raster;
+  const fitting::RefineResult& refined = in.refined;
+  const std::span<const ReportedSensor> reported = in.reported;
+  const AuditOptions& options = in.options;
   const std::size_t n = cleaned.sensors.size();
   const Box& box = cells.box;
   const std::vector<Point> frame = longest_frame_walk(cleaned.graph, box);
   const std::vector<Site>& refined_sites = refined.sites;
   const std::vector<Site> rs =
-      reported.empty() ? std::vector<Site>{} : reported_sites(cells, refined_sites, reported_of, reported, scale, options);
+      reported.empty() ? std::vector<Site>{} : reported_sites(cells, refined_sites, in.reported_of, reported, in.scale, options);
+  const Comparison with{.raster = raster, .cleaned = cleaned, .frame = frame, .box = box, .reach = refined.range};
   // The two sides are independent: the reported one on a second thread when there are threads to
   // spare. Each keeps its own messages, added in a fixed order.
   std::future<Recomputed> reported_side;
   if (!reported.empty())
     reported_side = std::async(options.threads > 1 ? std::launch::async : std::launch::deferred, recompute,
-                               std::cref(raster), std::cref(cleaned), std::cref(rs), static_cast<int>(rs.size()),
-                               refined.range, std::cref(frame), std::cref(box), "reported sensors");
+                               std::cref(with), std::cref(rs), static_cast<int>(rs.size()), "reported sensors");
   // The raster of the map (made before the refinement): its own bins where it has them, at most ~4·10⁶.
-  Recomputed mine = recompute(raster, cleaned, refined_sites, static_cast<int>(n), refined.range, frame, box, "refined sensors");
+  Recomputed mine = recompute(with, refined_sites, static_cast<int>(n), "refined sensors");
   out.refined_diagram = std::move(mine.diagram);
   out.refined_agreement = mine.agreement;
-  out.messages.insert(out.messages.end(), mine.messages.begin(), mine.messages.end());
+  Messages messages = std::move(mine.messages);
   for (std::size_t i = 0; i < n; ++i)
     if (std::isfinite(mine.iou[i])) out.sensors[i].iou_refined = mine.iou[i];
-  if (reported.empty()) return;
+  if (reported.empty()) return messages;
   Recomputed theirs = reported_side.get();
   out.reported_diagram = std::move(theirs.diagram);
-  out.messages.insert(out.messages.end(), theirs.messages.begin(), theirs.messages.end());
+  append(messages, theirs.messages);
   DiagramAgreement& d = theirs.agreement;
   // Names of appeared reported-only sensors.
   for (auto& name : d.appeared) {
@@ -155,6 +167,7 @@ void recomputed_diagrams(const MapCells& cells, const MapRaster& raster, const f
   out.reported_agreement = d;
   for (std::size_t i = 0; i < n; ++i)
     if (std::isfinite(theirs.iou[i])) out.sensors[i].iou_reported = theirs.iou[i];
+  return messages;
 }
 
 }  // namespace covmap::audit::stages

@@ -228,14 +228,21 @@ WeightScale weight_scale(const fitting::RefineResult& refined, const ReportedOf&
   return scale;
 }
 
-std::vector<SensorAudit> sensor_audits(const cleaning::CleanedMap& cleaned, const MapCells& cells,
-                                       const fitting::RefineResult& refined, const RefinementSetup& setup,
-                                       const ReportedOf& reported_of, std::span<const ReportedSensor> reported,
-                                       const WeightScale& scale, const AuditOptions& options, const MapRaster& raster) {
+std::vector<SensorAudit> sensor_audits(const VerificationInputs& in) {
+  const RefinementSetup& setup = in.setup;
+  const fitting::RefineResult& refined = in.refined;
+  const MapCells& cells = in.cells;
+  const AuditOptions& options = in.options;
   std::vector<SensorAudit> sensors;
-  const AuditContext context{cleaned, refined, setup,          scale,
-                             options, raster,  cells,          cell_windows(raster, setup.n),
-                             chi2_quantile_two_dof(options.inconsistency_chi2)};
+  const AuditContext context{.cleaned = in.cleaned,
+                             .refined = refined,
+                             .setup = setup,
+                             .scale = in.scale,
+                             .options = options,
+                             .raster = in.raster,
+                             .cells = cells,
+                             .windows = cell_windows(in.raster, setup.n),
+                             .chi2_two_dof = chi2_quantile_two_dof(options.inconsistency_chi2)};
   const std::size_t n = setup.n;
   const std::vector<fitting::LocalUncertainty> local =
       fitting::local_uncertainty(refined.sites, setup.samples, setup.options.loss_scale, refined.range);
@@ -246,14 +253,14 @@ std::vector<SensorAudit> sensor_audits(const cleaning::CleanedMap& cleaned, cons
   std::vector<std::exception_ptr> failed(n);
   parallel_items(n, options.threads, [&](std::size_t i) {
     try {
-      judge_map_sensor(i, context, reported_of, cells, local[i], sensors[i]);
+      judge_map_sensor(i, context, in.reported_of, cells, local[i], sensors[i]);
     } catch (...) {
       failed[i] = std::current_exception();
     }
   });
   for (const std::exception_ptr& e : failed)
     if (e) std::rethrow_exception(e);
-  for (const ReportedSensor& r : reported) {
+  for (const ReportedSensor& r : in.reported) {
     if (cells.index.count(r.id)) continue;
     SensorAudit s;
     s.id = r.id;

@@ -14,8 +14,9 @@ ReportedOf reported_in_map(std::span<const ReportedSensor> reported, const MapCe
   return reported_of;
 }
 
-std::vector<Site> starting_sites(const SiteEstimates& estimates, const MapCells& cells, const MapRaster& raster,
-                                 const ReportedOf& reported_of, std::vector<std::string>& messages) {
+StartingSites starting_sites(const SiteEstimates& estimates, const MapCells& cells, const MapRaster& raster,
+                             const ReportedOf& reported_of) {
+  StartingSites out;
   const std::size_t n = cells.centroids.size();
   const std::vector<Point>& centroids = cells.centroids;
   const Box& box = cells.box;
@@ -23,7 +24,8 @@ std::vector<Site> starting_sites(const SiteEstimates& estimates, const MapCells&
   // estimate inside another sensor's cell is noise from short, poorly fitted arcs, and the cell's
   // centroid is the better start.
   const double extent_box = std::max(box.xmax - box.xmin, box.ymax - box.ymin);
-  std::vector<Site> start = estimates.sites;
+  std::vector<Site>& start = out.sites;
+  start = estimates.sites;
   int moved_to_centroid = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const int at = raster.label_at(start[i].x, start[i].y);
@@ -34,14 +36,14 @@ std::vector<Site> starting_sites(const SiteEstimates& estimates, const MapCells&
     }
   }
   if (moved_to_centroid)
-    messages.push_back(std::to_string(moved_to_centroid) +
+    out.messages.push_back(std::to_string(moved_to_centroid) +
                        " tolerant estimates lay in another sensor's cell; those sensors start from their cell's centroid");
   for (auto [i, r] : reported_of)
     if (estimates.how[i] == EstimateSource::kCentroid) {
       start[i].x = r->position.x, start[i].y = r->position.y;
-      messages.push_back("sensor '" + r->id + "': no junction or located neighbour; started from its reported position");
+      out.messages.push_back("sensor '" + r->id + "': no junction or located neighbour; started from its reported position");
     }
-  return start;
+  return out;
 }
 
 }  // namespace covmap::audit::stages

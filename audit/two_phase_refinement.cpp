@@ -70,8 +70,8 @@ RefinementSetup refinement_setup(const cleaning::CleanedMap& cleaned, const Box&
   return setup;
 }
 
-fitting::RefineResult refine_from(const RefinementSetup& setup, std::vector<Site> from,
-                                  const std::vector<Point>& centroids, std::vector<std::string>& messages) {
+Refinement refine_from(const RefinementSetup& setup, std::vector<Site> from, const std::vector<Point>& centroids) {
+  Refinement out;
   separate(setup, centroids, from);
   fitting::RefineOptions quick = setup.options;
   quick.compute_covariance = false;
@@ -88,22 +88,23 @@ fitting::RefineResult refine_from(const RefinementSetup& setup, std::vector<Site
                                      tolerance::kPhase2SettledLogWeight, tolerance::kPhase2MovingShare};
   try {
     fitting::RefineResult phase1 = fitting::refine_sites(from, setup.samples, priors_for(setup, from, true), first);
-    messages.push_back("refinement phase 1: " + phase1.summary.brief());
+    out.messages.push_back("refinement phase 1: " + phase1.summary.brief());
     separate(setup, centroids, phase1.sites);
-    fitting::RefineResult phase2 = fitting::refine_sites(phase1.sites, setup.samples, priors_for(setup, from, false), quick);
-    messages.push_back("refinement phase 2: " + phase2.summary.brief());
-    return phase2;
+    out.refined = fitting::refine_sites(phase1.sites, setup.samples, priors_for(setup, from, false), quick);
+    out.messages.push_back("refinement phase 2: " + out.refined.summary.brief());
+    return out;
   } catch (const std::exception& e) {
     // A refinement that cannot run leaves the starting values, said in the report.
-    messages.push_back(std::string("refinement failed (") + e.what() + "); kept the starting values");
-    fitting::RefineResult kept;
+    out.messages.push_back(std::string("refinement failed (") + e.what() + "); kept the starting values");
+    fitting::RefineResult& kept = out.refined;
+    kept = {};
     kept.sites = from;
     double top = 0;
     for (const Site& site : kept.sites) top = std::max(top, site.weight);
     for (Site& site : kept.sites) site.weight /= top;
     kept.summary.final_cost = INFINITY;
     kept.summary.message = "not run";
-    return kept;
+    return out;
   }
 }
 

@@ -44,6 +44,16 @@ Point mean(const std::vector<Point>& points) {
   return {m.x / n, m.y / n};
 }
 
+// One chain of a ring's walk: samples [o_begin, o_end) at arc lengths [t_begin, t_end], bordering
+// `label`, between two zones of the ring (kNone: none, as around a closed loop).
+struct ChainSpan {
+  std::size_t o_begin = 0, o_end = 0;
+  double t_begin = 0.0, t_end = 0.0;
+  int label = kOutside;
+  int zone_from = kNone, zone_to = kNone;
+  bool loop = false;  // the whole ring, all around
+};
+
 struct PendingChain {
   RawChain chain;
   int zone_from = kNone, zone_to = kNone;
@@ -90,8 +100,7 @@ class RingReader {
   // the side of the smaller sensor index only.
   static bool reads(int own, int label) { return label == kOutside || (label >= 0 && own < label); }
   static void count_short_run(int own, int label, bool between_cells, RingReading& out);
-  void add_chain(int r, const Walk& walk, std::size_t o_begin, std::size_t o_end, double t_begin, double t_end,
-                 int label, int zone_from, int zone_to, bool loop, RingReading& out) const;
+  void add_chain(int r, const Walk& walk, const ChainSpan& span, RingReading& out) const;
   void frame_points(const BoundaryRing& ring, double t_begin, double t_end, bool loop, std::vector<Point>& out) const;
 
   const BoundaryIndex& index_;
@@ -147,8 +156,8 @@ void RingReader::frame_points(const BoundaryRing& ring, double t_begin, double t
   }
 }
 
-void RingReader::add_chain(int r, const Walk& walk, std::size_t o_begin, std::size_t o_end, double t_begin,
-                           double t_end, int label, int zone_from, int zone_to, bool loop, RingReading& out) const {
+void RingReader::add_chain(int r, const Walk& walk, const ChainSpan& span, RingReading& out) const {
+  const int label = span.label;
   const BoundaryRing& ring = index_.rings()[r];
   const int own = ring.sensor;
   if (label == kSelf) {
@@ -159,14 +168,14 @@ void RingReader::add_chain(int r, const Walk& walk, std::size_t o_begin, std::si
   PendingChain p;
   p.chain.sensor_a = own;
   p.chain.sensor_b = label == kOutside ? kNone : label;
-  p.zone_from = zone_from;
-  p.zone_to = zone_to;
+  p.zone_from = span.zone_from;
+  p.zone_to = span.zone_to;
   if (label == kOutside) {
-    frame_points(ring, t_begin, t_end, loop, p.chain.points);
+    frame_points(ring, span.t_begin, span.t_end, span.loop, p.chain.points);
   } else {
     // Midpoints between the two copies: gaps and overlaps are split evenly.
     Contact previous = Contact::kTouching;
-    for (std::size_t o = o_begin; o < o_end; ++o) {
+    for (std::size_t o = span.o_begin; o < span.o_end; ++o) {
       const Sample& s = walk.at(o);
       const double radius = (s.label == label ? 1.0 : tolerance::kRelabelRadius) * index_.snap();
       const Across a = index_.across_at(r, s.edge, s.p, label, radius);
@@ -196,7 +205,7 @@ RingReading RingReader::read(int r, const std::vector<Sample>& samples) const {
   if (start == n) {  // one neighbour all around: a closed loop (an island, or a lone cell's frame)
     const int label = samples[0].label;
     if (ring.perimeter() < min_length_) count_short_run(own, label, false, out);
-    else add_chain(r, walk, 0, n, 0.0, ring.perimeter(), label, kNone, kNone, true, out);
+    else add_chain(r, walk, {.o_end = n, .t_end = ring.perimeter(), .label = label, .loop = true}, out);
     return out;
   }
 
@@ -256,8 +265,10 @@ RingReading RingReader::read(int r, const std::vector<Sample>& samples) const {
   const auto first_kept = std::find_if(zone_id.begin(), zone_id.end(), [](int id) { return id != kNone; });
   if (first_kept == zone_id.end()) {  // every zone dissolved: one boundary all around
     const Run& first = runs[longs[0]];
-    add_chain(r, walk, first.first, first.first + n, first.begin, first.begin + walk.perimeter, first.label, kNone,
-              kNone, true, out);
+    add_chain(r, walk,
+              {.o_begin = first.first, .o_end = first.first + n, .t_begin = first.begin,
+               .t_end = first.begin + walk.perimeter, .label = first.label, .loop = true},
+              out);
     return out;
   }
   const std::size_t z0 = static_cast<std::size_t>(first_kept - zone_id.begin());
@@ -270,7 +281,10 @@ RingReading RingReader::read(int r, const std::vector<Sample>& samples) const {
     const bool wraps = longs[next] < longs[(z + 1) % q];
     const std::size_t o_end = last.first + last.count + (wraps ? n : 0);
     const double t_end = last.end + (wraps ? walk.perimeter : 0.0);
-    add_chain(r, walk, first.first, o_end, first.begin, t_end, first.label, zone_id[z], zone_id[next], false, out);
+    add_chain(r, walk,
+              {.o_begin = first.first, .o_end = o_end, .t_begin = first.begin, .t_end = t_end, .label = first.label,
+               .zone_from = zone_id[z], .zone_to = zone_id[next]},
+              out);
     z = next;
   } while (z != z0);
   return out;

@@ -155,10 +155,11 @@ void mark_undetermined(SiteUncertainty& u) {
 
 }  // namespace
 
-CovarianceOutcome site_covariance(std::vector<SiteBlock>& blocks, double* log_range, const Layout& layout,
-                                  std::span<const BoundarySample> samples, std::span<const SitePrior> priors,
-                                  const ceres::LossFunction* loss, std::span<const double> r,
+CovarianceOutcome site_covariance(std::vector<SiteBlock>& blocks, double* log_range, const SolvedProblem& solved,
                                   const RefineOptions& options) {
+  const Layout& layout = solved.layout;
+  const std::span<const BoundarySample> samples = solved.samples;
+  const std::span<const double> r = solved.residuals;
   CovarianceOutcome outcome;
   outcome.uncertainty.resize(blocks.size());
   for (std::size_t i = 0; i < blocks.size(); ++i) {
@@ -181,9 +182,9 @@ CovarianceOutcome site_covariance(std::vector<SiteBlock>& blocks, double* log_ra
   }
   std::vector<double> factor(samples.size());
   for (std::size_t i = 0; i < samples.size(); ++i) {
-    factor[i] = std::sqrt(loss_at(loss, r[i]).weight / outcome.variance_factor);
+    factor[i] = std::sqrt(loss_at(solved.loss, r[i]).weight / outcome.variance_factor);
   }
-  BuiltProblem built = build_problem(blocks, log_range, layout, samples, priors, nullptr, factor);
+  BuiltProblem built = build_problem(blocks, log_range, layout, samples, solved.priors, nullptr, factor);
   double* range = layout.range ? log_range : nullptr;
 
   // Full rank: done. Otherwise find the undetermined sites (cheap local test first, then the

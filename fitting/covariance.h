@@ -33,11 +33,18 @@ struct CovarianceOutcome {
   double log_range_sigma = 0.0;              // 1-σ of ρ = log R (layout.range), 0 if not computed
 };
 
-// `blocks` (and `log_range`, when layout.range) hold the solution; `r` the sample residuals in σ
-// units there.
-CovarianceOutcome site_covariance(std::vector<SiteBlock>& blocks, double* log_range, const Layout& layout,
-                                  std::span<const BoundarySample> samples, std::span<const SitePrior> priors,
-                                  const ceres::LossFunction* loss, std::span<const double> r,
+// The solved problem as the covariance reads it: its layout, data and loss, and the sample
+// residuals at the solution (σ units).
+struct SolvedProblem {
+  const Layout& layout;
+  std::span<const BoundarySample> samples;
+  std::span<const SitePrior> priors;
+  const ceres::LossFunction* loss = nullptr;
+  std::span<const double> residuals;
+};
+
+// `blocks` (and `log_range`, when layout.range) hold the solution.
+CovarianceOutcome site_covariance(std::vector<SiteBlock>& blocks, double* log_range, const SolvedProblem& solved,
                                   const RefineOptions& options);
 
 }  // namespace covmap::fitting::detail

@@ -42,6 +42,17 @@ class Heartbeat : public ceres::IterationCallback {
   const std::function<void(int)>& beat_;
 };
 
+Termination termination_of(ceres::TerminationType type) {
+  switch (type) {
+    case ceres::CONVERGENCE: return Termination::kConvergence;
+    case ceres::NO_CONVERGENCE: return Termination::kNoConvergence;
+    case ceres::FAILURE: return Termination::kFailure;
+    case ceres::USER_SUCCESS: return Termination::kUserSuccess;
+    case ceres::USER_FAILURE: return Termination::kUserFailure;
+  }
+  return Termination::kFailure;
+}
+
 ceres::Solver::Options solver_options(const RefineOptions& options) {
   ceres::Solver::Options solver;
   solver.max_num_iterations = options.max_iterations;
@@ -153,7 +164,7 @@ RefineResult refine_sites(std::span<const Site> initial, std::span<const Boundar
 
   if (samples.empty()) {
     summary.converged = true;
-    summary.termination = "NO_SAMPLES";
+    summary.termination = Termination::kNoSamples;
     summary.message = "no boundary samples: nothing to refine";
   } else {
     detail::BuiltProblem built = detail::build_problem(blocks, &log_range, layout, samples, priors, loss.get());
@@ -171,11 +182,11 @@ RefineResult refine_sites(std::span<const Site> initial, std::span<const Boundar
     }
     ceres::Solve(solver, built.problem.get(), &solved);
     summary.converged = solved.termination_type == ceres::CONVERGENCE;
-    summary.termination = ceres::TerminationTypeToString(solved.termination_type);
+    summary.termination = termination_of(solved.termination_type);
     summary.message = solved.message;
     if (settle && settle->settled()) {
       summary.converged = true;
-      summary.termination = "SETTLED";
+      summary.termination = Termination::kSettled;
       summary.message = std::to_string(settle->still_moving()) + " of " + std::to_string(blocks.size()) +
                         " sites still moving (RefineOptions::settle)";
     }
@@ -197,8 +208,9 @@ RefineResult refine_sites(std::span<const Site> initial, std::span<const Boundar
   if (!samples.empty()) summary.rms_residual = std::sqrt(sum_squares / samples.size());
 
   if (options.compute_covariance && !samples.empty()) {
-    detail::CovarianceOutcome covariance =
-        detail::site_covariance(blocks, &log_range, layout, samples, priors, loss.get(), r_sigma, options);
+    const detail::SolvedProblem solution{
+        .layout = layout, .samples = samples, .priors = priors, .loss = loss.get(), .residuals = r_sigma};
+    detail::CovarianceOutcome covariance = detail::site_covariance(blocks, &log_range, solution, options);
     result.range_sigma = covariance.log_range_sigma;  // of log R: relative, scaled below
     result.uncertainty = std::move(covariance.uncertainty);
     summary.noise_variance_factor = covariance.variance_factor;

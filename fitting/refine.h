@@ -26,12 +26,13 @@
 //    noise level estimated from the residuals when their σ are nominal and the robust loss's
 //    efficiency accounted for (fitting/robust_loss.h, fitting/covariance.h).
 //  - Guaranteed: a RefineResult for every valid input, whether or not the solver converged
-//    (summary.converged, summary.termination; "NO_SAMPLES" when there is nothing to refine, which
+//    (summary.converged, summary.termination; kNoSamples when there is nothing to refine, which
 //    counts as converged). Uncertainties the data cannot determine (a site with too few samples, a
 //    rank-deficient Jacobian, too few samples to estimate the noise) are marked unavailable, never
 //    thrown; summary.message says why.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <span>
 #include <functional>
@@ -84,7 +85,7 @@ bool from_string(std::string_view name, RobustLoss* loss);
 // the tail of a solve is often a handful of sites creeping along flat valleys (or running off),
 // each iteration a full linear solve for all of them; a caller that deals with such sites itself
 // (the audit restarts and re-solves them locally) can stop there. Deterministic: it reads only
-// the iterates. Not checked at iteration 0; ends with summary.termination "SETTLED" (converged).
+// the iterates. Not checked at iteration 0; ends with summary.termination kSettled (converged).
 struct SettleRule {
   int window = 5;               // successful iterations, >= 1
   double position_step = 0.0;   // > 0
@@ -159,9 +160,32 @@ enum class SiteStatus {
 
 std::string to_string(SiteStatus status);  // "refined", "from-prior", "unobserved"
 
+// How a refinement ended: Ceres' termination types, and the two ends of covmap's own.
+enum class Termination {
+  kNotRun,         // no solve has run (a default summary)
+  kConvergence,    // Ceres' CONVERGENCE
+  kNoConvergence,  // Ceres' NO_CONVERGENCE: max_iterations reached
+  kFailure,        // Ceres' FAILURE
+  kUserSuccess,    // Ceres' USER_SUCCESS
+  kUserFailure,    // Ceres' USER_FAILURE
+  kNoSamples,      // nothing to refine (counts as converged)
+  kSettled,        // RefineOptions::settle ended the solve (counts as converged)
+};
+
+// Every Termination, in declaration order.
+inline constexpr std::array<Termination, 8> kAllTerminations = {
+    Termination::kNotRun,      Termination::kConvergence, Termination::kNoConvergence, Termination::kFailure,
+    Termination::kUserSuccess, Termination::kUserFailure, Termination::kNoSamples,     Termination::kSettled};
+
+// Ceres' names, "NO_SAMPLES" and "SETTLED"; "" for kNotRun, so that a summary that never ran reads
+// as it always has in reports.
+std::string to_string(Termination termination);
+// Parses to_string's names (exactly); false, *termination untouched, for anything else.
+bool from_string(std::string_view name, Termination* termination);
+
 struct RefineSummary {
   bool converged = false;   // Ceres' CONVERGENCE, NO_SAMPLES or SETTLED
-  std::string termination;  // Ceres' termination type (CONVERGENCE, NO_CONVERGENCE, ...), NO_SAMPLES or SETTLED
+  Termination termination = Termination::kNotRun;
   std::string message;      // Ceres' message, then any covariance remark
   int iterations = 0;
   double initial_cost = 0.0, final_cost = 0.0;  // ½ Σ loss(r²), r in σ units, priors included

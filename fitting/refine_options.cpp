@@ -34,6 +34,30 @@ std::string to_string(SiteStatus status) {
   return "unknown";
 }
 
+std::string to_string(Termination termination) {
+  switch (termination) {
+    case Termination::kNotRun: return "";
+    case Termination::kConvergence: return "CONVERGENCE";
+    case Termination::kNoConvergence: return "NO_CONVERGENCE";
+    case Termination::kFailure: return "FAILURE";
+    case Termination::kUserSuccess: return "USER_SUCCESS";
+    case Termination::kUserFailure: return "USER_FAILURE";
+    case Termination::kNoSamples: return "NO_SAMPLES";
+    case Termination::kSettled: return "SETTLED";
+  }
+  return "unknown";
+}
+
+bool from_string(std::string_view name, Termination* termination) {
+  for (Termination candidate : kAllTerminations) {
+    if (name == to_string(candidate)) {
+      *termination = candidate;
+      return true;
+    }
+  }
+  return false;
+}
+
 bool RefineOptions::IsValid(std::string* error) const {
   auto fail = [&](std::string message) {
     if (error != nullptr) *error = std::move(message);
@@ -68,7 +92,7 @@ bool RefineOptions::IsValid(std::string* error) const {
 std::string RefineSummary::brief() const {
   char buffer[256];
   std::snprintf(buffer, sizeof buffer, "%s after %d iterations, cost %.6g -> %.6g, rms %.6g over %zu samples",
-                termination.c_str(), iterations, initial_cost, final_cost, rms_residual, samples);
+                to_string(termination).c_str(), iterations, initial_cost, final_cost, rms_residual, samples);
   std::string line = buffer;
   if (sites_without_samples > 0) line += ", " + std::to_string(sites_without_samples) + " sites without samples";
   return line;

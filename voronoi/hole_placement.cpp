@@ -86,10 +86,22 @@ int outer_face_of_half(const LargeVector<int>& cycle_of_half, const FaceAssembly
   return c < 0 || fa.hole_of_cycle[c] >= 0 ? -1 : fa.face_of_cycle[c];
 }
 
+// What every hole's containment test reads: the diagram, its cycles and faces so far.
+struct HoleSearch {
+  const Diagram& d;
+  bool by_sites = false;
+  const CycleSet& cs;
+  const LargeVector<int>& cycle_of_half;
+  const FaceAssembly& fa;
+  const FaceGrid& grid;
+};
+
 // The innermost outer cycle of the hole's site that contains a point of the hole, among faces not
 // across the hole's own arcs; -1 when none does.
-int containing_face(const Diagram& d, bool by_sites, const CycleSet& cs, const LargeVector<int>& cycle_of_half,
-                    const FaceAssembly& fa, const Cycle& hole, PathCache& cached_path, const FaceGrid& grid) {
+int containing_face(const HoleSearch& search, const Cycle& hole, PathCache& cached_path) {
+  const Diagram& d = search.d;
+  const CycleSet& cs = search.cs;
+  const FaceAssembly& fa = search.fa;
   const HalfArc first = half_of(cs.cycle_halves[hole.begin]);
   const ArcPathView path = arc_path(d.arcs[first.arc], d.nodes);
   // Not the middle of the arc: degenerate inputs (grids) make a hole tangent to another arc at its
@@ -102,9 +114,9 @@ int containing_face(const Diagram& d, bool by_sites, const CycleSet& cs, const L
   const Point p = path.at(mid);
   int target = -1;
   std::vector<int> across;
-  for (int h : cs.halves_of(hole)) across.push_back(outer_face_of_half(cycle_of_half, fa, h ^ 1));
-  for (int f : grid.candidates(p)) {
-    if (d.faces[f].site != (by_sites ? hole.site : kNone)) continue;
+  for (int h : cs.halves_of(hole)) across.push_back(outer_face_of_half(search.cycle_of_half, fa, h ^ 1));
+  for (int f : search.grid.candidates(p)) {
+    if (d.faces[f].site != (search.by_sites ? hole.site : kNone)) continue;
     if (f >= static_cast<int>(fa.outer_area.size())) continue;  // hole-only faces have no outer
     if (std::find(across.begin(), across.end(), f) != across.end()) continue;
     // Innermost containing outer cycle (smallest area) wins.
@@ -128,11 +140,13 @@ void place_holes(Diagram& d, bool by_sites, const CycleSet& cs, const LargeVecto
   // added afterwards, in hole order, as one pass did.
   constexpr std::size_t kHolesPerWorker = 512;
   const int workers = n >= 2 * kHolesPerWorker ? hardware_workers() : 1;
+  const HoleSearch search{
+      .d = d, .by_sites = by_sites, .cs = cs, .cycle_of_half = cycle_of_half, .fa = fa, .grid = grid};
   parallel_chunks(n, workers, [&](std::size_t begin, std::size_t end, int) {
     PathCache cached_path(d);
     for (std::size_t hk = begin; hk < end; ++hk)
       if (target[hk] == -2)
-        target[hk] = containing_face(d, by_sites, cs, cycle_of_half, fa, cs.cycles[fa.holes[hk]], cached_path, grid);
+        target[hk] = containing_face(search, cs.cycles[fa.holes[hk]], cached_path);
   });
   for (std::size_t hk = 0; hk < n; ++hk) {
     const int hole = fa.holes[hk];

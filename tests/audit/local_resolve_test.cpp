@@ -32,7 +32,6 @@ struct Pipeline {
   ReportedOf reported_of;  // none: the repair must not need reports
   RefinementSetup setup;
   fitting::RefineResult refined;
-  std::vector<std::string> messages;
 };
 
 // 60 sensors, 2 km apart on average, 100 m bins, exact staircases, through the audit's stages up
@@ -58,8 +57,8 @@ void run_to_refinement(Pipeline& p, double weight_ratio = 3.0, unsigned seed = 7
   p.raster = map_raster(p.map, p.cells, kBin);
   p.estimates = estimate_sites(p.cleaned, p.cells.centroids);
   p.setup = refinement_setup(p.cleaned, p.cells.box, kBin, 1);
-  const std::vector<Site> start = starting_sites(p.estimates, p.cells, p.raster, p.reported_of, p.messages);
-  p.refined = refine_from(p.setup, start, p.cells.centroids, p.messages);
+  const StartingSites start = starting_sites(p.estimates, p.cells, p.raster, p.reported_of);
+  p.refined = refine_from(p.setup, start.sites, p.cells.centroids).refined;
 }
 
 // Per sensor with a cell of ≥ 20 bins, its distance from the truth in bins.
@@ -108,14 +107,17 @@ TEST(LocalResolve, SingleStartLocalMinimumIsLeft) {
   Pipeline p;
   run_to_refinement(p);
   ASSERT_GT(largest(errors_in_bins(p)), 3.0) << "the refinement found the truth by itself: no regression to test";
-  resolve_misplaced(p.setup, p.estimates, p.cells, p.raster, p.reported_of, p.refined, p.messages);
+  const Messages said = resolve_misplaced(p.setup, p.estimates, p.cells, p.raster, p.reported_of, p.refined);
   expect_repaired(p);
+  // The re-solves are said once, for the report.
+  ASSERT_EQ(said.size(), 1u);
+  EXPECT_NE(said[0].find("solved again with their neighbourhoods"), std::string::npos) << said[0];
 }
 
 TEST(LocalResolve, MergedNeighboursAreSeparatedAgain) {
   Pipeline p;
   run_to_refinement(p);
-  resolve_misplaced(p.setup, p.estimates, p.cells, p.raster, p.reported_of, p.refined, p.messages);
+  resolve_misplaced(p.setup, p.estimates, p.cells, p.raster, p.reported_of, p.refined);
   ASSERT_LT(largest(errors_in_bins(p)), 3.0) << "not repaired in the first place (SingleStartLocalMinimumIsLeft)";
 
   // Merge the sensor with the largest cell into its heaviest neighbour, as the refinement of the
@@ -134,10 +136,10 @@ TEST(LocalResolve, MergedNeighboursAreSeparatedAgain) {
   merged[a].x = merged[b].x + 0.01 * kBin;
   merged[a].y = merged[b].y;
   merged[a].weight = merged[b].weight * (1.0 - 1e-7);
-  p.refined = refine_from(p.setup, merged, p.cells.centroids, p.messages);
+  p.refined = refine_from(p.setup, merged, p.cells.centroids).refined;
   ASSERT_GT(largest(errors_in_bins(p)), 3.0) << "the joint refinement left the merged pair by itself: no regression";
 
-  resolve_misplaced(p.setup, p.estimates, p.cells, p.raster, p.reported_of, p.refined, p.messages);
+  resolve_misplaced(p.setup, p.estimates, p.cells, p.raster, p.reported_of, p.refined);
   expect_repaired(p);
 }
 
@@ -150,7 +152,7 @@ TEST(LocalResolve, MergedNeighboursAreSeparatedAgain) {
 TEST(LocalResolve, IslandHostMovedAlongItsIslandsCircleIsRepaired) {
   Pipeline p;
   run_to_refinement(p, 6.0, 11);
-  resolve_misplaced(p.setup, p.estimates, p.cells, p.raster, p.reported_of, p.refined, p.messages);
+  resolve_misplaced(p.setup, p.estimates, p.cells, p.raster, p.reported_of, p.refined);
   ASSERT_LT(largest(errors_in_bins(p)), 3.0) << "not converged in the first place";
   std::vector<std::vector<int>> neighbours(p.setup.n);
   for (const fitting::BoundarySample& s : p.setup.samples) {
@@ -184,7 +186,7 @@ TEST(LocalResolve, IslandHostMovedAlongItsIslandsCircleIsRepaired) {
               1e-9 * radius / in.weight);
   ASSERT_GT(largest(errors_in_bins(p)), 3.0) << "the move is not a regression to test";
 
-  resolve_misplaced(p.setup, p.estimates, p.cells, p.raster, p.reported_of, p.refined, p.messages);
+  resolve_misplaced(p.setup, p.estimates, p.cells, p.raster, p.reported_of, p.refined);
   expect_repaired(p);
 }
 

@@ -1,8 +1,10 @@
 // Malformed input is rejected with a message naming the item; options validate; names round-trip.
+#include <ceres/types.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
+#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -92,9 +94,31 @@ TEST(RefineInput, NamesRoundTrip) {
   EXPECT_EQ(to_string(SiteStatus::kFromPrior), "from-prior");
 }
 
+TEST(RefineInput, TerminationNamesRoundTrip) {
+  std::set<std::string> names;
+  for (Termination termination : kAllTerminations) {
+    Termination parsed = termination == Termination::kSettled ? Termination::kNotRun : Termination::kSettled;
+    ASSERT_TRUE(from_string(to_string(termination), &parsed)) << to_string(termination);
+    EXPECT_EQ(parsed, termination);
+    names.insert(to_string(termination));
+  }
+  EXPECT_EQ(names.size(), kAllTerminations.size());
+  // Reports carry Ceres' own names.
+  for (ceres::TerminationType type :
+       {ceres::CONVERGENCE, ceres::NO_CONVERGENCE, ceres::FAILURE, ceres::USER_SUCCESS, ceres::USER_FAILURE}) {
+    Termination parsed = Termination::kNotRun;
+    EXPECT_TRUE(from_string(ceres::TerminationTypeToString(type), &parsed)) << ceres::TerminationTypeToString(type);
+  }
+  EXPECT_EQ(to_string(Termination::kNotRun), "");
+  Termination untouched = Termination::kSettled;
+  EXPECT_FALSE(from_string("convergence", &untouched));
+  EXPECT_EQ(untouched, Termination::kSettled);
+}
+
 TEST(RefineInput, NoSamplesIsANormalResult) {
   const RefineResult result = refine_sites(kSites, {});
-  EXPECT_EQ(result.summary.termination, "NO_SAMPLES");
+  EXPECT_EQ(result.summary.termination, Termination::kNoSamples);
+  EXPECT_EQ(to_string(result.summary.termination), "NO_SAMPLES");
   EXPECT_EQ(result.summary.sites_without_samples, 3u);
   ASSERT_EQ(result.sites.size(), 3u);
   EXPECT_EQ(result.sites[2].weight, 1.0);

@@ -49,7 +49,7 @@ TEST(RefineSettle, StopsAtTheCheckedIterate) {
   RefineOptions settled = quick();
   settled.settle = SettleRule{3, 1e9, 1e9, 0.0};
   const RefineResult by_rule = refine_sites(p.start, p.samples, {}, settled);
-  EXPECT_EQ(by_rule.summary.termination, "SETTLED");
+  EXPECT_EQ(by_rule.summary.termination, Termination::kSettled);
   EXPECT_TRUE(by_rule.summary.converged);
   EXPECT_NE(by_rule.summary.message.find("0 of 20 sites still moving"), std::string::npos) << by_rule.summary.message;
 
@@ -58,7 +58,7 @@ TEST(RefineSettle, StopsAtTheCheckedIterate) {
   capped.max_iterations = by_rule.summary.iterations - 1;
   ASSERT_GE(capped.max_iterations, 3);
   const RefineResult by_cap = refine_sites(p.start, p.samples, {}, capped);
-  ASSERT_EQ(by_cap.summary.termination, "NO_CONVERGENCE") << "the problem must need more iterations than that";
+  ASSERT_EQ(by_cap.summary.termination, Termination::kNoConvergence) << "the problem must need more iterations than that";
   expect_same_sites(by_rule, by_cap);
   EXPECT_EQ(by_rule.summary.iterations, by_cap.summary.iterations);
   EXPECT_EQ(by_rule.summary.final_cost, by_cap.summary.final_cost);
@@ -80,7 +80,7 @@ TEST(RefineSettle, ARuleThatNeverFiresChangesNothing) {
   never.settle = SettleRule{2, 1e-300, 1e-300, 0.0};
   const RefineResult with_rule = refine_sites(p.start, p.samples, {}, never);
   const RefineResult without = refine_sites(p.start, p.samples, {}, quick());
-  EXPECT_EQ(without.summary.termination, "CONVERGENCE");
+  EXPECT_EQ(without.summary.termination, Termination::kConvergence);
   EXPECT_EQ(with_rule.summary.termination, without.summary.termination);
   EXPECT_EQ(with_rule.summary.iterations, without.summary.iterations);
   expect_same_sites(with_rule, without);

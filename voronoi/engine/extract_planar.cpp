@@ -226,7 +226,9 @@ class PlanarExtractor {
       push_half(tokens, n, 0, true);
     }
     if (!forward) std::reverse(tokens.begin(), tokens.end());
-    emit_arcs(tokens, scratch_, site_of(vi), site_of(vj), vi->point().point(), vj->point().point(), out_.arcs, [&] {
+    const WalkedFacet facet{
+        .tokens = tokens, .si = site_of(vi), .sj = site_of(vj), .pi = vi->point().point(), .pj = vj->point().point()};
+    emit_arcs(facet, scratch_, out_.arcs, [&] {
       if (vi->point().point().z() == vj->point().point().z()) return false;
       std::vector<RawPoint> link;
       for (Face f : {c, n})

@@ -628,10 +628,11 @@ class SpatialExtractor {
       return st.link;
     };
     const std::size_t first = st.arcs.size();
-    emit_arcs(tokens, st.scratch, vertex_site_[vi], vertex_site_[vj], raw(vi), raw(vj), st.arcs, [&] {
-      if (raw(vi).z() == raw(vj).z()) return false;  // U would show
-      return circle_centre_in_facet(raw(vi), raw(vj), link());
-    });
+    emit_arcs({.tokens = tokens, .si = vertex_site_[vi], .sj = vertex_site_[vj], .pi = raw(vi), .pj = raw(vj)},
+              st.scratch, st.arcs, [&] {
+                if (raw(vi).z() == raw(vj).z()) return false;  // U would show
+                return circle_centre_in_facet(raw(vi), raw(vj), link());
+              });
     for (std::size_t k = first; k < st.arcs.size(); ++k)
       st.mends.push_back(ends_within_rounding(st.arcs[k], out_.nodes, sites_, extent_)
                              ? arc_mend(st.arcs[k], out_.nodes, sites_, st.scratch.zeros, link(), extent_)

@@ -26,13 +26,20 @@ struct WalkScratch {
   std::vector<int> sorted;
 };
 
-// Appends the arcs of the site pair (si, sj), whose (x, y, weight) are pi and pj, given the facet
-// boundary walked counter-clockwise around c_j - c_i. `full_inside` is consulted only when the
-// walk has no zero point and lies outside D: it must say whether the whole bisector lies inside
-// the facet. `Arcs` is a vector of Arc (any allocator).
+// One walked power facet: the boundary tokens, walked counter-clockwise around c_j - c_i, of the
+// facet of the site pair (si, sj), whose (x, y, weight) are pi and pj. Views only, made at the call.
+struct WalkedFacet {
+  const std::vector<Token>& tokens;
+  int si = kNone, sj = kNone;
+  const RawPoint& pi;
+  const RawPoint& pj;
+};
+
+// Appends the arcs of the facet's site pair. `full_inside` is consulted only when the walk has no
+// zero point and lies outside D: it must say whether the whole bisector lies inside the facet.
+// `Arcs` is a vector of Arc (any allocator).
 template <class Arcs, class FullInside>
-void emit_arcs(const std::vector<Token>& tokens, WalkScratch& scratch, int si, int sj, const RawPoint& pi,
-               const RawPoint& pj, Arcs& arcs, FullInside&& full_inside);
+void emit_arcs(const WalkedFacet& facet, WalkScratch& scratch, Arcs& arcs, FullInside&& full_inside);
 
 // The arc of (si, sj), whose (x, y, weight) are pi and pj, from node `from` to node `to` (kNone /
 // kInfinityNode at infinity). The extractors pass the triangulation's copies of the sites' values
@@ -50,8 +57,11 @@ bool circle_centre_in_facet(const RawPoint& pi, const RawPoint& pj,
                             const std::vector<RawPoint>& link);
 
 template <class Arcs, class FullInside>
-void emit_arcs(const std::vector<Token>& tokens, WalkScratch& scratch, int si, int sj, const RawPoint& pi,
-               const RawPoint& pj, Arcs& arcs, FullInside&& full_inside) {
+void emit_arcs(const WalkedFacet& facet, WalkScratch& scratch, Arcs& arcs, FullInside&& full_inside) {
+  const std::vector<Token>& tokens = facet.tokens;
+  const int si = facet.si, sj = facet.sj;
+  const RawPoint& pi = facet.pi;
+  const RawPoint& pj = facet.pj;
   std::vector<int>& zeros = scratch.zeros;
   std::vector<int>& after = scratch.after;
   zeros.clear();
