@@ -124,7 +124,7 @@ CoverageMap finish_coverage_map(FeatureDrafts first, const std::string& file, co
                          " per map (docs/RELIABILITY.md): simplify the cells or split the map into regions");
   std::vector<InputProblem> problems = std::move(top.problems);
   if (!options.crs_frame) {
-    std::vector<InputProblem> declared = crs.problems(options.planar || crs_frame || crs_judged);
+    std::vector<InputProblem> declared = crs.problems(options.planar || top.plane || crs_frame || crs_judged);
     problems.insert(problems.end(), declared.begin(), declared.end());
   }
   // A crs problem means the numbers are not what the reader takes them for; validating the
@@ -137,7 +137,7 @@ CoverageMap finish_coverage_map(FeatureDrafts first, const std::string& file, co
   if (check_geometry && crs_frame) {
     map.frame = crs_frame;
     map.max_scale_distortion = crs_scale_distortion(*crs_frame, drafts);
-  } else if (check_geometry && !options.planar) {
+  } else if (check_geometry && !options.planar && !top.plane) {
     local = projection_for(drafts);
     map.frame = std::make_shared<LocalProjection>(*local);
   }

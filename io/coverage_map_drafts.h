@@ -62,11 +62,11 @@ std::optional<FeatureDrafts> read_features_fast(std::string_view text, const Cov
 CoverageMap finish_coverage_map(FeatureDrafts first, const std::string& file, const CoverageMapOptions& options,
                                 int workers = 0);
 
-// Whether positions are x/y rather than lon/lat: --planar, a CRS the caller gave, or a top-level
-// declaration (usable or not: a refused one is reported once, not again as every position out of
+// Whether positions are x/y rather than lon/lat: --planar, a CRS the caller gave, covmap's own
+// plane declared (kPlaneCrsName), or a top-level declaration (usable or not: a refused one is reported once, not again as every position out of
 // lon/lat range). Both readers decide it this one way.
 inline bool positions_are_xy(const CoverageMapOptions& options, const TopLevelCrs& top) {
-  return options.planar || options.crs_frame || top.frame || !top.problems.empty();
+  return options.planar || options.crs_frame || top.frame || top.plane || !top.problems.empty();
 }
 
 }  // namespace covmap::io::detail

@@ -75,6 +75,10 @@ std::optional<std::string> CrsDeclarations::foreign_top_level() const {
 TopLevelCrs resolve_top_level(const CrsDeclarations& declarations, const CrsResolver& resolve, bool planar) {
   TopLevelCrs out;
   const std::optional<std::string> name = declarations.foreign_top_level();
+  if (name && *name == kPlaneCrsName) {
+    out.plane = true;
+    return out;
+  }
   if (!resolve || !name) return out;
   try {
     out.frame = resolve(*name);

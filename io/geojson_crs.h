@@ -60,6 +60,7 @@ class CrsDeclarations {
 struct TopLevelCrs {
   std::shared_ptr<const MapFrame> frame;
   std::vector<InputProblem> problems;
+  bool plane = false;  // the file declares kPlaneCrsName: planar metres without a CRS
 };
 TopLevelCrs resolve_top_level(const CrsDeclarations& declarations, const CrsResolver& resolve, bool planar);
 

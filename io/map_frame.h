@@ -18,6 +18,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <string_view>
 
 #include "core/diagram.h"
 
@@ -68,5 +69,9 @@ class MapFrame {
 // throws std::invalid_argument, with a sentence for people, for a CRS covmap cannot use (unknown,
 // not in metres, geographic other than WGS84). gis/ makes one through PROJ.
 using CrsResolver = std::function<std::shared_ptr<const MapFrame>(const std::string& declared)>;
+
+// The "crs" name covmap writes (covmap-make-map) for planar metres without a CRS. The readers take
+// a file declaring it as planar, as with --planar, so covmap reads what it writes.
+inline constexpr std::string_view kPlaneCrsName = "covmap:local-plane-metres";
 
 }  // namespace covmap::io

@@ -110,7 +110,7 @@ std::optional<std::vector<SensorDraft>> parse_sensors_geojson_fast(std::string_v
     CrsDeclarations crs;
     record_crs(crs, top_crs, "");
     TopLevelCrs top = xy_crs ? TopLevelCrs{} : resolve_top_level(crs, resolve, planar);
-    const bool xy = planar || xy_crs || top.frame || !top.problems.empty();
+    const bool xy = planar || xy_crs || top.frame || top.plane || !top.problems.empty();
     std::vector<SensorDraft> drafts;
     drafts.reserve(features.size());
     for (FeatureScan& f : features) {

@@ -145,7 +145,7 @@ std::vector<SensorDraft> parse_sensors_geojson(const Json& root, const std::stri
   crs.add(root, "");
   TopLevelCrs top = xy_crs ? TopLevelCrs{} : resolve_top_level(crs, resolve, planar);
   declared = top.frame;
-  const bool xy = planar || xy_crs || declared || !top.problems.empty();
+  const bool xy = planar || xy_crs || declared || top.plane || !top.problems.empty();
   std::vector<SensorDraft> drafts;
   drafts.reserve(features->size());
   for (std::size_t i = 0; i < features->size(); ++i) {

@@ -42,6 +42,8 @@ AuditInputsRead read_inputs(const AuditRequest& r, const Say& say) {
   if (!r.inputs.sensors.empty()) {
     gis::SensorReadOptions options = sensor_read_options(r);
     options.sensors.frame = in.map.frame.get();
+    // A map without a frame is planar (--planar, or declared in covmap's own plane): so are its sensors.
+    options.sensors.planar = options.sensors.planar || !in.map.frame;
     options.sensors.notes = &in.notes;
     in.reported = gis::read_any_sensors(r.inputs.sensors, options);
   }

@@ -143,5 +143,22 @@ code=$?
 grep -q "features\[2\]" "$work/audit_err.txt" && ok || fail "broken map: feature not named: $(cat "$work/audit_err.txt")"
 [ ! -e "$work/audit_broken" ] && ok || fail "broken map: output directory left behind"
 
+# covmap reads what it writes: a map and sensors that declare covmap's own plane
+# ("covmap:local-plane-metres", as covmap-make-map writes them) are planar without --planar, and
+# their audit is the --planar audit's, report for report (only the recorded command line differs).
+ticino="$data/maps/ticino"
+if "$covmap" audit "$ticino/map.geojson" --sensors "$ticino/sensors.geojson" -q --threads 1 -o "$work/ticino_declared" 2>"$work/ticino_err.txt" &&
+   "$covmap" audit "$ticino/map.geojson" --sensors "$ticino/sensors.geojson" --planar -q --threads 1 -o "$work/ticino_planar"; then
+  python3 - "$work/ticino_declared/report.json" "$work/ticino_planar/report.json" <<'PY' && ok || fail "declared plane: reports differ"
+import json, sys
+a, b = (json.load(open(f)) for f in sys.argv[1:3])
+for r in (a, b):
+    r.pop("command_line", None); r.pop("seconds", None); r.pop("timings", None)
+sys.exit(0 if a == b else 1)
+PY
+else
+  fail "declared plane: the bundled Ticino map without --planar: $(cat "$work/ticino_err.txt")"
+fi
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

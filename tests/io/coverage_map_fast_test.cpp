@@ -132,7 +132,9 @@ TEST(CoverageMapFast, CrsDeclarationsAreJudgedAsTheReferenceJudgesThem) {
   // Declarations on the collection (after the features), a feature and a geometry: with --planar
   // only their disagreement is a problem, without it the foreign one is; the fast path keeps the
   // reference's order and paths either way.
+  // A planning tool's own label (covmap's own plane would make the positions planar by itself).
   OrderedJson map = planar_map();
+  map["crs"]["properties"]["name"] = "planner:own-plane";
   map["features"][0]["crs"] = {{"type", "name"}, {"properties", {{"name", "EPSG:4326"}}}};
   map["features"][1]["geometry"]["crs"] = {{"type", "EPSG"}, {"properties", {{"code", 2056}}}};
   const OrderedJson top = map["crs"];
@@ -150,7 +152,12 @@ TEST(CoverageMapFast, CrsDeclarationsAreJudgedAsTheReferenceJudgesThem) {
   OrderedJson swiss = planar_map();
   swiss["crs"]["properties"]["name"] = "EPSG:2056";
   EXPECT_TRUE(fast_path_agrees(swiss.dump(), resolving));
-  EXPECT_TRUE(fast_path_agrees(planar_map().dump(), resolving));  // refused by the resolver: reported once
+  OrderedJson label = planar_map();
+  label["crs"]["properties"]["name"] = "planner:own-plane";
+  EXPECT_TRUE(fast_path_agrees(label.dump(), resolving));  // refused by the resolver: reported once
+  // covmap's own plane is never handed to the resolver: the positions are planar metres.
+  EXPECT_TRUE(fast_path_agrees(planar_map().dump(), resolving));
+  EXPECT_TRUE(fast_path_agrees(planar_map().dump()));
 }
 
 TEST(CoverageMapFast, NumbersAreReadAsTheReferenceReadsThem) {

@@ -1,5 +1,7 @@
 #include "tools/mapgen/coverage_map_json.h"
 
+#include "io/map_frame.h"
+
 #include <cmath>
 #include <optional>
 #include <string>
@@ -26,7 +28,7 @@ bool lonlat(const CoverageMap& map) { return map.options.frame == OutputFrame::k
 // A marker for planar output: GeoJSON without "crs" means WGS84 lon/lat.
 void add_frame(const CoverageMap& map, OrderedJson& collection) {
   if (lonlat(map)) return;
-  collection["crs"] = {{"type", "name"}, {"properties", {{"name", "covmap:local-plane-metres"}}}};
+  collection["crs"] = {{"type", "name"}, {"properties", {{"name", std::string(io::kPlaneCrsName)}}}};
 }
 
 OrderedJson optional_number(const std::optional<double>& v) { return v ? OrderedJson(*v) : OrderedJson(nullptr); }
