@@ -7,6 +7,7 @@
 #include <string_view>
 #include <unordered_set>
 
+#include "audit/alpha_estimate.h"
 #include "audit/audit_stages.h"
 #include "audit/model_fit.h"
 #include "audit/start_values.h"
@@ -122,7 +123,7 @@ AuditResult audit(std::span<const CoverageCell> map, std::span<const ReportedSen
   out.model_fit = fit.map;
   apply_model_fit(fit, options, out.sensors);
   apply_report_fit(setup.samples, cells.area, options, out.model_fit, out.sensors);
-
+  out.alpha_estimate = estimate_alpha(out.sensors, options.alpha);
   // 6. Recompute the diagrams and compare them with the map on a raster.
   append(out.messages, recomputed_diagrams(verification, out));
   timer.lap("recomputed diagrams and comparison");

@@ -154,6 +154,20 @@ struct ModelFit {
   bool misfit = false;
 };
 
+// The path-loss exponent the map and the reported powers imply (audit/alpha_estimate.h): an
+// interval, since both the refined weights and the reported powers carry errors. The regression
+// of power on log weight gives its low end, the one of log weight on power its high end; the true
+// exponent lies between them, each end known to its own σ.
+struct AlphaEstimate {
+  double low = 0.0, high = 0.0;              // high is +infinity when the powers do not vary with the weights
+  double sigma_low = 0.0, sigma_high = 0.0;  // 1-σ of each end (infinity with high)
+  std::size_t sensors = 0;      // sensors in the final fit
+  std::size_t outliers = 0;     // sensors left out as gross errors
+  // The given --alpha lies more than tolerance::kAlphaDisagreementSigmas σ outside [low, high]
+  // (false without a given alpha).
+  bool disagrees = false;
+};
+
 // Wall-clock time of one stage of the audit.
 struct StageTiming {
   std::string stage;
@@ -169,6 +183,7 @@ struct AuditResult {
   std::optional<Diagram> reported_diagram;  // same for the reported sensors
   std::optional<ReceptionLimit> reception;  // when the map has range edges
   ModelFit model_fit;
+  std::optional<AlphaEstimate> alpha_estimate;  // when reported powers and the map determine it
   DiagramAgreement refined_agreement;
   std::optional<DiagramAgreement> reported_agreement;
   double bin_size_m = 0.0;

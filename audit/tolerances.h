@@ -191,4 +191,24 @@ inline constexpr double kLocalSameStartBins = 2.0;
 inline constexpr double kLocalIslandHostHiddenBins = 2.0;
 // Iteration cap of one local re-solve (a few dozen sensors; most converge in far fewer).
 inline constexpr int kLocalMaxIterations = 50;
+
+// The path-loss exponent the map and the reported powers imply (alpha_estimate.h). Fewer sensors
+// with a reported power and a cell than this, or a spread of their powers below
+// kAlphaMinPowerSpreadDb, leave alpha undetermined: the slope of log weight against power needs
+// several points across a range of powers.
+inline constexpr std::size_t kAlphaMinSensors = 5;
+inline constexpr double kAlphaMinPowerSpreadDb = 3.0;
+// Sensors whose residual from the robust line exceeds this many robust standard deviations (1.4826
+// MAD) are gross errors, left out of the final fit: a power reported 6 dB off is one point off
+// the line, not evidence about alpha.
+inline constexpr double kAlphaOutlierSigmas = 3.0;
+// A given --alpha farther than this many σ from the estimate, and by more than this fraction of it,
+// is named as disagreeing with the data. The fraction keeps a near-exact map (σ of a few 10⁻³) from
+// calling 3.4 against 3.5 wrong: the warning is for a wrong alpha (a typo, another environment),
+// and 5 % of alpha moves a 20 dB power difference by 1 dB, the precision powers are reported at.
+inline constexpr double kAlphaDisagreementSigmas = 3.0;
+inline constexpr double kAlphaDisagreementFraction = 0.05;
+// At most this many pairs enter the median of pairwise slopes (Theil–Sen); beyond that the pairs
+// are taken at a fixed stride, so the estimate stays linear-time and reproducible.
+inline constexpr std::size_t kAlphaMaxPairs = 200'000;
 }  // namespace covmap::audit::tolerance

@@ -33,7 +33,10 @@ void print_audit_summary(std::ostream& out, const job::AuditRequest& request, co
   const std::string map = request.inputs.map.string();
   const audit::AuditResult& result = audited.result;
   const report::AuditVerdictCounts& counts = audited.counts;
-  // A map the model does not explain is said first: the verdicts below are read in its light.
+  // A wrong alpha, then a map the model does not explain, are said first: the verdicts below are
+  // read in their light.
+  if (const std::string alpha = report::alpha_warning_text(result, request.settings.alpha); !alpha.empty())
+    out << map << ": " << alpha << "\n";
   if (result.model_fit.misfit) out << map << ": " << report::model_fit_text(result) << "\n";
   out << map << ": " << counts.sensors << " sensors (" << counts.in_map << " with a cell in the map, "
       << counts.sensors - counts.in_map << " reported without one; " << counts.reported << " reported): "

@@ -170,6 +170,12 @@ std::string_view basis_words(audit::VerdictBasis basis);
 // map does not follow the model it starts "The map does not follow the path-loss model", and every
 // report puts it first.
 std::string model_fit_text(const audit::AuditResult& result);
+// The path-loss exponent the map and the reported powers imply, in one sentence, when the given
+// alpha disagrees with it (it is then said first, as every dB figure depends on it); else empty.
+std::string alpha_warning_text(const audit::AuditResult& result, std::optional<double> given_alpha);
+// The estimate for people: "of 3.52 ± 0.06" (a narrow interval), "between 2.45 and 4.90", "of at
+// least 2.45 ± 0.20" (no upper end).
+std::string alpha_text(const audit::AlphaEstimate& estimate);
 // The reception limit in one sentence; empty when the map has none.
 std::string reception_text(const audit::AuditResult& result);
 

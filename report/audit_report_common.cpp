@@ -106,6 +106,23 @@ std::string model_fit_text(const audit::AuditResult& result) {
          " times the mean square of free curves fitted to each (1 = as well as they do)" + reports + "; " + misfits + ".";
 }
 
+std::string alpha_text(const audit::AlphaEstimate& e) {
+  if (!std::isfinite(e.high)) return "of at least " + fixed(e.low, 2) + " ± " + fixed(e.sigma_low, 2);
+  if (e.high < 1.1 * e.low) {
+    const double half = (e.high - e.low) / 2;
+    const double sigma = std::sqrt(std::max(e.sigma_low, e.sigma_high) * std::max(e.sigma_low, e.sigma_high) + half * half);
+    return "of " + fixed(e.low + half, 2) + " ± " + fixed(sigma, 2);
+  }
+  return "between " + fixed(e.low, 2) + " and " + fixed(e.high, 2);
+}
+
+std::string alpha_warning_text(const audit::AuditResult& result, std::optional<double> given_alpha) {
+  if (!result.alpha_estimate || !result.alpha_estimate->disagrees || !given_alpha) return "";
+  const audit::AlphaEstimate& e = *result.alpha_estimate;
+  return "Check --alpha: the map and the reported powers imply a path-loss exponent " + alpha_text(e) + " (from " +
+         plural(e.sensors, "sensor") + "), not " + fixed(*given_alpha, 2) + "; every weight and dB figure below depends on it.";
+}
+
 std::string reception_text(const audit::AuditResult& result) {
   if (!result.reception) return "";
   const audit::ReceptionLimit& r = *result.reception;

@@ -331,8 +331,9 @@ void write_audit_html(const AuditReportContext& c, std::ostream& out) {
       << "<header><h1>Coverage map audit</h1>\n<p class=\"meta\">Map <code>" << html_escape(c.map_file) << "</code>";
   if (!c.sensors_file.empty()) out << ", reported sensors <code>" << html_escape(c.sensors_file) << "</code>";
   out << ". Written by <code>covmap audit</code>; docs/REPORT_GUIDE.md explains how to read it.</p></header>\n";
-  // The model fit first: when the map does not follow the model, every verdict below is read in
-  // that light.
+  // A wrong alpha and the model fit first: every verdict below is read in their light.
+  if (const std::string alpha = alpha_warning_text(c.result, c.alpha); !alpha.empty())
+    out << "<p id=\"alpha\" class=\"misfit\">" << html_escape(alpha) << "</p>\n";
   if (const std::string fit = model_fit_text(c.result); !fit.empty())
     out << "<p id=\"model-fit\" class=\"" << (c.result.model_fit.misfit ? "misfit" : "meta") << "\">" << html_escape(fit)
         << "</p>\n";

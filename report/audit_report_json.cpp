@@ -198,6 +198,15 @@ void write_audit_json(const AuditReportContext& c, std::ostream& out) {
   j["refinement"] = r.refinement_summary;
   j["reception"] = reception_json(r.reception);
   j["model_fit"] = model_fit_json(r.model_fit);
+  j["alpha_estimate"] = r.alpha_estimate ? json{{"low", number_or_null(r.alpha_estimate->low)},
+                                                {"sigma_low", number_or_null(r.alpha_estimate->sigma_low)},
+                                                {"high", number_or_null(r.alpha_estimate->high)},
+                                                {"sigma_high", number_or_null(r.alpha_estimate->sigma_high)},
+                                                {"sensors", r.alpha_estimate->sensors},
+                                                {"outliers", r.alpha_estimate->outliers},
+                                                {"given", c.alpha ? json(*c.alpha) : json()},
+                                                {"disagrees", r.alpha_estimate->disagrees}}
+                                         : json();
   j["agreement"] = {{"refined", agreement_json(r.refined_agreement)},
                     {"reported", r.reported_agreement ? agreement_json(*r.reported_agreement) : json()}};
   j["thresholds"] = c.options ? thresholds_json(*c.options, r.bin_size_m) : json();

@@ -160,5 +160,14 @@ else
   fail "declared plane: the bundled Ticino map without --planar: $(cat "$work/ticino_err.txt")"
 fi
 
+# A mistyped --alpha (35 for 3.5) is named in the first line of the summary, with the interval the
+# map and the reported powers imply; the right one is not.
+bern="$data/maps/bern"
+"$covmap" audit "$bern/map.geojson" --sensors "$bern/sensors.geojson" --alpha 35 -q -o "$work/bern35" >"$work/bern35.txt" 2>&1
+head -1 "$work/bern35.txt" | grep -q "Check --alpha: the map and the reported powers imply a path-loss exponent" &&
+  ok || fail "alpha typo not named first: $(head -2 "$work/bern35.txt")"
+"$covmap" audit "$bern/map.geojson" --sensors "$bern/sensors.geojson" --alpha 3.5 -q -o "$work/bern3" >"$work/bern3.txt" 2>&1
+! grep -q "Check --alpha" "$work/bern3.txt" && ok || fail "the right alpha was questioned: $(head -1 "$work/bern3.txt")"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
