@@ -2,6 +2,8 @@
 // and small for large maps; and its building blocks (simplification, path data, escaping).
 #include <gtest/gtest.h>
 
+#include "markup_checks.h"
+
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -48,23 +50,8 @@ std::string between(const std::string& text, const std::string& open, const std:
 void expect_well_formed(const std::string& html) {
   std::string markup = std::regex_replace(html, std::regex(R"(<style>[\s\S]*?</style>)"), "");
   markup = std::regex_replace(markup, std::regex(R"(<script[^>]*>[\s\S]*?</script>)"), "");
-  static const std::set<std::string> kVoid = {"meta", "input", "br", "img", "link", "hr"};
-  std::vector<std::string> open;
-  const std::regex tag(R"(<(/?)([A-Za-z!][\w:-]*)[^>]*?(/?)>)");
-  for (auto it = std::sregex_iterator(markup.begin(), markup.end(), tag); it != std::sregex_iterator(); ++it) {
-    const auto& m = *it;
-    const std::string name = m[2];
-    if (name == "!DOCTYPE" || kVoid.count(name)) continue;
-    if (m[1] == "/") {
-      ASSERT_FALSE(open.empty()) << "stray </" << name << ">";
-      ASSERT_EQ(open.back(), name);
-      open.pop_back();
-    } else if (m[3] != "/") {
-      open.push_back(name);
-    }
-  }
-  EXPECT_TRUE(open.empty()) << "unclosed <" << (open.empty() ? "" : open.back()) << ">";
-  EXPECT_FALSE(std::regex_search(markup, std::regex(R"(&(?!(amp|lt|gt|quot|#39|alpha|sigma|chi|sup2|rarr|minus|times|plusmn|hellip);))")));
+  testing::expect_well_formed_markup(markup, {"meta", "input", "br", "img", "link", "hr"},
+                                     "amp|lt|gt|quot|#39|alpha|sigma|chi|sup2|rarr|minus|times|plusmn|hellip");
 }
 
 // The page's data block (report/audit_html_data.h), parsed as JSON.

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "markup_checks.h"
+
 #include <algorithm>
 #include <cmath>
 #include <regex>
@@ -71,22 +73,7 @@ std::size_t count(const std::string& text, const std::string& what) {
 // Checks that every element is closed in order and that no raw '&' escapes entity syntax: enough
 // to catch broken output without an XML library.
 void expect_well_formed(const std::string& svg) {
-  std::vector<std::string> open;
-  const std::regex tag(R"(<(/?)([A-Za-z?][\w:-]*)[^>]*?(/?)>)");
-  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), tag); it != std::sregex_iterator(); ++it) {
-    const auto& m = *it;
-    const std::string name = m[2];
-    if (name.front() == '?') continue;  // the XML declaration
-    if (m[1] == "/") {
-      ASSERT_FALSE(open.empty()) << "stray </" << name << ">";
-      ASSERT_EQ(open.back(), name);
-      open.pop_back();
-    } else if (m[3] != "/") {
-      open.push_back(name);
-    }
-  }
-  EXPECT_TRUE(open.empty()) << "unclosed <" << (open.empty() ? "" : open.back()) << ">";
-  EXPECT_FALSE(std::regex_search(svg, std::regex(R"(&(?!(amp|lt|gt|quot|apos);))")));
+  testing::expect_well_formed_markup(svg, {}, "amp|lt|gt|quot|apos");
   EXPECT_EQ(svg.find("nan"), std::string::npos);
   EXPECT_EQ(svg.find("inf"), std::string::npos);
 }
