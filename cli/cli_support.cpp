@@ -67,19 +67,13 @@ int exit_for_parse_error(const CLI::App& app, const CLI::ParseError& error, int 
 
 CLI::Validator positive_number() {
   return CLI::Validator(
-      [](std::string& text) -> std::string {
-        const std::optional<double> v = parse_finite_number(text);
-        return v && *v > 0 ? "" : "must be a positive number (got '" + text + "')";
-      },
+      [](std::string& text) { return positive_number_problem(text); },
       "POSITIVE");
 }
 
 CLI::Validator non_negative_number() {
   return CLI::Validator(
-      [](std::string& text) -> std::string {
-        const std::optional<double> v = parse_finite_number(text);
-        return v && *v >= 0 ? "" : "must be a number ≥ 0 (got '" + text + "')";
-      },
+      [](std::string& text) { return non_negative_number_problem(text); },
       "NUMBER ≥ 0");
 }
 
@@ -93,15 +87,8 @@ CLI::Validator fraction() {
 }
 
 CLI::Validator whole_number_in(long long lowest, long long highest) {
-  const std::string range = std::to_string(lowest) + "–" + std::to_string(highest);
-  return CLI::Validator(
-      [=](std::string& text) -> std::string {
-        const std::optional<long long> v = parse_whole_number(text);
-        if (!v || *v < lowest || *v > highest)
-          return "must be a whole number in " + range + " (got '" + text + "')";
-        return "";
-      },
-      "INT in " + range);
+  return CLI::Validator([=](std::string& text) { return whole_number_problem(text, lowest, highest); },
+                        "INT in " + std::to_string(lowest) + "–" + std::to_string(highest));
 }
 
 CLI::Validator input_file() {

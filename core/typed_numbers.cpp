@@ -27,4 +27,21 @@ std::optional<long long> parse_whole_number(std::string_view text) {
   return value;
 }
 
+std::string positive_number_problem(std::string_view text) {
+  const std::optional<double> v = parse_finite_number(text);
+  return v && *v > 0 ? "" : "must be a positive number (got '" + std::string(text) + "')";
+}
+
+std::string non_negative_number_problem(std::string_view text) {
+  const std::optional<double> v = parse_finite_number(text);
+  return v && *v >= 0 ? "" : "must be a number ≥ 0 (got '" + std::string(text) + "')";
+}
+
+std::string whole_number_problem(std::string_view text, long long lowest, long long highest) {
+  const std::optional<long long> v = parse_whole_number(text);
+  if (v && *v >= lowest && *v <= highest) return "";
+  return "must be a whole number in " + std::to_string(lowest) + "–" + std::to_string(highest) + " (got '" +
+         std::string(text) + "')";
+}
+
 }  // namespace covmap

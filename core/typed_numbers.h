@@ -4,6 +4,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 #include <string_view>
 
 namespace covmap {
@@ -12,5 +13,12 @@ namespace covmap {
 std::optional<double> parse_finite_number(std::string_view text);
 // The integer the whole text spells in base 10, or nullopt (also when out of long long's range).
 std::optional<long long> parse_whole_number(std::string_view text);
+
+// The rules every option of this kind follows, in the words a person reads: empty when `text`
+// passes, else "must be a positive number (got '0')", "must be a number ≥ 0 (got '-1')", "must be
+// a whole number in 1–64 (got '65')".
+std::string positive_number_problem(std::string_view text);
+std::string non_negative_number_problem(std::string_view text);
+std::string whole_number_problem(std::string_view text, long long lowest, long long highest);
 
 }  // namespace covmap

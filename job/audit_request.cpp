@@ -1,8 +1,8 @@
 #include "job/audit_request.h"
 
-#include <sstream>
 
 #include "audit/audit.h"
+#include "core/round_trip_numbers.h"
 #include "core/typed_numbers.h"
 
 namespace covmap::job {
@@ -12,14 +12,6 @@ constexpr std::array<std::string_view, kAllAuditOptions.size()> kNames = {
     "alpha", "snap",     "threads",   "band",           "sensor_property", "layer",  "sensor_layer",
     "sensor_crs", "planar", "force", "full_precision", "basemap",         "format"};
 
-std::string whole_number_problem(std::string_view text, long long lowest, long long highest) {
-  const std::optional<long long> v = parse_whole_number(text);
-  if (!v || *v < lowest || *v > highest)
-    return "must be a whole number in " + std::to_string(lowest) + "–" + std::to_string(highest) + " (got '" +
-           std::string(text) + "')";
-  return "";
-}
-
 std::string basemap_problem(const std::string& url) {
   report::AuditRenderOptions render;
   render.basemap_url = url;
@@ -28,14 +20,6 @@ std::string basemap_problem(const std::string& url) {
   if (!url.starts_with("https://") && !url.starts_with("http://") && !url.starts_with("file://"))
     return "give an http://, https:// or file:// URL";
   return "";
-}
-
-// A double as text that reads back to the same value.
-std::string exact_text(double v) {
-  std::ostringstream out;
-  out.precision(17);
-  out << v;
-  return out.str();
 }
 
 }  // namespace
@@ -51,14 +35,8 @@ std::optional<AuditOption> option_from_name(std::string_view name) {
 std::string value_problem(AuditOption option, std::string_view text) {
   const std::string typed(text);
   switch (option) {
-    case AuditOption::kAlpha: {
-      const std::optional<double> v = parse_finite_number(text);
-      return v && *v > 0 ? "" : "must be a positive number (got '" + typed + "')";
-    }
-    case AuditOption::kSnap: {
-      const std::optional<double> v = parse_finite_number(text);
-      return v && *v >= 0 ? "" : "must be a number ≥ 0 (got '" + typed + "')";
-    }
+    case AuditOption::kAlpha: return positive_number_problem(text);
+    case AuditOption::kSnap: return non_negative_number_problem(text);
     case AuditOption::kThreads: return whole_number_problem(text, 1, 64);
     case AuditOption::kBand: return whole_number_problem(text, 1, 65535);
     case AuditOption::kSensorProperty: return text.empty() ? "must not be empty" : "";
@@ -80,8 +58,8 @@ std::vector<RequestProblem> request_problems(const AuditRequest& r) {
   const auto check = [&](AuditOption option, const std::string& text) {
     if (std::string why = value_problem(option, text); !why.empty()) found.push_back({option, std::move(why)});
   };
-  if (r.settings.alpha) check(AuditOption::kAlpha, exact_text(*r.settings.alpha));
-  check(AuditOption::kSnap, exact_text(r.settings.snap));
+  if (r.settings.alpha) check(AuditOption::kAlpha, round_trip_number(*r.settings.alpha));
+  check(AuditOption::kSnap, round_trip_number(r.settings.snap));
   check(AuditOption::kThreads, std::to_string(r.settings.threads));
   check(AuditOption::kBand, std::to_string(r.inputs.band));
   check(AuditOption::kSensorProperty, r.inputs.sensor_property);

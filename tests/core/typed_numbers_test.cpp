@@ -30,5 +30,16 @@ TEST(TypedNumbers, WholeNumbersAreTakenWholeAndInRange) {
     EXPECT_FALSE(parse_whole_number(bad)) << bad;
 }
 
+TEST(TypedNumbers, RulesSayWhatIsWrongWithTheTextAsTyped) {
+  EXPECT_EQ(positive_number_problem("3.5"), "");
+  EXPECT_EQ(positive_number_problem("0"), "must be a positive number (got '0')");
+  EXPECT_EQ(positive_number_problem("nan"), "must be a positive number (got 'nan')");
+  EXPECT_EQ(non_negative_number_problem("0"), "");
+  EXPECT_EQ(non_negative_number_problem("-1e-9"), "must be a number ≥ 0 (got '-1e-9')");
+  EXPECT_EQ(whole_number_problem("64", 1, 64), "");
+  EXPECT_EQ(whole_number_problem("65", 1, 64), "must be a whole number in 1–64 (got '65')");
+  EXPECT_EQ(whole_number_problem("1.5", 1, 64), "must be a whole number in 1–64 (got '1.5')");
+}
+
 }  // namespace
 }  // namespace covmap
